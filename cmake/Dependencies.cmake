@@ -1,0 +1,26 @@
+# All dependencies come from Debian 12 packages; see docs/toolchain notes in README.
+find_package(Threads REQUIRED)
+find_package(Eigen3 3.4 CONFIG REQUIRED)
+find_package(TinyGLTF CONFIG REQUIRED)
+find_package(nlohmann_json CONFIG REQUIRED)
+find_package(TBB CONFIG REQUIRED)
+find_package(embree 3.13 CONFIG REQUIRED)
+find_package(fmt CONFIG REQUIRED)
+find_package(CLI11 CONFIG REQUIRED)
+
+find_package(OpenImageIO 2.4 CONFIG REQUIRED)
+# Debian bug: the imported target lists /usr/include/opencv4, which does not exist without OpenCV.
+get_target_property(_oiio_inc OpenImageIO::OpenImageIO INTERFACE_INCLUDE_DIRECTORIES)
+list(FILTER _oiio_inc EXCLUDE REGEX "opencv4")
+set_target_properties(OpenImageIO::OpenImageIO PROPERTIES INTERFACE_INCLUDE_DIRECTORIES "${_oiio_inc}")
+
+find_package(OpenEXR 3.1 CONFIG REQUIRED)
+
+# Debian bugs: the config lives in /usr/share/cmake and computes the include dir as "/include".
+find_package(OpenColorIO 2.1 CONFIG REQUIRED HINTS /usr/share/cmake)
+set_target_properties(OpenColorIO::OpenColorIO PROPERTIES INTERFACE_INCLUDE_DIRECTORIES "/usr/include")
+
+if(LACRIMA_BUILD_TESTS)
+  find_package(GTest CONFIG REQUIRED)
+  find_package(benchmark CONFIG REQUIRED)
+endif()

@@ -1,0 +1,71 @@
+#pragma once
+// A glTF 2.0 asset flattened for rendering: one entry per mesh primitive, in asset space
+// (node transforms already applied), with its sparse morph targets (blendshapes).
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "lacrima/geometry/math.hpp"
+#include "lacrima/geometry/mesh.hpp"
+
+namespace lacrima {
+
+// The glTF material of a primitive, as far as lacrima maps it (pbrMetallicRoughness + extensions).
+struct GltfMaterialInfo {
+  std::string name;                       // glTF material name ("" if none)
+  Color baseColor = Color(0.8f, 0.8f, 0.8f);  // baseColorFactor rgb (linear)
+  float roughness = 1.0f;                 // roughnessFactor
+  float metallic = 0.0f;                  // metallicFactor
+  float transmission = 0.0f;              // KHR_materials_transmission.transmissionFactor
+  float ior = 1.5f;                       // KHR_materials_ior.ior
+  bool hasVolume = false;                 // KHR_materials_volume present
+};
+
+// One morph target of one primitive: only the vertices it moves.
+struct SparseDelta {
+  std::vector<uint32_t> vertices;  // indices into the primitive's positions, ascending
+  std::vector<Vec3> deltas;        // position offsets, same length as vertices (asset space)
+};
+
+struct GltfPrimitive {
+  std::string name;        // "<mesh name>/<extras.part or material name or index>"
+  std::string part;        // extras.part if present (e.g. "M_Face"), else the material name
+  TriangleMesh mesh;       // neutral shape, asset space, smooth welded normals computed
+  GltfMaterialInfo material;
+  std::vector<SparseDelta> targets;  // one per morph target (asset target order); may be empty deltas
+  Affine3 nodeTransform = Affine3::Identity();  // already applied to mesh; kept to transform deltas
+};
+
+struct GltfCamera {
+  std::string name;
+  Affine3 cameraToAsset = Affine3::Identity();  // glTF camera looks down -Z, +Y up
+  float yfovRadians = 0.7f;
+  float aspectRatio = 0.0f;  // 0 when unspecified
+};
+
+struct GltfAsset {
+  std::filesystem::path path;
+  std::vector<GltfPrimitive> primitives;
+  std::vector<std::string> targetNames;  // morph target names (meshes[i].extras.targetNames)
+  std::vector<GltfCamera> cameras;
+  std::vector<std::string> nodeNames;
+
+  // Index of a morph target by exact name, or -1.
+  int findTarget(const std::string& name) const;
+};
+
+// Loads a .glb or .gltf file. Throws InputError naming the file for missing, truncated or
+// corrupt files, unsupported primitive modes, or accessors that point outside their buffers.
+GltfAsset loadGltfAsset(const std::filesystem::path& path);
+
+// Neutral mesh plus weighted sparse deltas: x = n + B b (seed 002, eq. 1 without skinning).
+// weights is indexed like asset.targetNames (missing trailing weights count as zero).
+// Normals are recomputed when any weight is non-zero.
+TriangleMesh applyMorphTargets(const GltfPrimitive& primitive, const std::vector<float>& weights);
+
+// Human-readable summary for `lacrima info`: primitives with vertex/triangle counts,
+// materials, morph target names, cameras, bounding box.
+std::string describeGltfAsset(const GltfAsset& asset);
+
+}  // namespace lacrima

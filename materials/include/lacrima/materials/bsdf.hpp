@@ -1,0 +1,40 @@
+#pragma once
+// The BSDF interface. All directions are unit vectors in the local shading frame (z = shading
+// normal) and point away from the surface: wo towards the viewer, wi towards the light.
+// Conventions follow pbrt-v4: f() excludes the cosine factor; the path throughput update is
+// f * |cos(wi)| / pdf. Delta (specular) lobes return f and pdf such that f*|cos|/pdf is the
+// lobe weight (pdf = probability of choosing the lobe), and eval()/pdf() return zero for them.
+#include <memory>
+#include <optional>
+
+#include "lacrima/geometry/math.hpp"
+
+namespace lacrima {
+
+struct BsdfSample {
+  Vec3 wi;
+  Color f;
+  float pdf = 0.0f;
+  bool specular = false;    // sampled from a delta lobe (no MIS with lights)
+  bool transmitted = false; // wi is on the other side of the surface from wo
+  float eta = 1.0f;         // relative IOR crossed (eta_wi_side / eta_wo_side) for transmission, else 1
+};
+
+class Bsdf {
+ public:
+  virtual ~Bsdf() = default;
+
+  virtual Color eval(const Vec3& wo, const Vec3& wi) const = 0;
+  virtual float pdf(const Vec3& wo, const Vec3& wi) const = 0;
+  // uLobe picks a lobe (reflect/refract, diffuse/specular); u picks the direction.
+  virtual std::optional<BsdfSample> sample(const Vec3& wo, float uLobe, const Vec2& u) const = 0;
+
+  // True when every lobe is a delta distribution (light sampling is useless there).
+  virtual bool isPureSpecular() const { return false; }
+  // True when light can pass through (the surface bounds a medium such as water).
+  virtual bool isTransmissive() const { return false; }
+  // Reflectance-like colour for the albedo AOV.
+  virtual Color albedo() const = 0;
+};
+
+}  // namespace lacrima

@@ -1,0 +1,32 @@
+#pragma once
+// The film: beauty and AOVs of one frame, float per channel, row 0 at the top.
+#include <cstdint>
+#include <vector>
+
+#include "lacrima/geometry/math.hpp"
+
+namespace lacrima {
+
+struct Film {
+  int width = 0, height = 0;
+  std::vector<float> rgba;    // 4 per pixel, radiance average (alpha = coverage)
+  std::vector<float> albedo;  // 3 per pixel, first-hit albedo average
+  std::vector<float> normal;  // 3 per pixel, first-hit world shading normal average
+  std::vector<float> depth;   // 1 per pixel, first-hit distance along the camera axis (inf = none)
+
+  Film() = default;
+  Film(int w, int h)
+      : width(w), height(h), rgba(size_t(w) * h * 4, 0.0f), albedo(size_t(w) * h * 3, 0.0f),
+        normal(size_t(w) * h * 3, 0.0f), depth(size_t(w) * h, 0.0f) {}
+  size_t pixelIndex(int x, int y) const { return size_t(y) * width + x; }
+};
+
+// Statistics of one rendered frame.
+struct RenderStats {
+  double seconds = 0.0;
+  uint64_t cameraPaths = 0;
+  uint64_t rays = 0;          // intersect + occluded queries
+  uint64_t nonFiniteSamples = 0;  // NaN/Inf path contributions discarded (never on the film)
+};
+
+}  // namespace lacrima

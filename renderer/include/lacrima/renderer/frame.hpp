@@ -1,0 +1,75 @@
+#pragma once
+// The renderer's input: everything needed to render one frame, already in world space.
+// The renderer never reads shot files; scenes/ builds a Frame, tests build tiny ones in code.
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "lacrima/geometry/math.hpp"
+#include "lacrima/geometry/mesh.hpp"
+#include "lacrima/materials/material.hpp"
+
+namespace lacrima {
+
+class EnvironmentMap;  // environment.hpp
+
+struct MeshInstance {
+  TriangleMesh mesh;  // world space; normals optional (geometric normal used when absent)
+  uint32_t materialId = 0;
+};
+
+// Exact sphere (drops, furnace tests), rendered with Embree's analytic sphere primitive.
+struct Sphere {
+  Vec3 center = Vec3::Zero();
+  float radius = 1.0f;
+  uint32_t materialId = 0;
+};
+
+// Pinhole or thin-lens camera. Camera space: +X right, +Y up, looks down -Z (glTF convention).
+struct Camera {
+  Affine3 cameraToWorld = Affine3::Identity();
+  float verticalFovRadians = degreesToRadians(40.0f);
+  float lensRadius = 0.0f;     // 0 = pinhole; focal length / (2 f-number) for a thin lens
+  float focusDistance = 1.0f;  // metres along the view axis
+};
+
+// Area light with uniform radiance. Rectangles emit from the side of normalize(edgeU x edgeV)
+// unless twoSided; spheres emit outwards.
+struct AreaLight {
+  enum class Shape { Rectangle, Sphere };
+  Shape shape = Shape::Rectangle;
+  Vec3 center = Vec3::Zero();
+  Vec3 edgeU = Vec3(1, 0, 0);
+  Vec3 edgeV = Vec3(0, 1, 0);
+  float radius = 0.0f;
+  Color radiance = Color(1, 1, 1);
+  bool twoSided = false;
+  bool visibleToCamera = true;
+};
+
+struct RenderSettings {
+  int width = 640;
+  int height = 360;
+  int samplesPerPixel = 16;
+  int maxDepth = 12;       // path vertices after the camera ray
+  uint64_t seed = 0;
+  int threads = 0;         // 0 = all cores
+  int frameNumber = 1;     // part of the random key
+  bool floatOutput = false;  // EXR beauty as float instead of half
+};
+
+struct Frame {
+  std::vector<Material> materials;  // indexed by materialId
+  std::vector<MeshInstance> meshes;
+  std::vector<Sphere> spheres;
+  std::vector<AreaLight> lights;
+  std::shared_ptr<const EnvironmentMap> environment;  // may be null (black background)
+  Color uniformBackground = Color(0, 0, 0);  // used when environment is null (furnace tests)
+  Camera camera;
+  RenderSettings settings;
+};
+
+}  // namespace lacrima

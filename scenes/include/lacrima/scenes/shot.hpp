@@ -1,0 +1,54 @@
+#pragma once
+// Shot files (JSON, version 1): loading with strict, complete validation, and turning a shot
+// into a renderer Frame through the geometry stage.
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "lacrima/geometry/error.hpp"
+#include "lacrima/renderer/frame.hpp"
+
+namespace lacrima {
+
+// One problem found in a shot file.
+struct Diagnostic {
+  std::filesystem::path file;
+  std::string jsonPath;  // e.g. "/materials/2/ior"  (JSON pointer) ; "" for whole-file problems
+  int line = 0;          // 1-based, 0 when unknown
+  int column = 0;        // 1-based, 0 when unknown
+  std::string message;   // what was expected, what was found, closest valid name if any
+
+  // "shot.json:12:7: /materials/2/ior: expected a number > 1, found \"abc\""
+  std::string format() const;
+};
+
+// Thrown by loadShot with every problem found (not only the first).
+class ShotError : public InputError {
+ public:
+  explicit ShotError(std::vector<Diagnostic> diagnostics);
+  const std::vector<Diagnostic>& diagnostics() const { return diagnostics_; }
+
+ private:
+  std::vector<Diagnostic> diagnostics_;
+};
+
+struct Shot;  // full definition in shot_model.hpp (plain data)
+
+}  // namespace lacrima
+
+#include "lacrima/scenes/shot_model.hpp"
+
+namespace lacrima {
+
+// Reads, parses and validates a shot file. Throws ShotError listing every problem.
+Shot loadShot(const std::filesystem::path& path);
+
+// Builds the renderer input for one frame number (assets are loaded once and cached inside
+// the Shot's asset cache). Throws InputError for missing/corrupt assets.
+Frame buildFrame(const Shot& shot, int frameNumber);
+
+// Replaces a run of '#' (e.g. "####") with the zero-padded frame number.
+std::string expandFramePattern(const std::string& pattern, int frameNumber);
+
+}  // namespace lacrima
