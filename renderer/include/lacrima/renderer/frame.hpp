@@ -47,7 +47,6 @@ struct AreaLight {
   float radius = 0.0f;
   Color radiance = Color(1, 1, 1);
   bool twoSided = false;
-  bool visibleToCamera = true;
 };
 
 struct RenderSettings {

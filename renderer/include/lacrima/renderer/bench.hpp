@@ -1,0 +1,24 @@
+#pragma once
+// Raw Embree throughput on a Frame's geometry, the ceiling the path tracer is measured against.
+#include <cstdint>
+
+#include "lacrima/renderer/frame.hpp"
+
+namespace lacrima {
+
+struct RawTraceRates {
+  uint64_t intersectRays = 0;
+  double intersectSeconds = 0.0;
+  uint64_t occludedRays = 0;
+  double occludedSeconds = 0.0;
+  double intersectRaysPerSecond() const { return intersectSeconds > 0 ? double(intersectRays) / intersectSeconds : 0; }
+  double occludedRaysPerSecond() const { return occludedSeconds > 0 ? double(occludedRays) / occludedSeconds : 0; }
+};
+
+// Traces one jittered camera ray per pixel per sample (rtcIntersect1), then from every hit a
+// cosine-distributed bounce direction (rtcIntersect1) and a shadow query towards a random
+// direction (rtcOccluded1), in TBB tiles with frame.settings.threads threads, like the
+// renderer. Only the Embree calls and the ray set-up are timed.
+RawTraceRates measureRawEmbreeThroughput(const Frame& frame);
+
+}  // namespace lacrima

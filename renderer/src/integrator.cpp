@@ -1,0 +1,142 @@
+#include "integrator.hpp"
+
+#include <limits>
+
+namespace lacrima {
+
+namespace {
+
+// Veach 1997, eq. 9.13 (power heuristic, beta = 2).
+float powerHeuristic(float pdfA, float pdfB) {
+  const float a = pdfA * pdfA, b = pdfB * pdfB;
+  return a + b > 0.0f ? a / (a + b) : 0.0f;
+}
+
+// Ray origins are pushed off the surface along the geometric normal, on the side the new ray
+// leaves towards; the offset scales with the coordinates' magnitude (float spacing).
+Vec3 offsetOrigin(const Vec3& position, const Vec3& geometricNormal, const Vec3& direction) {
+  const float scale = 1e-4f * std::max(0.05f, position.cwiseAbs().maxCoeff());
+  return position + (direction.dot(geometricNormal) > 0.0f ? scale : -scale) * geometricNormal;
+}
+
+constexpr int kRussianRouletteDepth = 3;
+
+}  // namespace
+
+struct PathIntegrator::Vertex {
+  Vec3 position;
+  Vec3 geometricNormal;  // oriented as the shading frame's side (see orientNormals)
+  ShadingFrame frame;
+  Vec3 wo;               // world, towards the previous vertex
+  Vec3 woLocal;
+  const Bsdf* bsdf;
+};
+
+PathIntegrator::PathIntegrator(const Frame& frame, const EmbreeScene& scene, const LightSampler& lights)
+    : frame_(frame), scene_(scene), lights_(lights), maxDepth_(frame.settings.maxDepth) {
+  bsdfs_.reserve(frame.materials.size());
+  for (const Material& material : frame.materials) bsdfs_.push_back(makeBsdf(material.params));
+}
+
+Color PathIntegrator::sampleDirectLight(const Vertex& v, PixelSampler& sampler, PathCounters& counters) const {
+  const float uSelect = sampler.get1D();
+  const Vec2 u = sampler.get2D();
+  if (v.bsdf->isPureSpecular() || lights_.empty()) return Color::Zero();
+  const LightSample light = lights_.sample(v.position, uSelect, u);
+  if (light.pdf <= 0.0f || (light.radiance <= 0.0f).all()) return Color::Zero();
+
+  const Vec3 wiLocal = v.frame.toLocal(light.direction);
+  // No leaks: the shading frame and the geometric surface must agree on reflect vs transmit.
+  const bool geometricReflect = light.direction.dot(v.geometricNormal) * v.wo.dot(v.geometricNormal) > 0.0f;
+  const bool shadingReflect = wiLocal.z() * v.woLocal.z() > 0.0f;
+  if (geometricReflect != shadingReflect) return Color::Zero();
+
+  const Color f = v.bsdf->eval(v.woLocal, wiLocal) * absCosTheta(wiLocal);
+  if ((f <= 0.0f).all()) return Color::Zero();
+  const Vec3 origin = offsetOrigin(v.position, v.geometricNormal, light.direction);
+  const float maxDistance = std::isinf(light.distance) ? light.distance : light.distance * (1.0f - 1e-4f);
+  ++counters.rays;
+  if (scene_.occluded(origin, light.direction, maxDistance)) return Color::Zero();
+  const float weight = powerHeuristic(light.pdf, v.bsdf->pdf(v.woLocal, wiLocal));
+  return f * light.radiance * (weight / light.pdf);
+}
+
+Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, FirstHit& firstHit,
+                               PathCounters& counters) const {
+  Color result = Color::Zero();
+  Color throughput = Color::Ones();
+  float etaScale = 1.0f;         // undoes the 1/eta^2 radiance scaling for Russian roulette
+  bool previousSpecular = true;  // camera rays count as specular: no MIS on what they see
+  float previousBsdfPdf = 0.0f;
+  Vec3 previousPosition = cameraRay.origin;
+  Ray ray = cameraRay;
+
+  for (int depth = 0;; ++depth) {
+    SurfaceHit hit;
+    ++counters.rays;
+    if (!scene_.intersect(ray, hit)) {
+      const Color background = lights_.background(ray.direction);
+      const float weight = previousSpecular ? 1.0f : powerHeuristic(previousBsdfPdf, lights_.pdfEnvironment(ray.direction));
+      result += throughput * background * weight;
+      break;
+    }
+    if (hit.lightIndex >= 0) {
+      const Color emitted = lights_.emitted(hit.lightIndex, -ray.direction);
+      const float lightPdf = lights_.pdfAreaLight(hit.lightIndex, previousPosition, hit.position, hit.geometricNormal);
+      const float weight = previousSpecular ? 1.0f : powerHeuristic(previousBsdfPdf, lightPdf);
+      result += throughput * emitted * weight;
+      if (depth == 0) firstHit = {true, emitted.cwiseMin(1.0f), hit.geometricNormal, hit.distance};
+      break;
+    }
+
+    const Material& material = frame_.materials[hit.materialId];
+    Vertex v;
+    v.bsdf = bsdfs_[hit.materialId].get();
+    v.position = hit.position;
+    v.wo = -ray.direction;
+    Vec3 ng = hit.geometricNormal;
+    Vec3 ns = hit.shadingNormal;
+    if (ns.dot(ng) < 0.0f) ns = -ns;  // interpolated normals follow the winding's side
+    const bool frontFacing = v.wo.dot(ng) > 0.0f;
+    if (!v.bsdf->isTransmissive()) {
+      // Opaque surfaces are two-sided: shade the side the ray arrives from.
+      if (!frontFacing) { ng = -ng; ns = -ns; }
+      // A shading normal that hides wo would make the surface black or leak: fall back to ng.
+      if (v.wo.dot(ns) <= 0.0f) ns = ng;
+    }
+    v.geometricNormal = ng;
+    v.frame = ShadingFrame::fromNormal(ns);
+    v.woLocal = v.frame.toLocal(v.wo);
+
+    if (depth == 0) firstHit = {true, v.bsdf->albedo(), ns, hit.distance};
+    // Emissive opaque materials emit from both sides (an emitting box seen from inside).
+    if ((material.emission > 0.0f).any() && (frontFacing || !v.bsdf->isTransmissive()))
+      result += throughput * material.emission;
+    if (depth >= maxDepth_) break;
+
+    result += throughput * sampleDirectLight(v, sampler, counters);
+
+    const float uLobe = sampler.get1D();
+    const std::optional<BsdfSample> bs = v.bsdf->sample(v.woLocal, uLobe, sampler.get2D());
+    if (!bs || bs->pdf <= 0.0f) break;
+    const Vec3 wi = v.frame.toWorld(bs->wi).normalized();
+    const bool geometricReflect = wi.dot(ng) * v.wo.dot(ng) > 0.0f;
+    if (geometricReflect == bs->transmitted) break;  // the shading normal sent it through the surface
+    throughput *= bs->f * (absCosTheta(bs->wi) / bs->pdf);
+    if (bs->transmitted) etaScale *= bs->eta * bs->eta;
+    previousSpecular = bs->specular;
+    previousBsdfPdf = bs->pdf;
+    previousPosition = hit.position;
+    ray = Ray{offsetOrigin(hit.position, ng, wi), wi};
+
+    if (depth >= kRussianRouletteDepth) {
+      const float survive = std::min(1.0f, (throughput * etaScale).maxCoeff());
+      if (sampler.get1D() >= survive) break;
+      throughput /= survive;
+    }
+    if ((throughput <= 0.0f).all()) break;
+  }
+  return result;
+}
+
+}  // namespace lacrima

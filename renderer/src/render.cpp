@@ -1,0 +1,169 @@
+// The frame loop: 32x32 tiles rendered in parallel with TBB. Every pixel sample draws its
+// random numbers from (seed, frame, pixel, sample index, dimension) and each tile writes only
+// its own pixels in a fixed order, so the image does not depend on the thread count or on the
+// order in which tiles finish.
+#include "lacrima/renderer/render.hpp"
+
+#include <fmt/format.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <atomic>
+#include <chrono>
+#include <mutex>
+
+#include "embree_scene.hpp"
+#include "integrator.hpp"
+#include "lacrima/geometry/error.hpp"
+#include "lacrima/renderer/camera.hpp"
+#include "light_sampler.hpp"
+
+namespace lacrima {
+
+namespace {
+
+constexpr int kTileSize = 32;
+
+void validateFrame(const Frame& frame) {
+  const RenderSettings& s = frame.settings;
+  if (s.width < 1 || s.height < 1 || s.samplesPerPixel < 1 || s.maxDepth < 0)
+    throw InputError(fmt::format("cannot render {}x{} pixels at {} samples per pixel with max depth {}", s.width,
+                                 s.height, s.samplesPerPixel, s.maxDepth));
+  for (const MeshInstance& instance : frame.meshes) {
+    const std::string defect = findMeshDefect(instance.mesh);
+    if (!defect.empty()) throw InputError(fmt::format("mesh '{}': {}", instance.mesh.name, defect));
+    if (instance.materialId >= frame.materials.size())
+      throw InputError(fmt::format("mesh '{}' uses material {} of {}", instance.mesh.name, instance.materialId,
+                                   frame.materials.size()));
+  }
+  for (const Sphere& sphere : frame.spheres)
+    if (sphere.materialId >= frame.materials.size() || !(sphere.radius > 0.0f))
+      throw InputError("a sphere has a non-positive radius or an unknown material");
+}
+
+struct TileRect {
+  int x0, y0, x1, y1;
+};
+
+TileRect tileRect(int tileIndex, int width, int height) {
+  const int tilesX = (width + kTileSize - 1) / kTileSize;
+  const int x0 = (tileIndex % tilesX) * kTileSize;
+  const int y0 = (tileIndex / tilesX) * kTileSize;
+  return {x0, y0, std::min(x0 + kTileSize, width), std::min(y0 + kTileSize, height)};
+}
+
+struct PixelResult {
+  Color radiance = Color::Zero();
+  float coverage = 0.0f;
+  Color albedo = Color::Zero();
+  Vec3 normal = Vec3::Zero();
+  float depth = 0.0f;
+  int depthSamples = 0;
+};
+
+// Distance along the camera's viewing axis (what compositors expect in Z).
+float cameraDepth(const Camera& camera, const Ray& ray, float distance) {
+  const Vec3 forward = -camera.cameraToWorld.linear().col(2).normalized();
+  return distance * ray.direction.dot(forward);
+}
+
+class TileRenderer {
+ public:
+  TileRenderer(const Frame& frame, const PathIntegrator& integrator, Film& film)
+      : frame_(frame), integrator_(integrator), film_(film) {}
+
+  void renderTile(const TileRect& rect, PathCounters& counters, uint64_t& nonFinite) const {
+    for (int y = rect.y0; y < rect.y1; ++y)
+      for (int x = rect.x0; x < rect.x1; ++x) renderPixel(x, y, counters, nonFinite);
+  }
+
+ private:
+  void renderPixel(int x, int y, PathCounters& counters, uint64_t& nonFinite) const {
+    const RenderSettings& s = frame_.settings;
+    PixelResult sum;
+    for (int i = 0; i < s.samplesPerPixel; ++i) {
+      PixelSampler sampler(s.seed, s.frameNumber, x, y, i);
+      const Vec2 jitter = sampler.get2D();
+      const Vec2 lens = sampler.get2D();
+      const Ray ray = generateCameraRay(frame_.camera, s.width, s.height, float(x) + jitter.x(), float(y) + jitter.y(), lens);
+      FirstHit first;
+      const Color L = integrator_.radiance(ray, sampler, first, counters);
+      if (isFinite(L)) sum.radiance += L;
+      else ++nonFinite;  // discarded, counted, reported: never on the film
+      if (first.valid) {
+        sum.coverage += 1.0f;
+        sum.albedo += first.albedo;
+        sum.normal += first.normal;
+        sum.depth += cameraDepth(frame_.camera, ray, first.distance);
+        ++sum.depthSamples;
+      }
+    }
+    store(x, y, sum);
+  }
+
+  void store(int x, int y, const PixelResult& sum) const {
+    const float inv = 1.0f / float(frame_.settings.samplesPerPixel);
+    const size_t p = film_.pixelIndex(x, y);
+    for (int c = 0; c < 3; ++c) film_.rgba[4 * p + c] = sum.radiance[c] * inv;
+    film_.rgba[4 * p + 3] = sum.coverage * inv;
+    const float invHits = sum.depthSamples > 0 ? 1.0f / float(sum.depthSamples) : 0.0f;
+    for (int c = 0; c < 3; ++c) film_.albedo[3 * p + c] = sum.albedo[c] * invHits;
+    const Vec3 n = sum.normal.norm() > 0.0f ? Vec3(sum.normal.normalized()) : Vec3::Zero();
+    for (int c = 0; c < 3; ++c) film_.normal[3 * p + c] = n[c];
+    film_.depth[p] = sum.depthSamples > 0 ? sum.depth * invHits : std::numeric_limits<float>::infinity();
+  }
+
+  const Frame& frame_;
+  const PathIntegrator& integrator_;
+  Film& film_;
+};
+
+}  // namespace
+
+Film renderFrame(const Frame& frame, RenderStats* stats, const ProgressCallback& progress) {
+  validateFrame(frame);
+  const auto start = std::chrono::steady_clock::now();
+  const RenderSettings& s = frame.settings;
+  tbb::task_arena arena(s.threads > 0 ? s.threads : tbb::task_arena::automatic);
+
+  Film film(s.width, s.height);
+  const int tilesX = (s.width + kTileSize - 1) / kTileSize;
+  const int tilesY = (s.height + kTileSize - 1) / kTileSize;
+  const int tileCount = tilesX * tilesY;
+  std::atomic<uint64_t> rays{0}, nonFinite{0};
+  std::atomic<int> tilesDone{0};
+  std::mutex progressMutex;
+
+  arena.execute([&] {
+    const EmbreeScene scene(frame, s.threads);
+    const LightSampler lights(frame);
+    const PathIntegrator integrator(frame, scene, lights);
+    const TileRenderer tiles(frame, integrator, film);
+    tbb::parallel_for(tbb::blocked_range<int>(0, tileCount, 1), [&](const tbb::blocked_range<int>& range) {
+      for (int t = range.begin(); t != range.end(); ++t) {
+        PathCounters counters;
+        uint64_t tileNonFinite = 0;
+        tiles.renderTile(tileRect(t, s.width, s.height), counters, tileNonFinite);
+        rays += counters.rays;
+        nonFinite += tileNonFinite;
+        const int done = ++tilesDone;
+        if (progress) {
+          const std::lock_guard lock(progressMutex);
+          const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+          progress(RenderProgress{done, tileCount, elapsed, rays.load()});
+        }
+      }
+    });
+  });
+
+  if (stats) {
+    stats->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    stats->cameraPaths = uint64_t(s.width) * s.height * s.samplesPerPixel;
+    stats->rays = rays.load();
+    stats->nonFiniteSamples = nonFinite.load();
+  }
+  return film;
+}
+
+}  // namespace lacrima

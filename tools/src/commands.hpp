@@ -1,0 +1,38 @@
+#pragma once
+// The subcommands of `lacrima`. Each returns the process exit status:
+// 0 success, 1 render failure (e.g. too many NaN samples), 2 bad input (shot, asset, options).
+#include <optional>
+#include <string>
+
+namespace lacrima::cli {
+
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitRenderFailure = 1;
+inline constexpr int kExitBadInput = 2;
+
+struct RenderOptions {
+  std::string shotPath;
+  std::string frames;  // empty: the shot's range
+  std::optional<int> spp, width, height, threads, maxDepth;
+  std::optional<long long> seed;
+  std::string outputPattern;  // empty: the shot's
+  bool preview = false;
+  bool floatOutput = false;
+  bool quiet = false;
+};
+
+struct BenchOptions {
+  std::string shotPath;
+  int width = 320, height = 180, spp = 4, threads = 0, repetitions = 3;
+};
+
+int runRender(const RenderOptions& options);
+int runCheck(const std::string& shotPath);
+int runInfo(const std::string& path);
+int runBench(const BenchOptions& options);
+
+// Default OCIO config and default shot, found from the source tree this binary was built from.
+std::string defaultOcioConfig();
+std::string defaultShot();
+
+}  // namespace lacrima::cli

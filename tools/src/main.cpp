@@ -1,0 +1,100 @@
+// lacrima: render film-quality tear shots. See `lacrima --help` and README.md.
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <exception>
+
+#include "commands.hpp"
+
+using namespace lacrima::cli;
+
+namespace {
+
+const char* kDescription =
+    "lacrima - a physically based path tracer for realistic human tears.\n"
+    "\n"
+    "Examples:\n"
+    "  lacrima render scenes/shots/tear_closeup.json --preview\n"
+    "      render the shot's frames to EXR (and an sRGB PNG preview next to each)\n"
+    "  lacrima render shot.json --frames 1-48x2 --spp 64 --width 640 --height 360\n"
+    "      every 2nd frame of 1-48, at a quick preview quality\n"
+    "  lacrima check shot.json         validate a shot file, report every problem\n"
+    "  lacrima info face.glb           list primitives, blendshapes and cameras of a glTF\n"
+    "  lacrima info frame.0001.exr     list channels and lacrima metadata of a rendered frame\n"
+    "  lacrima bench                   renderer and raw Embree throughput on the default shot\n"
+    "\n"
+    "Exit status: 0 success, 1 render failure, 2 bad input (shot file, asset or options).";
+
+void addRender(CLI::App& app, RenderOptions& o) {
+  auto* render = app.add_subcommand("render", "Render a shot to an OpenEXR sequence");
+  render->footer(
+      "Overrides replace the shot file's render settings for this run only. Frames are written to a\n"
+      "temporary name and renamed when complete, so an interrupted render never leaves a partial EXR.");
+  render->add_option("shot", o.shotPath, "Shot file (JSON)")->required()->check(CLI::ExistingFile);
+  render->add_option("--frames,-f", o.frames, "Frames to render: 12, 1-48, 1-48x2 or lists like 1,5,10-12");
+  render->add_option("--spp,-s", o.spp, "Samples per pixel")->check(CLI::PositiveNumber);
+  auto* width = render->add_option("--width", o.width, "Image width in pixels")->check(CLI::Range(1, 16384));
+  auto* height = render->add_option("--height", o.height, "Image height in pixels")->check(CLI::Range(1, 16384));
+  width->needs(height);
+  height->needs(width);
+  render->add_option("--seed", o.seed, "Random seed (same seed, same pixels)")->check(CLI::NonNegativeNumber);
+  render->add_option("--threads,-t", o.threads, "Worker threads (0 = all cores)")->check(CLI::NonNegativeNumber);
+  render->add_option("--max-depth", o.maxDepth, "Maximum path depth")->check(CLI::Range(0, 1000));
+  render->add_option("--out,-o", o.outputPattern, "Output path pattern, #### = frame number (e.g. out/shot.####.exr)");
+  render->add_flag("--preview", o.preview, "Also write an sRGB PNG preview (OCIO, ACES SDR view) next to each EXR");
+  render->add_flag("--float", o.floatOutput, "Write the beauty as 32-bit float instead of half");
+  render->add_flag("--quiet,-q", o.quiet, "Only print the per-frame summary lines");
+  render->callback([&o] { throw CLI::RuntimeError(runRender(o)); });
+}
+
+void addCheck(CLI::App& app, std::string& shot) {
+  auto* check = app.add_subcommand("check", "Validate a shot file and its assets without rendering");
+  check->add_option("shot", shot, "Shot file (JSON)")->required();
+  check->callback([&shot] { throw CLI::RuntimeError(runCheck(shot)); });
+}
+
+void addInfo(CLI::App& app, std::string& file) {
+  auto* info = app.add_subcommand("info", "Describe a glTF asset (.glb/.gltf) or an EXR frame");
+  info->add_option("file", file, "A .glb, .gltf or .exr file")->required();
+  info->callback([&file] { throw CLI::RuntimeError(runInfo(file)); });
+}
+
+void addBench(CLI::App& app, BenchOptions& o) {
+  auto* bench = app.add_subcommand("bench", "Measure render and raw Embree throughput (not a test)");
+  bench->footer("Renders the default shot (or SHOT) at a fixed small size and reports medians of the repetitions.");
+  bench->add_option("shot", o.shotPath, "Shot file (default: scenes/shots/tear_closeup.json)");
+  bench->add_option("--width", o.width, "Width")->check(CLI::Range(8, 4096));
+  bench->add_option("--height", o.height, "Height")->check(CLI::Range(8, 4096));
+  bench->add_option("--spp", o.spp, "Samples per pixel")->check(CLI::Range(1, 4096));
+  bench->add_option("--threads", o.threads, "Threads (0 = all cores)")->check(CLI::NonNegativeNumber);
+  bench->add_option("--repetitions", o.repetitions, "Repetitions (median reported)")->check(CLI::Range(1, 50));
+  bench->callback([&o] { throw CLI::RuntimeError(runBench(o)); });
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app(kDescription, "lacrima");
+  app.set_version_flag("--version", std::string("lacrima ") + LACRIMA_VERSION);
+  app.require_subcommand(1);
+  RenderOptions renderOptions;
+  BenchOptions benchOptions;
+  std::string checkShot, infoFile;
+  addRender(app, renderOptions);
+  addCheck(app, checkShot);
+  addInfo(app, infoFile);
+  addBench(app, benchOptions);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::RuntimeError& status) {
+    return status.get_exit_code();  // a subcommand ran; its status
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : kExitBadInput;  // --help/--version are 0; usage errors are bad input
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "lacrima: internal error: %s\n", e.what());
+    return kExitRenderFailure;
+  }
+  return kExitOk;
+}

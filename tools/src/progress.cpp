@@ -1,0 +1,49 @@
+#include "progress.hpp"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <cstdio>
+
+namespace lacrima::cli {
+
+std::string formatDuration(double seconds) {
+  const long total = long(seconds + 0.5);
+  if (total >= 3600) return fmt::format("{}:{:02}:{:02}", total / 3600, (total / 60) % 60, total % 60);
+  return fmt::format("{}:{:02}", total / 60, total % 60);
+}
+
+std::string formatRate(double perSecond) {
+  if (perSecond >= 1e6) return fmt::format("{:.2f} M", perSecond / 1e6);
+  if (perSecond >= 1e3) return fmt::format("{:.1f} k", perSecond / 1e3);
+  return fmt::format("{:.0f} ", perSecond);
+}
+
+ProgressReporter::ProgressReporter(int frame, int frameIndex, int frameCount, bool quiet)
+    : frame_(frame), frameIndex_(frameIndex), frameCount_(frameCount), quiet_(quiet), terminal_(isatty(STDERR_FILENO)) {}
+
+void ProgressReporter::update(const RenderProgress& p) {
+  if (quiet_ || p.tilesTotal == 0) return;
+  const double fraction = double(p.tilesDone) / p.tilesTotal;
+  const int decile = int(fraction * 10.0);
+  const auto now = std::chrono::steady_clock::now();
+  if (terminal_) {
+    if (p.tilesDone != p.tilesTotal && now - lastPrint_ < std::chrono::milliseconds(200)) return;
+  } else if (decile == lastDecile_) {
+    return;
+  }
+  lastDecile_ = decile;
+  lastPrint_ = now;
+  const double eta = fraction > 0 ? p.elapsedSeconds * (1.0 - fraction) / fraction : 0.0;
+  const std::string line =
+      fmt::format("frame {} [{}/{}] {:5.1f}%  {}rays/s  elapsed {}  ETA {}", frame_, frameIndex_ + 1, frameCount_,
+                  100.0 * fraction, formatRate(p.raysSoFar / std::max(p.elapsedSeconds, 1e-9)),
+                  formatDuration(p.elapsedSeconds), formatDuration(eta));
+  std::fprintf(stderr, terminal_ ? "\r%s\033[K" : "%s\n", line.c_str());
+}
+
+void ProgressReporter::finish() {
+  if (!quiet_ && terminal_) std::fprintf(stderr, "\r\033[K");
+}
+
+}  // namespace lacrima::cli
