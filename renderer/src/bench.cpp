@@ -8,6 +8,7 @@
 
 #include "embree_scene.hpp"
 #include "lacrima/geometry/sampler.hpp"
+#include "lacrima/materials/sampling.hpp"
 #include "lacrima/renderer/camera.hpp"
 
 namespace lacrima {
@@ -19,11 +20,8 @@ struct RaySet {
   std::vector<Ray> bounce;
 };
 
-// Cosine-weighted hemisphere direction (Malley's method).
 Vec3 cosineDirection(const Vec3& normal, const Vec2& u) {
-  const float r = std::sqrt(u.x()), phi = 2.0f * kPi * u.y();
-  const Vec3 local(r * std::cos(phi), r * std::sin(phi), safeSqrt(1.0f - u.x()));
-  return ShadingFrame::fromNormal(normal).toWorld(local);
+  return ShadingFrame::fromNormal(normal).toWorld(sampleCosineHemisphere(u));
 }
 
 RaySet makeRays(const Frame& frame, const EmbreeScene& scene) {

@@ -1,22 +1,9 @@
 // Thin-lens / pinhole camera (pbrt-v4 PerspectiveCamera, section 5.2.3 "The Thin Lens Model").
 #include "lacrima/renderer/camera.hpp"
 
-namespace lacrima {
+#include "lacrima/materials/sampling.hpp"
 
-Vec2 sampleUniformDiskConcentric(const Vec2& u) {
-  // Shirley & Chiu 1997: map [-1,1]^2 to the disk keeping areas proportional.
-  const Vec2 offset = 2.0f * u - Vec2(1.0f, 1.0f);
-  if (offset.x() == 0.0f && offset.y() == 0.0f) return Vec2(0.0f, 0.0f);
-  float r, theta;
-  if (std::abs(offset.x()) > std::abs(offset.y())) {
-    r = offset.x();
-    theta = (kPi / 4.0f) * (offset.y() / offset.x());
-  } else {
-    r = offset.y();
-    theta = kPi / 2.0f - (kPi / 4.0f) * (offset.x() / offset.y());
-  }
-  return r * Vec2(std::cos(theta), std::sin(theta));
-}
+namespace lacrima {
 
 static float tanHalfFov(const Camera& camera) { return std::tan(0.5f * camera.verticalFovRadians); }
 

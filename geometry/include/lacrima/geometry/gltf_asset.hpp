@@ -20,6 +20,10 @@ struct GltfMaterialInfo {
   float transmission = 0.0f;              // KHR_materials_transmission.transmissionFactor
   float ior = 1.5f;                       // KHR_materials_ior.ior
   bool hasVolume = false;                 // KHR_materials_volume present
+  bool doubleSided = false;               // glTF doubleSided (thin sheets: tear meniscus, lashes)
+  // False when the material has no pbrMetallicRoughness block. glTF would then default to a
+  // white metal; lacrima keeps the grey dielectric above instead (the ICT face has no factors).
+  bool hasPbrFactors = false;
 };
 
 // One morph target of one primitive: only the vertices it moves.
@@ -35,6 +39,15 @@ struct GltfPrimitive {
   GltfMaterialInfo material;
   std::vector<SparseDelta> targets;  // one per morph target (asset target order); may be empty deltas
   Affine3 nodeTransform = Affine3::Identity();  // already applied to mesh; kept to transform deltas
+  // findCoincidentVertices of the neutral mesh: keeps UV seams welded when morphs recompute normals.
+  std::vector<uint32_t> weldMap;
+};
+
+// A facial landmark: a vertex of one primitive (nodes[0].extras.landmarks68 in the ICT face).
+struct Landmark {
+  int index = 0;        // position in the landmark list (multi-PIE 68: 0..67)
+  int primitive = 0;    // index into GltfAsset::primitives
+  uint32_t vertex = 0;  // vertex of that primitive
 };
 
 struct GltfCamera {
@@ -50,6 +63,8 @@ struct GltfAsset {
   std::vector<std::string> targetNames;  // morph target names (meshes[i].extras.targetNames)
   std::vector<GltfCamera> cameras;
   std::vector<std::string> nodeNames;
+  std::vector<Landmark> landmarks;     // nodes[0].extras.landmarks68 when present
+  std::vector<std::string> warnings;   // things loaded with a caveat or skipped, and why
 
   // Index of a morph target by exact name, or -1.
   int findTarget(const std::string& name) const;
@@ -61,7 +76,9 @@ GltfAsset loadGltfAsset(const std::filesystem::path& path);
 
 // Neutral mesh plus weighted sparse deltas: x = n + B b (seed 002, eq. 1 without skinning).
 // weights is indexed like asset.targetNames (missing trailing weights count as zero).
-// Normals are recomputed when any weight is non-zero.
+// Normals are recomputed (welded by primitive.weldMap) when a non-zero weight moves a vertex of
+// this primitive; otherwise the result is bitwise the neutral mesh. A non-finite weight throws
+// InputError.
 TriangleMesh applyMorphTargets(const GltfPrimitive& primitive, const std::vector<float>& weights);
 
 // Human-readable summary for `lacrima info`: primitives with vertex/triangle counts,

@@ -23,11 +23,35 @@ struct TriangleMesh {
 void transformMesh(TriangleMesh& mesh, const Affine3& transform);
 
 // Area-weighted smooth vertex normals. With weldByPosition, vertices at the same position
-// (UV seams split vertices in glTF) share one normal so seams do not show.
+// (UV seams split vertices in glTF) share one normal so seams do not show. Vertices on no
+// triangle of non-zero area get +Z. Throws std::invalid_argument for out-of-range indices.
 void computeSmoothNormals(TriangleMesh& mesh, bool weldByPosition = true);
 
-// Problems that make a mesh unrenderable: index out of range, non-finite positions.
+// For each vertex, the lowest index of a vertex at bitwise the same position (+0 and -0 equal).
+// Computed once on a neutral mesh, it keeps seams welded after a deformation moves the copies
+// of a seam vertex by slightly different amounts.
+std::vector<uint32_t> findCoincidentVertices(const TriangleMesh& mesh);
+
+// As above, but vertices are welded by a precomputed map (findCoincidentVertices); the map must
+// have one entry per vertex, each entry a valid vertex index.
+void computeSmoothNormals(TriangleMesh& mesh, const std::vector<uint32_t>& weldMap);
+
+// Axis-aligned bounds of the positions (empty box for an empty mesh).
+Eigen::AlignedBox3f computeBounds(const TriangleMesh& mesh);
+
+// Enclosed volume by the divergence theorem (sum of signed tetrahedra against the origin, in
+// double precision). Positive for a closed mesh whose triangles are counter-clockwise from outside.
+double signedVolume(const TriangleMesh& mesh);
+
+// Problems that make a mesh unrenderable: index count not a multiple of 3, index out of range,
+// normals/uvs not one per vertex, non-finite positions or normals.
 // Returns an empty string when the mesh is valid, otherwise a description of the first problem.
 std::string findMeshDefect(const TriangleMesh& mesh);
+
+// Closed and consistently oriented: every directed edge appears exactly once and its reverse
+// exactly once (so every edge is shared by exactly two triangles that agree on orientation).
+// Returns "" when that holds, otherwise a description of the first offending edge.
+// Expects a mesh without findMeshDefect problems.
+std::string findClosedMeshDefect(const TriangleMesh& mesh);
 
 }  // namespace lacrima

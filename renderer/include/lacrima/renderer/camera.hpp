@@ -22,7 +22,4 @@ Mat4 worldToCameraMatrix(const Camera& camera);
 // far = 1 km.
 Mat4 worldToNdcMatrix(const Camera& camera, int width, int height);
 
-// Concentric square-to-disk mapping (Shirley & Chiu 1997).
-Vec2 sampleUniformDiskConcentric(const Vec2& u);
-
 }  // namespace lacrima

@@ -1,0 +1,101 @@
+// The human-readable summary printed by `lacrima info`.
+#include <algorithm>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "lacrima/geometry/gltf_asset.hpp"
+
+namespace lacrima {
+
+namespace {
+
+// Names joined with ", " and wrapped to `width` columns, each line indented by `indent`.
+std::string wrapNames(const std::vector<std::string>& names, size_t indent, size_t width) {
+  std::string out, line(indent, ' ');
+  for (size_t i = 0; i < names.size(); ++i) {
+    const std::string item = names[i] + (i + 1 < names.size() ? "," : "");
+    if (line.size() > indent && line.size() + 1 + item.size() > width) {
+      out += line + "\n";
+      line.assign(indent, ' ');
+    }
+    if (line.size() > indent) line += ' ';
+    line += item;
+  }
+  if (line.size() > indent) out += line + "\n";
+  return out;
+}
+
+size_t movingTargetCount(const GltfPrimitive& p) {
+  return size_t(std::count_if(p.targets.begin(), p.targets.end(), [](const SparseDelta& d) { return !d.vertices.empty(); }));
+}
+
+std::string describePrimitives(const GltfAsset& asset) {
+  size_t nameWidth = 4, partWidth = 4;
+  for (const GltfPrimitive& p : asset.primitives) {
+    nameWidth = std::max(nameWidth, p.name.size());
+    partWidth = std::max(partWidth, p.part.size());
+  }
+  std::string out = fmt::format("primitives: {}\n", asset.primitives.size());
+  out += fmt::format("  {:>3}  {:<{}}  {:<{}}  {:>8}  {:>9}  {:>7}  {}\n", "#", "name", nameWidth, "part", partWidth,
+                     "vertices", "triangles", "targets", "material");
+  size_t vertices = 0, triangles = 0;
+  for (size_t i = 0; i < asset.primitives.size(); ++i) {
+    const GltfPrimitive& p = asset.primitives[i];
+    const GltfMaterialInfo& m = p.material;
+    std::string material = m.name.empty() ? "(none)" : m.name;
+    if (m.doubleSided) material += ", double-sided";
+    if (m.transmission > 0.0f) material += fmt::format(", transmission {:.2f}", m.transmission);
+    if (m.ior != 1.5f) material += fmt::format(", ior {:.3f}", m.ior);
+    if (m.hasVolume) material += ", volume";
+    out += fmt::format("  {:>3}  {:<{}}  {:<{}}  {:>8}  {:>9}  {:>7}  {}\n", i, p.name, nameWidth, p.part, partWidth,
+                       p.mesh.vertexCount(), p.mesh.triangleCount(), movingTargetCount(p), material);
+    vertices += p.mesh.vertexCount();
+    triangles += p.mesh.triangleCount();
+  }
+  out += fmt::format("  total: {} vertices, {} triangles ('targets' counts the targets that move a primitive)\n", vertices,
+                     triangles);
+  return out;
+}
+
+std::string describeBounds(const GltfAsset& asset) {
+  Eigen::AlignedBox3f box;
+  for (const GltfPrimitive& p : asset.primitives) box.extend(computeBounds(p.mesh));
+  if (box.isEmpty()) return "bounds: empty\n";
+  const Vec3 size = box.sizes();
+  return fmt::format("bounds (m): x {:.3f}..{:.3f}  y {:.3f}..{:.3f}  z {:.3f}..{:.3f}  (size {:.3f} x {:.3f} x {:.3f})\n",
+                     box.min().x(), box.max().x(), box.min().y(), box.max().y(), box.min().z(), box.max().z(),
+                     size.x(), size.y(), size.z());
+}
+
+std::string describeCameras(const GltfAsset& asset) {
+  std::string out = fmt::format("cameras: {}\n", asset.cameras.size());
+  for (const GltfCamera& c : asset.cameras) {
+    const Vec3 position = c.cameraToAsset.translation();
+    const Vec3 forward = -c.cameraToAsset.linear().col(2).normalized();  // glTF cameras look down -Z
+    out += fmt::format("  {}: yfov {:.1f} deg, aspect {}, at ({:.3f}, {:.3f}, {:.3f}) looking ({:.2f}, {:.2f}, {:.2f})\n",
+                       c.name.empty() ? "(unnamed)" : c.name, c.yfovRadians * 180.0f / kPi,
+                       c.aspectRatio > 0.0f ? fmt::format("{:.3f}", c.aspectRatio) : "unspecified", position.x(),
+                       position.y(), position.z(), forward.x(), forward.y(), forward.z());
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string describeGltfAsset(const GltfAsset& asset) {
+  std::string out = fmt::format("file: {}\n", asset.path.string());
+  out += describePrimitives(asset);
+  out += fmt::format("morph targets: {}\n", asset.targetNames.size());
+  out += wrapNames(asset.targetNames, 2, 100);
+  out += describeCameras(asset);
+  out += describeBounds(asset);
+  out += fmt::format("landmarks: {}\n", asset.landmarks.size());
+  if (!asset.warnings.empty()) {
+    out += fmt::format("warnings: {}\n", asset.warnings.size());
+    for (const std::string& w : asset.warnings) out += "  " + w + "\n";
+  }
+  return out;
+}
+
+}  // namespace lacrima

@@ -1,0 +1,830 @@
+// loadShot: reads a shot file (docs/shot-format.md), checks all of it, collecting every problem
+// with its JSON pointer and text position, and loads the files it names (glTF assets, the
+// environment map) once, so that blendshape, part and camera names can be checked too.
+#include <fmt/format.h>
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include "frame_pattern.hpp"
+#include "json_source.hpp"
+#include "lacrima/scenes/shot.hpp"
+#include "shot_checker.hpp"
+#include "shot_geometry.hpp"
+#include "suggest.hpp"
+
+namespace lacrima {
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace shotfile;
+
+const std::vector<std::string> kRootKeys = {"version",   "frames", "output",      "colorConfig",
+                                            "render",    "camera", "environment", "background",
+                                            "materials", "lights", "assets",      "shapes"};
+const std::vector<std::string> kMaterialTypes = {"diffuse", "skin", "water", "rough_dielectric"};
+const std::vector<std::string> kLightTypes = {"rectangle", "sphere"};
+const std::vector<std::string> kShapeTypes = {"sphere", "ellipsoid", "rectangle"};
+
+constexpr int kSupportedVersion = 1;
+
+std::string join(const std::vector<std::string>& items, const char* separator = ", ") {
+  std::string out;
+  for (size_t i = 0; i < items.size(); ++i) {
+    if (i > 0) out += separator;
+    out += items[i];
+  }
+  return out;
+}
+
+std::string quotedList(const std::vector<std::string>& items) {
+  std::vector<std::string> quoted;
+  for (const std::string& s : items) quoted.push_back("'" + s + "'");
+  return join(quoted);
+}
+
+// "; did you mean 'x'?" or " (<listName>: a, b, c)" or " (<emptyText>)".
+std::string suggestionOrList(const std::string& name, const std::vector<std::string>& candidates,
+                             const std::string& listName, const std::string& emptyText) {
+  if (candidates.empty()) return " (" + emptyText + ")";
+  const std::string suggestion = didYouMean(name, candidates);
+  if (!suggestion.empty()) return suggestion;
+  if (candidates.size() > 12) return "";
+  return " (" + listName + ": " + quotedList(candidates) + ")";
+}
+
+void appendUnique(std::vector<std::string>& list, const std::string& s) {
+  if (!s.empty() && std::find(list.begin(), list.end(), s) == list.end()) list.push_back(s);
+}
+
+// The names a shot can use for a primitive: its part, its primitive name, its material name.
+std::vector<std::string> primitiveNames(const GltfPrimitive& p) { return {p.part, p.name, p.material.name}; }
+
+// Unbound glTF materials: transmissive or volumetric ones become smooth water-like dielectrics
+// with the glTF ior, the others diffuse with the base colour.
+MaterialParams mapGltfMaterial(const GltfMaterialInfo& m) {
+  const Color base = m.baseColor.max(0.0f).min(1.0f);
+  if (m.transmission > 0.0f || m.hasVolume) {
+    SmoothDielectricParams p;
+    p.ior = m.ior > 1.0f ? m.ior : 1.5f;
+    p.tint = base;
+    return p;
+  }
+  return DiffuseParams{base};
+}
+
+class ShotReader {
+ public:
+  ShotReader(Checker& c, Shot& shot) : c_(c), shot_(shot), baseDir_(shot.path.parent_path()) {}
+
+  void read(const Json& root) {
+    ObjectReader o(c_, root, "", kRootKeys);
+    if (!o.ok()) return;
+    if (const Json* v = o.find("version")) {
+      const auto version = readInteger(c_, *v, "/version", Range::any());
+      if (version && *version != kSupportedVersion) {
+        c_.error("/version", Anchor::Value,
+                 fmt::format("unsupported version {}: this lacrima reads shot files of version {}", *version,
+                             kSupportedVersion));
+        return;  // the rest would be checked against the wrong rules
+      }
+    } else {
+      o.missing("version", "1, the version of the shot format");
+    }
+
+    const bool framesOk = readSection(o, "frames", "an object with 'start', 'end' and optionally 'fps'",
+                                      [&](const Json& v) { return readFrames(v); });
+    if (const Json* v = o.find("output"))
+      readOutput(*v, framesOk);
+    else
+      o.missing("output", "a path pattern such as \"renders/shot.####.exr\"");
+    if (const Json* v = o.find("colorConfig")) {
+      if (const auto file = readString(c_, *v, "/colorConfig")) {
+        shot_.ocioConfig = resolve(*file);
+        checkExists("/colorConfig", *file, shot_.ocioConfig);
+      }
+    }
+    readSection(o, "render", "an object with 'width', 'height' and 'spp'",
+                [&](const Json& v) { return readRender(v); });
+    if (const Json* v = o.find("materials")) readMaterials(*v);
+    if (const Json* v = o.find("assets"))
+      readArray(*v, "/assets", "assets", [&](const Json& e, const std::string& p) { readAsset(e, p); });
+    readSection(o, "camera", "an object with 'position', 'lookAt' and 'fov', or with 'gltf'",
+                [&](const Json& v) { return readCamera(v); });
+    if (const Json* v = o.find("environment")) readEnvironment(*v);
+    if (const Json* v = o.find("background")) {
+      if (const auto color = readColor(c_, *v, "/background", Range::atLeast(0))) shot_.background = *color;
+      if (o.has("environment"))
+        c_.error("/background", Anchor::Key,
+                 "'background' and 'environment' cannot both be given: the uniform background is used only "
+                 "without an environment map");
+    }
+    if (const Json* v = o.find("lights"))
+      readArray(*v, "/lights", "lights", [&](const Json& e, const std::string& p) { readLight(e, p); });
+    if (const Json* v = o.find("shapes"))
+      readArray(*v, "/shapes", "shapes", [&](const Json& e, const std::string& p) { readShape(e, p); });
+  }
+
+ private:
+  Checker& c_;
+  Shot& shot_;
+  fs::path baseDir_;
+
+  // ---- helpers -----------------------------------------------------------------------------
+
+  // Reads a required section; returns what the reader returns (false when it is missing).
+  template <typename F>
+  bool readSection(ObjectReader& o, const std::string& key, const std::string& expectation, F&& reader) {
+    const Json* v = o.find(key);
+    if (!v) {
+      o.missing(key, expectation);
+      return false;
+    }
+    return reader(*v);
+  }
+
+  template <typename F>
+  void readArray(const Json& v, const std::string& pointer, const char* what, F&& reader) {
+    if (!v.is_array()) {
+      c_.error(pointer, Anchor::Value, fmt::format("expected an array of {}, found {}", what, describeValue(v)));
+      return;
+    }
+    for (size_t i = 0; i < v.size(); ++i) reader(v[i], childPointer(pointer, i));
+  }
+
+  fs::path resolve(const std::string& value) const {
+    const fs::path p(value);
+    return (p.is_absolute() ? p : baseDir_ / p).lexically_normal();
+  }
+
+  bool checkExists(const std::string& pointer, const std::string& written, const fs::path& resolved) {
+    std::error_code ec;
+    if (fs::is_regular_file(resolved, ec)) return true;
+    const std::string what = fs::exists(resolved, ec) ? "not a regular file" : "file not found";
+    c_.error(pointer, Anchor::Value,
+             written == resolved.string()
+                 ? fmt::format("{}: '{}'", what, written)
+                 : fmt::format("{}: '{}' (resolved to '{}')", what, written, resolved.string()));
+    return false;
+  }
+
+  // Reads "type" of an object whose allowed keys depend on it. Reports a non-object value, a
+  // missing type and an unknown type.
+  std::optional<std::string> readType(const Json& v, const std::string& pointer, const std::vector<std::string>& types,
+                                      const char* what) {
+    if (!v.is_object()) {
+      c_.error(pointer, Anchor::Value, "expected an object, found " + describeValue(v));
+      return std::nullopt;
+    }
+    const auto it = v.find("type");
+    if (it == v.end()) {
+      c_.error(pointer, Anchor::Key, fmt::format("missing required key 'type' (one of {})", quotedList(types)));
+      return std::nullopt;
+    }
+    const std::string typePointer = childPointer(pointer, "type");
+    if (!it->is_string()) {
+      c_.error(typePointer, Anchor::Value,
+               fmt::format("expected one of {}, found {}", quotedList(types), describeValue(*it)));
+      return std::nullopt;
+    }
+    const std::string type = it->get<std::string>();
+    if (std::find(types.begin(), types.end(), type) == types.end()) {
+      const std::string suggestion = didYouMean(type, types);
+      c_.error(typePointer, Anchor::Value,
+               suggestion.empty()
+                   ? fmt::format("unknown {} type '{}' (expected one of {})", what, type, quotedList(types))
+                   : fmt::format("unknown {} type '{}'{}", what, type, suggestion));
+      return std::nullopt;
+    }
+    return type;
+  }
+
+  std::vector<std::string> materialNames() const {
+    std::vector<std::string> names;
+    for (const Material& m : shot_.materials) names.push_back(m.name);
+    return names;
+  }
+
+  // A reference to a shot material by name (the value at `pointer`); -1 when undefined (reported).
+  int materialReference(const Json& v, const std::string& pointer) {
+    const auto name = readString(c_, v, pointer);
+    if (!name) return -1;
+    const int id = shot_.findMaterial(*name);
+    if (id < 0)
+      c_.error(
+          pointer, Anchor::Value,
+          fmt::format("undefined material '{}'{}", *name,
+                      suggestionOrList(*name, materialNames(), "defined materials", "the shot defines no materials")));
+    return id;
+  }
+
+  // ---- frames, output, render --------------------------------------------------------------
+
+  bool readFrames(const Json& v) {
+    ObjectReader o(c_, v, "/frames", {"start", "end", "fps"});
+    const auto start = o.integer("start", Range::any(), true);
+    const auto end = o.integer("end", start ? Range::atLeast(double(*start)) : Range::any(), true);
+    const auto fps = o.number("fps", Range::above(0));
+    if (start) shot_.frameStart = int(*start);
+    if (end) shot_.frameEnd = int(*end);
+    if (fps) shot_.fps = *fps;
+    return start && end;
+  }
+
+  void readOutput(const Json& v, bool framesOk) {
+    const auto pattern = readString(c_, v, "/output");
+    if (!pattern) return;
+    shot_.outputPattern = resolve(*pattern).string();
+    if (framesOk && shot_.frameStart != shot_.frameEnd && !hasFrameField(*pattern))
+      c_.error("/output", Anchor::Value,
+               fmt::format("'{}' has no frame number field ('####' or '%04d') but the shot has frames {}-{}: every "
+                           "frame would overwrite the last",
+                           *pattern, shot_.frameStart, shot_.frameEnd));
+  }
+
+  bool readRender(const Json& v) {
+    const size_t before = c_.errorCount();
+    ObjectReader o(c_, v, "/render", {"width", "height", "spp", "maxDepth", "seed", "threads", "floatOutput"});
+    RenderSettings& s = shot_.render;
+    if (auto x = o.integer("width", Range::closed(1, 16384), true)) s.width = int(*x);
+    if (auto x = o.integer("height", Range::closed(1, 16384), true)) s.height = int(*x);
+    if (auto x = o.integer("spp", Range::atLeast(1), true)) s.samplesPerPixel = int(*x);
+    if (auto x = o.integer("maxDepth", Range::closed(1, 1024))) s.maxDepth = int(*x);
+    if (auto x = o.unsignedInteger("seed")) s.seed = *x;
+    if (auto x = o.integer("threads", Range::atLeast(0))) s.threads = int(*x);
+    if (auto x = o.boolean("floatOutput")) s.floatOutput = *x;
+    return c_.errorCount() == before;
+  }
+
+  // ---- materials ---------------------------------------------------------------------------
+
+  void readMaterials(const Json& v) {
+    if (!v.is_object()) {
+      c_.error("/materials", Anchor::Value,
+               "expected an object mapping material names to materials, found " + describeValue(v));
+      return;
+    }
+    for (const auto& item : v.items()) {
+      const std::string pointer = childPointer("/materials", item.key());
+      if (item.key().empty()) c_.error(pointer, Anchor::Key, "a material name must not be empty");
+      // Registered even when invalid, so that references to it do not add confusing errors.
+      Material m;
+      m.name = item.key();
+      readMaterial(item.value(), pointer, m);
+      shot_.materials.push_back(std::move(m));
+    }
+  }
+
+  void readMaterial(const Json& v, const std::string& pointer, Material& m) {
+    const auto type = readType(v, pointer, kMaterialTypes, "material");
+    if (!type) return;
+    const Range unit = Range::closed(0, 1), ior = Range::openClosed(1, 3);
+    if (*type == "diffuse") {
+      ObjectReader o(c_, v, pointer, {"type", "albedo", "emission"});
+      DiffuseParams p;
+      if (auto x = o.color("albedo", unit)) p.albedo = *x;
+      m.params = p;
+      if (auto x = o.color("emission", Range::atLeast(0))) m.emission = *x;
+    } else if (*type == "skin") {
+      ObjectReader o(c_, v, pointer, {"type", "albedo", "roughness", "ior", "emission"});
+      SkinParams p;
+      if (auto x = o.color("albedo", unit)) p.albedo = *x;
+      if (auto x = o.number("roughness", unit)) p.roughness = float(*x);
+      if (auto x = o.number("ior", ior)) p.ior = float(*x);
+      m.params = p;
+      if (auto x = o.color("emission", Range::atLeast(0))) m.emission = *x;
+    } else if (*type == "water") {
+      ObjectReader o(c_, v, pointer, {"type", "ior", "tint", "emission"});
+      SmoothDielectricParams p;
+      if (auto x = o.number("ior", ior)) p.ior = float(*x);
+      if (auto x = o.color("tint", unit)) p.tint = *x;
+      m.params = p;
+      if (auto x = o.color("emission", Range::atLeast(0))) m.emission = *x;
+    } else {  // rough_dielectric
+      ObjectReader o(c_, v, pointer, {"type", "ior", "roughness", "tint", "emission"});
+      RoughDielectricParams p;
+      if (auto x = o.number("ior", ior)) p.ior = float(*x);
+      if (auto x = o.number("roughness", Range::openClosed(0, 1))) p.roughness = float(*x);
+      if (auto x = o.color("tint", unit)) p.tint = *x;
+      m.params = p;
+      if (auto x = o.color("emission", Range::atLeast(0))) m.emission = *x;
+    }
+  }
+
+  // ---- transforms --------------------------------------------------------------------------
+
+  std::optional<Mat3> readRotation(const Json& v, const std::string& pointer) {
+    if (v.is_array()) {
+      const auto degrees = readVec3(c_, v, pointer, Range::any(), "[x, y, z] degrees");
+      if (!degrees) return std::nullopt;
+      return eulerXyzDegrees(*degrees);
+    }
+    if (v.is_object()) {
+      ObjectReader o(c_, v, pointer, {"axis", "angle"});
+      const auto axis = o.vec3("axis", true);
+      const auto angle = o.number("angle", Range::any(), true);
+      if (axis && !(axis->norm() > 0.0f)) o.error("axis", "expected a non-zero axis, found [0, 0, 0]");
+      if (!axis || !angle || !(axis->norm() > 0.0f)) return std::nullopt;
+      return axisAngleDegrees(*axis, float(*angle));
+    }
+    c_.error(pointer, Anchor::Value,
+             "expected [x, y, z] Euler angles in degrees or {\"axis\": [x, y, z], \"angle\": degrees}, found " +
+                 describeValue(v));
+    return std::nullopt;
+  }
+
+  ShotTransform readTransform(const Json& v, const std::string& pointer) {
+    ShotTransform t;
+    ObjectReader o(c_, v, pointer, {"translate", "rotate", "scale"});
+    if (auto x = o.vec3("translate")) t.translate = *x;
+    if (const Json* r = o.find("rotate"))
+      if (auto x = readRotation(*r, o.at("rotate"))) t.rotation = *x;
+    if (const Json* s = o.find("scale")) {
+      if (s->is_array()) {
+        if (auto x = readVec3(c_, *s, o.at("scale"), Range::above(0))) t.scale = *x;
+      } else if (s->is_number()) {
+        if (auto x = readNumber(c_, *s, o.at("scale"), Range::above(0))) t.scale = Vec3::Constant(float(*x));
+      } else {
+        o.error("scale", "expected a number > 0 or [x, y, z] (each > 0), found " + describeValue(*s));
+      }
+    }
+    return t;
+  }
+
+  // ---- assets ------------------------------------------------------------------------------
+
+  void readAsset(const Json& v, const std::string& pointer) {
+    ObjectReader o(c_, v, pointer, {"name", "file", "transform", "materials", "blendshapes", "hide"});
+    if (!o.ok()) return;
+    ShotAsset asset;
+    const auto file = o.string("file", true);
+    const auto name = o.string("name");
+    asset.name = name ? *name : file ? fs::path(*file).stem().string() : "";
+    if (!asset.name.empty()) {
+      for (size_t i = 0; i < shot_.assets.size(); ++i)
+        if (shot_.assets[i].name == asset.name)
+          c_.error(o.at(name ? "name" : "file"), Anchor::Value,
+                   fmt::format("duplicate asset name '{}' (already used by /assets/{}){}", asset.name, i,
+                               name ? "" : "; give the assets distinct 'name's"));
+    }
+    if (const Json* t = o.find("transform")) asset.transform = readTransform(*t, o.at("transform"));
+    if (file) {
+      asset.file = resolve(*file);
+      if (checkExists(o.at("file"), *file, asset.file)) {
+        try {
+          asset.gltf = std::make_shared<const GltfAsset>(loadGltfAsset(asset.file));
+          for (const std::string& w : asset.gltf->warnings)
+            shot_.warnings.push_back(c_.warning(o.at("file"), Anchor::Value, asset.file.string() + ": " + w));
+        } catch (const std::exception& e) {
+          o.error("file", fmt::format("cannot load the glTF asset: {}", e.what()));
+        }
+      }
+    }
+    // Names the shot may use for the asset's primitives (only known when it loaded).
+    std::vector<std::string> names;
+    if (asset.gltf)
+      for (const GltfPrimitive& p : asset.gltf->primitives)
+        for (const std::string& n : primitiveNames(p)) appendUnique(names, n);
+    auto checkPrimitiveName = [&](const std::string& key, const std::string& keyPointer, Anchor anchor) {
+      if (!asset.gltf || std::find(names.begin(), names.end(), key) != names.end()) return;
+      c_.error(keyPointer, anchor,
+               fmt::format("asset '{}' has no part or material named '{}'{}", asset.name, key,
+                           suggestionOrList(key, names, "its parts and materials", "it has no primitives")));
+    };
+
+    if (const Json* m = o.find("materials")) {
+      if (!m->is_object()) {
+        o.error("materials",
+                "expected an object mapping part or material names to shot material names, found " + describeValue(*m));
+      } else {
+        for (const auto& item : m->items()) {
+          const std::string p = childPointer(o.at("materials"), item.key());
+          checkPrimitiveName(item.key(), p, Anchor::Key);
+          if (materialReference(item.value(), p) >= 0)
+            asset.materialBindings.emplace_back(item.key(), item.value().get<std::string>());
+        }
+      }
+    }
+    if (const Json* b = o.find("blendshapes")) {
+      if (!b->is_object()) {
+        o.error("blendshapes", "expected an object mapping blendshape names to weights, found " + describeValue(*b));
+      } else {
+        for (const auto& item : b->items()) {
+          const std::string p = childPointer(o.at("blendshapes"), item.key());
+          const auto weight = readNumber(c_, item.value(), p, Range::closed(0, 1));
+          if (asset.gltf && asset.gltf->findTarget(item.key()) < 0) {
+            if (asset.gltf->targetNames.empty())
+              c_.error(p, Anchor::Key, fmt::format("asset '{}' has no blendshapes", asset.name));
+            else
+              c_.error(p, Anchor::Key,
+                       fmt::format("unknown blendshape '{}'{}", item.key(),
+                                   suggestionOrList(item.key(), asset.gltf->targetNames, "blendshapes", "")));
+          }
+          if (weight) asset.blendshapes.emplace_back(item.key(), float(*weight));
+        }
+      }
+    }
+    if (const Json* h = o.find("hide")) {
+      readArray(*h, o.at("hide"), "part names", [&](const Json& e, const std::string& p) {
+        if (auto part = readString(c_, e, p)) {
+          checkPrimitiveName(*part, p, Anchor::Value);
+          asset.hide.push_back(*part);
+        }
+      });
+    }
+    if (asset.gltf) assignPrimitiveMaterials(asset);
+    shot_.assets.push_back(std::move(asset));
+  }
+
+  void assignPrimitiveMaterials(ShotAsset& asset) {
+    const GltfAsset& gltf = *asset.gltf;
+    asset.weights.assign(gltf.targetNames.size(), 0.0f);
+    for (const auto& [name, weight] : asset.blendshapes)
+      if (const int t = gltf.findTarget(name); t >= 0) asset.weights[size_t(t)] = weight;
+
+    auto contains = [](const std::vector<std::string>& list, const std::string& s) {
+      return !s.empty() && std::find(list.begin(), list.end(), s) != list.end();
+    };
+    auto binding = [&](const std::string& s) -> const std::string* {
+      if (s.empty()) return nullptr;
+      for (const auto& [key, material] : asset.materialBindings)
+        if (key == s) return &material;
+      return nullptr;
+    };
+    std::vector<std::pair<std::string, int>> automatic;  // glTF material key -> frame material id
+    for (const GltfPrimitive& p : gltf.primitives) {
+      const std::vector<std::string> names = primitiveNames(p);
+      if (std::any_of(names.begin(), names.end(), [&](const std::string& n) { return contains(asset.hide, n); })) {
+        asset.primitiveMaterials.push_back(-1);
+        continue;
+      }
+      const std::string* bound = nullptr;
+      for (const std::string& n : names)  // part first, then primitive name, then material name
+        if (!bound) bound = binding(n);
+      if (bound) {
+        asset.primitiveMaterials.push_back(std::max(0, shot_.findMaterial(*bound)));
+        continue;
+      }
+      const std::string key = p.material.name.empty() ? p.name : p.material.name;
+      const auto it = std::find_if(automatic.begin(), automatic.end(), [&](const auto& a) { return a.first == key; });
+      if (it != automatic.end()) {
+        asset.primitiveMaterials.push_back(it->second);
+        continue;
+      }
+      Material m;
+      m.name = asset.name + "/" + key;
+      m.params = mapGltfMaterial(p.material);
+      const int id = int(shot_.materials.size() + shot_.assetMaterials.size());
+      shot_.assetMaterials.push_back(std::move(m));
+      automatic.emplace_back(key, id);
+      asset.primitiveMaterials.push_back(id);
+    }
+  }
+
+  // ---- camera ------------------------------------------------------------------------------
+
+  bool readCamera(const Json& v) {
+    ObjectReader o(
+        c_, v, "/camera",
+        {"position", "lookAt", "up", "gltf", "fov", "focalLength", "sensorHeight", "fStop", "focusDistance"});
+    if (!o.ok()) return false;
+    const size_t before = c_.errorCount();
+    ShotCamera& cam = shot_.camera;
+    const GltfCamera* gltfCamera = nullptr;
+    const ShotAsset* gltfAsset = nullptr;
+
+    if (const Json* g = o.find("gltf")) {
+      cam.kind = ShotCamera::Kind::Gltf;
+      for (const char* key : {"position", "lookAt", "up"})
+        if (o.has(key))
+          o.error(key,
+                  fmt::format("'{}' cannot be combined with 'gltf': the glTF camera gives the position and "
+                              "orientation",
+                              key),
+                  Anchor::Key);
+      ObjectReader go(c_, *g, o.at("gltf"), {"asset", "camera"});
+      const auto assetName = go.string("asset", true);
+      const auto cameraName = go.string("camera", true);
+      if (assetName) {
+        cam.gltfAsset = *assetName;
+        std::vector<std::string> assetNames;
+        for (const ShotAsset& a : shot_.assets) {
+          assetNames.push_back(a.name);
+          if (a.name == *assetName) gltfAsset = &a;
+        }
+        if (!gltfAsset)
+          go.error("asset", fmt::format("undefined asset '{}'{}", *assetName,
+                                        suggestionOrList(*assetName, assetNames, "assets", "the shot has no assets")));
+      }
+      if (cameraName) cam.gltfCamera = *cameraName;
+      if (cameraName && gltfAsset && gltfAsset->gltf) {
+        std::vector<std::string> cameraNames;
+        for (const GltfCamera& gc : gltfAsset->gltf->cameras) {
+          cameraNames.push_back(gc.name);
+          if (gc.name == *cameraName && !gltfCamera) gltfCamera = &gc;
+        }
+        if (!gltfCamera)
+          go.error("camera",
+                   fmt::format("asset '{}' has no camera '{}'{}", gltfAsset->name, *cameraName,
+                               suggestionOrList(*cameraName, cameraNames, "its cameras", "it has no cameras")));
+      }
+    } else {
+      cam.kind = ShotCamera::Kind::LookAt;
+      const auto position = o.vec3("position", true);
+      const auto lookAt = o.vec3("lookAt", true);
+      const auto up = o.vec3("up");
+      if (position) cam.position = *position;
+      if (lookAt) cam.lookAt = *lookAt;
+      if (up) cam.up = *up;
+      if (position && lookAt) {
+        const Vec3 view = *lookAt - *position;
+        if (!(view.norm() > 0.0f))
+          o.error("lookAt", "'lookAt' must differ from 'position'");
+        else if (up && parallel(view, *up))
+          o.error("up", "'up' must not be parallel to the view direction (lookAt - position)");
+        else if (!o.has("up") && parallel(view, cam.up))
+          o.error("lookAt", "the view direction is parallel to the default 'up' [0, 1, 0]; give 'up'");
+      }
+    }
+
+    const auto fov = o.number("fov", Range::open(0, 180));
+    const auto focalLength = o.number("focalLength", Range::above(0));
+    const auto sensorHeight = o.number("sensorHeight", Range::above(0));
+    const auto fStop = o.number("fStop", Range::above(0));
+    const auto focusDistance = o.number("focusDistance", Range::above(0));
+    if (o.has("fov") && o.has("focalLength"))
+      o.error("focalLength", "give either 'fov' or 'focalLength', not both", Anchor::Key);
+    else if (!o.has("fov") && !o.has("focalLength") && cam.kind == ShotCamera::Kind::LookAt)
+      o.missing("fov", "vertical field of view in degrees; or 'focalLength' in mm");
+    if (fStop && !o.has("focusDistance") && cam.kind == ShotCamera::Kind::Gltf)
+      o.missing("focusDistance", "metres; with 'fStop', a glTF camera needs it: it has no look-at point to focus on");
+    if (fov) cam.fovDegrees = float(*fov);
+    if (focalLength) cam.focalLengthMm = float(*focalLength);
+    if (sensorHeight) cam.sensorHeightMm = float(*sensorHeight);
+    if (fStop) cam.fStop = float(*fStop);
+    if (focusDistance) cam.focusDistance = float(*focusDistance);
+
+    if (c_.errorCount() != before) return false;
+    deriveCamera(cam, gltfAsset, gltfCamera);
+    return true;
+  }
+
+  static void deriveCamera(ShotCamera& cam, const ShotAsset* asset, const GltfCamera* gltfCamera) {
+    Camera& out = cam.camera;
+    float viewDistance = 1.0f;
+    if (cam.kind == ShotCamera::Kind::LookAt) {
+      out.cameraToWorld = *lookAtCameraToWorld(cam.position, cam.lookAt, cam.up);
+      viewDistance = (cam.lookAt - cam.position).norm();
+    } else {
+      // The asset's transform applies; its scale does not scale the camera.
+      const Affine3 full = asset->transform.matrix() * gltfCamera->cameraToAsset;
+      out.cameraToWorld = Affine3::Identity();
+      out.cameraToWorld.linear() = full.rotation();
+      out.cameraToWorld.translation() = full.translation();
+    }
+    if (cam.fovDegrees)
+      out.verticalFovRadians = degreesToRadians(*cam.fovDegrees);
+    else if (cam.focalLengthMm)
+      out.verticalFovRadians = 2.0f * std::atan(cam.sensorHeightMm / (2.0f * *cam.focalLengthMm));
+    else
+      out.verticalFovRadians = gltfCamera->yfovRadians;
+    out.focusDistance = cam.focusDistance.value_or(viewDistance);
+    out.lensRadius = 0.0f;
+    if (cam.fStop) {
+      const float focalLengthMm =
+          cam.focalLengthMm.value_or(cam.sensorHeightMm / (2.0f * std::tan(0.5f * out.verticalFovRadians)));
+      out.lensRadius = focalLengthMm * 1e-3f / (2.0f * *cam.fStop);
+    }
+  }
+
+  // ---- environment -------------------------------------------------------------------------
+
+  void readEnvironment(const Json& v) {
+    ObjectReader o(c_, v, "/environment", {"file", "intensity", "rotation"});
+    if (!o.ok()) return;
+    ShotEnvironment env;
+    const auto file = o.string("file", true);
+    if (auto x = o.number("intensity", Range::atLeast(0))) env.intensity = float(*x);
+    if (auto x = o.number("rotation", Range::any())) env.rotationDegrees = float(*x);
+    if (file) {
+      env.file = resolve(*file);
+      if (checkExists(o.at("file"), *file, env.file)) {
+        try {
+          env.map = std::make_shared<const EnvironmentMap>(
+              EnvironmentMap::load(env.file, env.intensity, degreesToRadians(env.rotationDegrees)));
+          if (const size_t clamped = env.map->clampedTexelCount())
+            shot_.warnings.push_back(c_.warning(
+                o.at("file"), Anchor::Value,
+                fmt::format("{}: {} texel{} NaN, infinite or negative, set to 0", env.file.string(), clamped,
+                            clamped == 1 ? " was" : "s were")));
+        } catch (const std::exception& e) {
+          o.error("file", fmt::format("cannot load the environment map: {}", e.what()));
+        }
+      }
+    }
+    shot_.environment = std::move(env);
+  }
+
+  // ---- lights and shapes -------------------------------------------------------------------
+
+  // Rectangle geometry: edges 'u' and 'v', or 'size' with 'normal' or 'lookAt' (and 'up').
+  std::optional<RectangleEdges> readRectangle(ObjectReader& o, const Vec3* center) {
+    const bool byEdges = o.has("u") || o.has("v");
+    if (byEdges) {
+      bool mixed = false;
+      for (const char* key : {"size", "normal", "lookAt", "up"})
+        if (o.has(key)) {
+          o.error(key, fmt::format("'{}' cannot be combined with the edges 'u' and 'v'", key), Anchor::Key);
+          mixed = true;
+        }
+      const auto u = o.vec3("u", true);
+      const auto v = o.vec3("v", true);
+      if (!u || !v || mixed) return std::nullopt;
+      if (parallel(*u, *v)) {
+        o.error("v", "the edges 'u' and 'v' are parallel or zero: the rectangle has no area");
+        return std::nullopt;
+      }
+      return RectangleEdges{*u, *v};
+    }
+    std::optional<Vec2> size;
+    if (const Json* s = o.find("size"))
+      size = readVec2(o.checker(), *s, o.at("size"), Range::above(0), "[width, height]");
+    else
+      o.missing("size", "[width, height] with 'normal' or 'lookAt'; or the edge vectors 'u' and 'v'");
+    const auto normal = o.vec3("normal");
+    const auto lookAt = o.vec3("lookAt");
+    const auto up = o.vec3("up");
+    std::optional<Vec3> facing;
+    if (o.has("normal") && o.has("lookAt")) {
+      o.error("lookAt", "give either 'normal' or 'lookAt', not both", Anchor::Key);
+      return std::nullopt;
+    }
+    if (!o.has("normal") && !o.has("lookAt")) {
+      o.missing("normal", "the direction the rectangle faces; or 'lookAt', a point it faces");
+      return std::nullopt;
+    }
+    if (normal) {
+      if (!(normal->norm() > 0.0f))
+        o.error("normal", "expected a non-zero direction, found [0, 0, 0]");
+      else
+        facing = normal->normalized();
+    }
+    if (lookAt && center) {
+      if (!((*lookAt - *center).norm() > 0.0f))
+        o.error("lookAt", "'lookAt' must differ from 'center'");
+      else
+        facing = (*lookAt - *center).normalized();
+    }
+    if (up && facing && parallel(*up, *facing)) {
+      o.error("up", "'up' must not be parallel to the direction the rectangle faces");
+      return std::nullopt;
+    }
+    if (!size || !facing || (o.has("up") && !up)) return std::nullopt;
+    return rectangleFacing(*facing, up.value_or(Vec3(0, 1, 0)), *size);
+  }
+
+  void readLight(const Json& v, const std::string& pointer) {
+    const auto type = readType(v, pointer, kLightTypes, "light");
+    if (!type) return;
+    const bool rectangle = *type == "rectangle";
+    ObjectReader o(c_, v, pointer,
+                   rectangle ? std::vector<std::string>{"type", "center", "u", "v", "size", "normal", "lookAt", "up",
+                                                        "radiance", "power", "twoSided"}
+                             : std::vector<std::string>{"type", "center", "radius", "radiance", "power"});
+    const size_t before = c_.errorCount();
+    AreaLight light;
+    light.shape = rectangle ? AreaLight::Shape::Rectangle : AreaLight::Shape::Sphere;
+    const auto center = o.vec3("center", true);
+    if (center) light.center = *center;
+    float area = 0.0f;
+    if (rectangle) {
+      if (const auto edges = readRectangle(o, center ? &*center : nullptr)) {
+        light.edgeU = edges->edgeU;
+        light.edgeV = edges->edgeV;
+        area = light.edgeU.cross(light.edgeV).norm();
+      }
+      if (auto x = o.boolean("twoSided")) light.twoSided = *x;
+    } else {
+      if (auto x = o.number("radius", Range::above(0), true)) light.radius = float(*x);
+      area = 4.0f * kPi * light.radius * light.radius;
+    }
+
+    const Range nonNegative = Range::atLeast(0);
+    if (o.has("radiance") && o.has("power")) {
+      o.error("power", "give either 'radiance' or 'power', not both", Anchor::Key);
+    } else if (const Json* r = o.find("radiance")) {
+      if (auto x = readColor(c_, *r, o.at("radiance"), nonNegative)) light.radiance = *x;
+    } else if (const Json* p = o.find("power")) {
+      std::optional<Color> watts;
+      if (p->is_number()) {
+        if (auto x = readNumber(c_, *p, o.at("power"), nonNegative)) watts = Color::Constant(float(*x));
+      } else if (p->is_array()) {
+        watts = readColor(c_, *p, o.at("power"), nonNegative);
+      } else {
+        o.error("power", "expected watts: a number >= 0 or [r, g, b] (each >= 0), found " + describeValue(*p));
+      }
+      // Lambertian emitter: power = radiance * pi * area per emitting side.
+      if (watts && area > 0.0f) light.radiance = *watts / (kPi * area * (light.twoSided ? 2.0f : 1.0f));
+    } else if (o.ok()) {
+      o.missing("radiance", "[r, g, b] in W/(m^2 sr); or 'power' in watts");
+    }
+    if (c_.errorCount() == before) shot_.lights.push_back(light);
+  }
+
+  void readShape(const Json& v, const std::string& pointer) {
+    const auto type = readType(v, pointer, kShapeTypes, "shape");
+    if (!type) return;
+    ShotShape shape;
+    std::vector<std::string> keys;
+    if (*type == "sphere") {
+      shape.type = ShotShape::Type::Sphere;
+      keys = {"type", "center", "radius", "material"};
+    } else if (*type == "ellipsoid") {
+      shape.type = ShotShape::Type::Ellipsoid;
+      keys = {"type", "center", "radii", "rotate", "material"};
+    } else {
+      shape.type = ShotShape::Type::Rectangle;
+      keys = {"type", "center", "u", "v", "size", "normal", "lookAt", "up", "material"};
+    }
+    ObjectReader o(c_, v, pointer, keys);
+    const size_t before = c_.errorCount();
+    const auto center = o.vec3("center", true);
+    if (center) shape.center = *center;
+    if (shape.type == ShotShape::Type::Sphere) {
+      if (auto x = o.number("radius", Range::above(0), true)) shape.radius = float(*x);
+    } else if (shape.type == ShotShape::Type::Ellipsoid) {
+      if (auto x = o.vec3("radii", true, Range::above(0))) shape.radii = *x;
+      if (const Json* r = o.find("rotate"))
+        if (auto x = readRotation(*r, o.at("rotate"))) shape.rotation = *x;
+    } else {
+      if (const auto edges = readRectangle(o, center ? &*center : nullptr)) {
+        shape.edgeU = edges->edgeU;
+        shape.edgeV = edges->edgeV;
+      }
+    }
+    if (const Json* m = o.find("material")) {
+      const int id = materialReference(*m, o.at("material"));
+      if (id >= 0) {
+        shape.material = m->get<std::string>();
+        shape.materialId = uint32_t(id);
+      }
+    } else {
+      o.missing("material", "the name of a material in 'materials'");
+    }
+    if (c_.errorCount() == before) shot_.shapes.push_back(shape);
+  }
+};
+
+std::optional<std::string> readTextFile(const fs::path& path, std::string& error) {
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) {
+    error = "cannot read the shot file: it is a directory";
+    return std::nullopt;
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    error = fmt::format("cannot read the shot file: {}", std::strerror(errno));
+    return std::nullopt;
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) {
+    error = "cannot read the shot file: read error";
+    return std::nullopt;
+  }
+  return text.str();
+}
+
+}  // namespace
+
+Shot loadShot(const std::filesystem::path& path) {
+  Shot shot;
+  shot.path = path;
+  std::string readError;
+  const auto text = readTextFile(path, readError);
+  if (!text) throw ShotError({Diagnostic{path, "", 0, 0, readError}});
+
+  JsonSource source(*text);
+  const auto json = source.parse();
+  if (!json) {
+    const TextPosition p = source.positionOf(source.syntaxErrorOffset());
+    throw ShotError({Diagnostic{path, "", p.line, p.column,
+                                "JSON syntax error: " + source.syntaxError() + "\n" + source.excerpt(p)}});
+  }
+
+  Checker checker(path, source);
+  for (const DuplicateKey& d : source.duplicateKeys()) {
+    const TextPosition first = source.positionOf(d.firstKeyOffset);
+    const std::string key = d.pointer.substr(d.pointer.rfind('/') + 1);
+    checker.error(d.pointer, Anchor::Key,
+                  fmt::format("duplicate key '{}' (first given at line {}, column {})", key, first.line, first.column));
+  }
+  ShotReader(checker, shot).read(*json);
+  if (checker.errorCount() > 0) throw ShotError(checker.diagnostics());
+  return shot;
+}
+
+}  // namespace lacrima

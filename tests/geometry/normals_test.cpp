@@ -1,0 +1,124 @@
+// Smooth normals: orientation, accuracy against analytic normals, welding across seams.
+#include <gtest/gtest.h>
+
+#include "lacrima/geometry/mesh.hpp"
+#include "lacrima/geometry/shapes.hpp"
+
+namespace lacrima {
+namespace {
+
+Mat3 ellipsoidAxes() {
+  // Semi-axes 2, 1, 0.5 along a rotated frame, so that no axis is aligned with x, y or z.
+  const Mat3 rotation = Eigen::AngleAxisf(0.4f, Vec3(1, 2, 3).normalized()).toRotationMatrix();
+  return rotation * Vec3(2.0f, 1.0f, 0.5f).asDiagonal();
+}
+
+TEST(SmoothNormals, EllipsoidNormalsPointOutwardAndMatchAnalytic) {
+  const Vec3 center(0.3f, -1.0f, 2.0f);
+  TriangleMesh mesh = makeEllipsoid(center, ellipsoidAxes(), 64, 128);
+  const std::vector<Vec3> analytic = mesh.normals;
+  mesh.normals.clear();
+  computeSmoothNormals(mesh);
+  ASSERT_EQ(mesh.normals.size(), analytic.size());
+  float worstCos = 1.0f;
+  for (size_t v = 0; v < analytic.size(); ++v) {
+    EXPECT_GT(mesh.normals[v].dot(mesh.positions[v] - center), 0.0f) << "vertex " << v << " points inward";
+    EXPECT_NEAR(mesh.normals[v].norm(), 1.0f, 1e-5f);
+    worstCos = std::min(worstCos, mesh.normals[v].dot(analytic[v]));
+  }
+  // Area-weighted averages of a 64x128 tessellation of this 4:1 ellipsoid stay within 0.24
+  // degrees of the analytic normal (measured); allow 0.5.
+  EXPECT_GT(worstCos, std::cos(degreesToRadians(0.5f)));
+}
+
+TEST(SmoothNormals, AnalyticEllipsoidNormalsArePerpendicularToTheSurface) {
+  // The inverse transpose normal is perpendicular to the tangents dp/dtheta and dp/dphi,
+  // approximated here by the edges to neighbouring ring vertices at high resolution.
+  const TriangleMesh mesh = makeEllipsoid(Vec3::Zero(), ellipsoidAxes(), 400, 800);
+  const size_t v = 1 + 199 * 800 + 100;  // a vertex on the equator ring
+  const Vec3 along = mesh.positions[v + 1] - mesh.positions[v - 1];
+  const Vec3 across = mesh.positions[v + 800] - mesh.positions[v - 800];
+  EXPECT_NEAR(mesh.normals[v].dot(along.normalized()), 0.0f, 1e-3f);
+  EXPECT_NEAR(mesh.normals[v].dot(across.normalized()), 0.0f, 1e-3f);
+}
+
+// Two triangles folded along a shared edge, with the edge's vertices duplicated (as a UV seam
+// splits them) so that the triangles share no index.
+TriangleMesh foldedSeam() {
+  TriangleMesh mesh;
+  mesh.positions = {Vec3(0, 0, 0), Vec3(0, 1, 0), Vec3(-1, 0.5f, 0),   // left triangle, flat (normal +z)
+                    Vec3(0, 0, 0), Vec3(1, 0.5f, 1), Vec3(0, 1, 0)};   // right triangle, tilted
+  mesh.uvs = {Vec2(0, 0), Vec2(0, 1), Vec2(-1, 0.5f), Vec2(0.5f, 0), Vec2(1, 0.5f), Vec2(0.5f, 1)};
+  mesh.indices = {0, 1, 2, 3, 4, 5};
+  return mesh;
+}
+
+TEST(SmoothNormals, WeldingGivesSeamCopiesEqualNormals) {
+  TriangleMesh welded = foldedSeam();
+  computeSmoothNormals(welded, true);
+  EXPECT_EQ(welded.normals[0], welded.normals[3]);
+  EXPECT_EQ(welded.normals[1], welded.normals[5]);
+  // The welded seam normal lies between the two face normals.
+  const Vec3 left(0, 0, 1), right = Vec3(-1, 0, 1).normalized();
+  // Area weighting: the right triangle (area sqrt 2 / 2) pulls harder than the left (1/2).
+  EXPECT_LT((welded.normals[0] - (left + std::sqrt(2.0f) * right).normalized()).norm(), 1e-6f);
+  EXPECT_NE(welded.normals[0], left);
+
+  TriangleMesh split = foldedSeam();
+  computeSmoothNormals(split, false);
+  EXPECT_LT((split.normals[0] - left).norm(), 1e-6f);
+  EXPECT_LT((split.normals[3] - right).norm(), 1e-6f);
+}
+
+TEST(SmoothNormals, WeldMapOverloadMatchesWeldingByPosition) {
+  TriangleMesh a = makeEllipsoid(Vec3::Zero(), Mat3::Identity(), 8, 12);
+  a.positions.push_back(a.positions[5]);  // an extra copy of vertex 5, used by a triangle
+  a.indices[0] = uint32_t(a.positions.size() - 1);
+  const std::vector<uint32_t> map = findCoincidentVertices(a);
+  EXPECT_EQ(map.back(), 5u);
+  EXPECT_EQ(map[7], 7u);
+  TriangleMesh b = a;
+  computeSmoothNormals(a, true);
+  computeSmoothNormals(b, map);
+  EXPECT_EQ(a.normals, b.normals);
+  EXPECT_EQ(a.normals.back(), a.normals[5]);
+}
+
+TEST(SmoothNormals, NegativeZeroWeldsWithPositiveZero) {
+  TriangleMesh mesh;
+  mesh.positions = {Vec3(0.0f, 0, 0), Vec3(-0.0f, 0, 0)};
+  const std::vector<uint32_t> map = findCoincidentVertices(mesh);
+  EXPECT_EQ(map[1], 0u);
+}
+
+TEST(SmoothNormals, FlatRectangleHasItsPlaneNormal) {
+  TriangleMesh mesh = makeRectangle(Vec3(1, 2, 3), Vec3(0, 0, 2), Vec3(0, 3, 0));  // normal = z x y = -x
+  const std::vector<Vec3> given = mesh.normals;
+  computeSmoothNormals(mesh);
+  for (size_t v = 0; v < 4; ++v) {
+    EXPECT_LT((mesh.normals[v] - Vec3(-1, 0, 0)).norm(), 1e-6f);
+    EXPECT_LT((given[v] - Vec3(-1, 0, 0)).norm(), 1e-6f);
+  }
+}
+
+TEST(SmoothNormals, IsolatedAndDegenerateVerticesGetAFiniteUnitNormal) {
+  TriangleMesh mesh;
+  mesh.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(2, 0, 0), Vec3(5, 5, 5)};  // collinear + isolated
+  mesh.indices = {0, 1, 2};
+  computeSmoothNormals(mesh);
+  for (const Vec3& n : mesh.normals) {
+    EXPECT_TRUE(n.allFinite());
+    EXPECT_NEAR(n.norm(), 1.0f, 1e-6f);
+  }
+}
+
+TEST(SmoothNormals, RejectsBadWeldMapsAndIndices) {
+  TriangleMesh mesh = makeRectangle(Vec3::Zero(), Vec3(1, 0, 0), Vec3(0, 1, 0));
+  EXPECT_THROW(computeSmoothNormals(mesh, std::vector<uint32_t>{0, 1}), std::invalid_argument);
+  EXPECT_THROW(computeSmoothNormals(mesh, std::vector<uint32_t>{0, 1, 2, 9}), std::invalid_argument);
+  mesh.indices[4] = 17;
+  EXPECT_THROW(computeSmoothNormals(mesh), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace lacrima
