@@ -1,6 +1,7 @@
 #pragma once
 // Equirectangular (latitude-longitude) environment map with importance sampling.
 // Direction convention: world +Y is up; u = 0.5 looks along -Z... see environment.cpp header.
+#include <cstddef>
 #include <filesystem>
 #include <vector>
 
@@ -28,6 +29,8 @@ class EnvironmentMap {
 
   int width() const { return width_; }
   int height() const { return height_; }
+  // Texels whose value was non-finite or negative and was replaced by 0 (callers report it).
+  std::size_t clampedTexelCount() const { return clampedTexels_; }
 
  private:
   // piecewise-constant 2D distribution (marginal over rows, conditional per row),
@@ -40,6 +43,9 @@ class EnvironmentMap {
   std::vector<float> conditionalCdf_;   // height * (width + 1)
   std::vector<float> rowIntegral_;      // height
   float totalIntegral_ = 0.0f;
+  std::size_t clampedTexels_ = 0;
+
+  int texelIndex(const Vec2& uv) const;
 
   Vec2 directionToUv(const Vec3& direction) const;
   Vec3 uvToDirection(const Vec2& uv) const;

@@ -1,0 +1,218 @@
+// Equirectangular environment map: lookup, importance sampling and its solid-angle density.
+//
+// Direction convention (world space, +Y up, right-handed):
+//   theta = angle from +Y (0 at the zenith, pi at the nadir); v = theta / pi, so image row 0 (the
+//   top of the file) is the sky above and the last row is the ground below.
+//   phi   = atan2(-x, z) in [0, 2 pi); u = phi / (2 pi):
+//     u = 0.5  -> -Z (the image centre is what a default camera looking down -Z sees),
+//     u = 0.75 -> +X, u = 0.25 -> -X, u = 0 and 1 -> +Z (the seam is behind that camera).
+//   The map is therefore seen unmirrored from the inside: going right in the image turns right.
+//   Unit direction of (u, v): (-sin(theta) sin(phi), cos(theta), sin(theta) cos(phi)).
+// Rotation r (radians) turns the whole environment about +Y by the right-hand rule (seen from
+// above, +X goes towards -Z): whatever the unrotated map shows in direction d, the rotated map
+// shows in direction R_y(r) d. In (u, v) this is phi_world = phi_map - r, a shift of u.
+//
+// Lookup is nearest-texel (no filtering). This keeps radiance() piecewise constant on exactly the
+// cells over which the sampling density is piecewise constant, so sample(), radiance() and pdf()
+// agree for every direction, not only on average.
+//
+// Importance sampling (pbrt-v3 13.6.7, "infinite area lights"): a piecewise-constant 2D
+// distribution over texels, a marginal over rows and one conditional per row, with texel weight
+// luminance(texel) * solid angle of its row (cos(theta_top) - cos(theta_bottom); the exact
+// integral of sin(theta) over the row, which, unlike sin at the row centre, never vanishes).
+// Sampling picks (u, v) with density p_uv, constant per texel, and maps it to a direction; with
+// d(omega) = 2 pi^2 sin(theta) du dv the solid-angle density is p_uv / (2 pi^2 sin(theta)), where
+// theta is the direction's own polar angle (0 returned at the poles, where it is unbounded).
+//
+// Zero-luminance texels get no floor: they are never sampled and pdf() returns 0 there. This is
+// consistent for multiple importance sampling, because pdf(dir) is defined from the same stored
+// CDFs that sample() inverts (bin probability = difference of adjacent CDF entries), so pdf(dir)
+// is the density of sample() for every direction, zero included. A texel with pdf 0 has radiance
+// 0 (luminance weights are positive and texels are clamped to >= 0), except for texels whose
+// weight is below float resolution of their row's CDF; such directions are left to BSDF sampling,
+// whose MIS weight is then 1, so the estimate stays unbiased. Callers must skip light samples with
+// pdf == 0 (possible only exactly at a pole). An entirely black map gives each texel the
+// probability of its solid angle (close to uniform on the sphere; still exactly matched by pdf()).
+//
+// Texels that are NaN, infinite or negative (in any channel) become 0 and are counted
+// (clampedTexelCount()); the caller decides how to report them.
+#include "lacrima/renderer/environment.hpp"
+
+#include <fmt/core.h>
+
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <cmath>
+#include <span>
+#include <stdexcept>
+#include <system_error>
+
+#include "distribution.hpp"
+#include "lacrima/geometry/error.hpp"
+
+namespace lacrima {
+
+namespace {
+
+constexpr double kPiD = 3.14159265358979323846;
+
+// The solid angle of row j of an h-row map divided by 2 pi / width: cos(theta_j) - cos(theta_j+1).
+double rowSolidAngleFactor(int j, int h) {
+  return std::cos(kPiD * j / h) - std::cos(kPiD * (j + 1) / h);
+}
+
+}  // namespace
+
+EnvironmentMap::EnvironmentMap(int width, int height, std::vector<float> rgb, float intensity,
+                               float rotationRadians)
+    : width_(width), height_(height), rgb_(std::move(rgb)), intensity_(intensity), rotation_(rotationRadians) {
+  if (width_ < 1 || height_ < 1 || rgb_.size() != std::size_t(width_) * std::size_t(height_) * 3) {
+    throw std::invalid_argument(fmt::format("EnvironmentMap: {} floats do not make a {}x{} RGB image",
+                                            rgb_.size(), width_, height_));
+  }
+  if (!std::isfinite(intensity_) || intensity_ < 0.0f) {
+    throw InputError(fmt::format("environment map: intensity must be finite and >= 0, got {}", intensity_));
+  }
+  if (!std::isfinite(rotation_)) {
+    throw InputError(fmt::format("environment map: rotation must be finite, got {}", rotation_));
+  }
+
+  // Clamp invalid texels to black, counting texels rather than channels.
+  for (std::size_t t = 0; t < rgb_.size(); t += 3) {
+    bool bad = false;
+    for (int c = 0; c < 3; ++c) {
+      float& x = rgb_[t + c];
+      if (!std::isfinite(x) || x < 0.0f) {
+        x = 0.0f;
+        bad = true;
+      }
+    }
+    clampedTexels_ += bad ? 1 : 0;
+  }
+
+  // Conditional distributions (one per row, over columns) and row integrals.
+  const std::size_t rowStride = std::size_t(width_) + 1;
+  conditionalCdf_.assign(std::size_t(height_) * rowStride, 0.0f);
+  rowIntegral_.assign(std::size_t(height_), 0.0f);
+  std::vector<double> weights(static_cast<std::size_t>(width_));
+  std::vector<double> rowWeights(static_cast<std::size_t>(height_));
+  const double texelWidth = 2.0 * kPiD / width_;
+  double total = 0.0;
+  for (int j = 0; j < height_; ++j) {
+    for (int i = 0; i < width_; ++i) {
+      const float* p = &rgb_[(std::size_t(j) * width_ + i) * 3];
+      weights[i] = std::max(0.0, double(luminance(Color(p[0], p[1], p[2]))));
+    }
+    const double rowLuminanceSum =
+        detail::buildCdf(weights, std::span<float>(conditionalCdf_).subspan(std::size_t(j) * rowStride, rowStride));
+    // Integral of luminance over the row's solid angle.
+    rowWeights[j] = rowLuminanceSum * texelWidth * rowSolidAngleFactor(j, height_);
+    rowIntegral_[j] = float(rowWeights[j]);
+    total += rowWeights[j];
+  }
+  totalIntegral_ = float(total);
+  if (!(total > 0.0)) {
+    // Black map: rows by solid angle with uniform conditionals, each texel by its solid angle.
+    for (int j = 0; j < height_; ++j) rowWeights[j] = rowSolidAngleFactor(j, height_);
+  }
+  marginalCdf_.assign(std::size_t(height_) + 1, 0.0f);
+  detail::buildCdf(rowWeights, marginalCdf_);
+}
+
+EnvironmentMap EnvironmentMap::load(const std::filesystem::path& path, float intensity, float rotationRadians) {
+  const std::string name = path.string();
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) {
+    throw InputError(fmt::format("environment map '{}': file not found (or not a regular file)", name));
+  }
+  auto in = OIIO::ImageInput::open(name);
+  if (!in) {
+    throw InputError(fmt::format("environment map '{}': cannot read the image: {}", name, OIIO::geterror()));
+  }
+  const OIIO::ImageSpec spec = in->spec();
+  const int w = spec.width, h = spec.height, nch = spec.nchannels;
+  if (spec.deep || w < 1 || h < 1 || nch < 1 || spec.depth > 1) {
+    throw InputError(fmt::format("environment map '{}': not a flat 2D image ({}x{}, {} channels)", name, w, h, nch));
+  }
+  std::vector<float> all(std::size_t(w) * h * nch);
+  if (!in->read_image(0, 0, 0, nch, OIIO::TypeDesc::FLOAT, all.data())) {
+    throw InputError(fmt::format("environment map '{}': cannot read the pixels: {}", name, in->geterror()));
+  }
+  in->close();
+
+  // R, G, B by name when present, else the first three channels; one or two channels are grey.
+  int src[3] = {0, nch >= 3 ? 1 : 0, nch >= 3 ? 2 : 0};
+  const auto find = [&](const char* channel) {
+    const auto it = std::find(spec.channelnames.begin(), spec.channelnames.end(), channel);
+    return it == spec.channelnames.end() ? -1 : int(it - spec.channelnames.begin());
+  };
+  if (find("R") >= 0 && find("G") >= 0 && find("B") >= 0) {
+    src[0] = find("R");
+    src[1] = find("G");
+    src[2] = find("B");
+  }
+  std::vector<float> rgb(std::size_t(w) * h * 3);
+  for (std::size_t p = 0; p < std::size_t(w) * h; ++p) {
+    for (int c = 0; c < 3; ++c) rgb[p * 3 + c] = all[p * nch + src[c]];
+  }
+  return EnvironmentMap(w, h, std::move(rgb), intensity, rotationRadians);
+}
+
+Vec2 EnvironmentMap::directionToUv(const Vec3& d) const {
+  const float theta = std::atan2(std::hypot(d.x(), d.z()), d.y());  // [0, pi], any length
+  float u = (std::atan2(-d.x(), d.z()) + rotation_) * kInv2Pi;      // map phi = world phi + r
+  u -= std::floor(u);
+  return Vec2(u, theta * kInvPi);
+}
+
+Vec3 EnvironmentMap::uvToDirection(const Vec2& uv) const {
+  const float theta = uv.y() * kPi;
+  const float phi = uv.x() * (2.0f * kPi) - rotation_;  // world phi = map phi - r
+  const float sinTheta = std::sin(theta);
+  return Vec3(-sinTheta * std::sin(phi), std::cos(theta), sinTheta * std::cos(phi));
+}
+
+int EnvironmentMap::texelIndex(const Vec2& uv) const {
+  // uv is in [0, 1] or NaN (a NaN direction); the comparisons send NaN to texel 0 without UB.
+  const float x = uv.x() * float(width_), y = uv.y() * float(height_);
+  const int i = x > 0.0f ? std::min(int(x), width_ - 1) : 0;
+  const int j = y > 0.0f ? std::min(int(y), height_ - 1) : 0;
+  return j * width_ + i;
+}
+
+Color EnvironmentMap::radiance(const Vec3& direction) const {
+  const float* p = &rgb_[std::size_t(texelIndex(directionToUv(direction))) * 3];
+  return Color(p[0], p[1], p[2]) * intensity_;
+}
+
+float EnvironmentMap::pdf(const Vec3& direction) const {
+  const float length = direction.norm();
+  const float sinTheta = std::hypot(direction.x(), direction.z()) / length;
+  if (!(sinTheta > 0.0f)) return 0.0f;  // a pole, zero or NaN direction
+  const int index = texelIndex(directionToUv(direction));
+  const int j = index / width_, i = index % width_;
+  const std::span<const float> row(&conditionalCdf_[std::size_t(j) * (std::size_t(width_) + 1)],
+                                   std::size_t(width_) + 1);
+  const float pdfUv = detail::binProbability(marginalCdf_, j) * float(height_) *
+                      detail::binProbability(row, i) * float(width_);
+  return pdfUv / (2.0f * kPi * kPi * sinTheta);
+}
+
+EnvironmentSample EnvironmentMap::sample(const Vec2& u) const {
+  const detail::CdfSample rowSample = detail::sampleCdf(marginalCdf_, u.y());
+  const std::span<const float> row(&conditionalCdf_[std::size_t(rowSample.index) * (std::size_t(width_) + 1)],
+                                   std::size_t(width_) + 1);
+  const detail::CdfSample columnSample = detail::sampleCdf(row, u.x());
+  const Vec2 uv((float(columnSample.index) + columnSample.offset) / float(width_),
+                (float(rowSample.index) + rowSample.offset) / float(height_));
+  EnvironmentSample s;
+  s.direction = uvToDirection(uv);
+  // Evaluate through the same direction -> texel lookup as radiance()/pdf(), so the returned
+  // values are exactly what a BSDF-sampled ray in this direction would see.
+  s.radiance = radiance(s.direction);
+  s.pdf = pdf(s.direction);
+  return s;
+}
+
+}  // namespace lacrima
