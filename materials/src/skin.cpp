@@ -1,0 +1,107 @@
+// Skin v1 BSDF; see skin.hpp for parameters and sources.
+#include "lacrima/materials/skin.hpp"
+
+#include "lacrima/materials/fresnel.hpp"
+#include "lacrima/materials/sampling.hpp"
+
+namespace lacrima {
+
+namespace {
+
+bool bothAbove(const Vec3& wo, const Vec3& wi) { return wo.z() > 0.0f && wi.z() > 0.0f; }
+
+// Half vector of a reflection, wm = normalize(wo + wi) (Walter 2007 eq. 13). Nothing when degenerate.
+std::optional<Vec3> reflectionHalfVector(const Vec3& wo, const Vec3& wi) {
+  const Vec3 h = wo + wi;
+  const float len2 = h.squaredNorm();
+  if (len2 == 0.0f) return std::nullopt;
+  return h / std::sqrt(len2);
+}
+
+}  // namespace
+
+float fresnelHemisphericalReflectance(float eta) {
+  thread_local float cachedEta = -1.0f;
+  thread_local float cachedValue = 0.0f;
+  if (eta == cachedEta) return cachedValue;
+  // Fbar = 2 integral_0^1 F(mu) mu dmu = integral_0^1 F(sqrt(t)) dt with t = mu^2 (substitution);
+  // midpoint rule, 4096 cells (error ~1e-6, the integrand is smooth except near t = 0).
+  constexpr int kCells = 4096;
+  double sum = 0.0;
+  for (int i = 0; i < kCells; ++i) {
+    const double t = (i + 0.5) / kCells;
+    sum += fresnelDielectric(float(std::sqrt(t)), eta);
+  }
+  cachedEta = eta;
+  cachedValue = float(sum / kCells);
+  return cachedValue;
+}
+
+SkinBsdf::SkinBsdf(const SkinParams& params)
+    : albedo_(params.albedo.max(0.0f).min(kMaxSkinAlbedo)),  // energy margin, see skin.hpp
+      ior_(params.ior),
+      distribution_(roughnessToAlpha(params.roughness)),
+      diffuseNorm_(kInvPi / (1.0f - fresnelHemisphericalReflectance(params.ior))) {}
+
+float SkinBsdf::specularF(const Vec3& wo, const Vec3& wi) const {
+  const auto wm = reflectionHalfVector(wo, wi);
+  if (!wm) return 0.0f;
+  // f_r = D G F / (4 cos_o cos_i) (Walter 2007 eq. 20).
+  const float F = fresnelDielectric(wo.dot(*wm), ior_);
+  return distribution_.D(*wm) * distribution_.G(wo, wi) * F / (4.0f * wo.z() * wi.z());
+}
+
+float SkinBsdf::specularPdf(const Vec3& wo, const Vec3& wi) const {
+  const auto wm = reflectionHalfVector(wo, wi);
+  if (!wm) return 0.0f;
+  // pdf(wi) = D_wo(wm) / (4 |wo.wm|): visible normals times the reflection Jacobian
+  // (Heitz 2018 eq. 1; Walter 2007 eq. 14).
+  return distribution_.visibleD(wo, *wm) / (4.0f * std::abs(wo.dot(*wm)));
+}
+
+Color SkinBsdf::eval(const Vec3& wo, const Vec3& wi) const {
+  if (!bothAbove(wo, wi)) return Color::Zero();
+  // Fresnel-weighted Lambertian base, reciprocal form (Shirley et al. 1997), see skin.hpp.
+  const float transO = 1.0f - fresnelDielectric(wo.z(), ior_);
+  const float transI = 1.0f - fresnelDielectric(wi.z(), ior_);
+  const Color diffuse = albedo_ * (diffuseNorm_ * transO * transI);
+  return diffuse + Color::Constant(specularF(wo, wi));
+}
+
+float SkinBsdf::specularProbability(const Vec3& wo) const {
+  // Ratio of the lobes' approximate albedos, F(cos_o) vs lum(albedo)(1 - F(cos_o)), clamped so
+  // that neither lobe is starved.
+  const float fo = fresnelDielectric(wo.z(), ior_);
+  const float diffuseEstimate = luminance(albedo_) * (1.0f - fo);
+  const float p = fo / std::max(fo + diffuseEstimate, 1e-6f);
+  return std::clamp(p, 0.1f, 0.9f);
+}
+
+float SkinBsdf::pdf(const Vec3& wo, const Vec3& wi) const {
+  if (!bothAbove(wo, wi)) return 0.0f;
+  const float pSpec = specularProbability(wo);
+  // One-sample mixture density (Veach 1997 ch. 9, one-sample model).
+  return pSpec * specularPdf(wo, wi) + (1.0f - pSpec) * cosineHemispherePdf(wi.z());
+}
+
+std::optional<BsdfSample> SkinBsdf::sample(const Vec3& wo, float uLobe, const Vec2& u) const {
+  if (wo.z() <= 0.0f) return std::nullopt;
+  const float pSpec = specularProbability(wo);
+  Vec3 wi;
+  if (uLobe < pSpec) {
+    // Specular: sample a visible normal and mirror wo about it (Heitz 2018).
+    const Vec3 wm = distribution_.sampleVisibleNormal(wo, u);
+    wi = reflect(wo, wm);
+  } else {
+    wi = sampleCosineHemisphere(u);
+  }
+  if (wi.z() <= 0.0f) return std::nullopt;  // reflected below the horizon: lost to masking
+  BsdfSample s;
+  s.wi = wi;
+  s.f = eval(wo, wi);
+  s.pdf = pdf(wo, wi);
+  if (s.pdf == 0.0f) return std::nullopt;
+  return s;
+}
+
+}  // namespace lacrima
