@@ -12,6 +12,14 @@ Color SmoothDielectricBsdf::eval(const Vec3&, const Vec3&) const { return Color:
 
 float SmoothDielectricBsdf::pdf(const Vec3&, const Vec3&) const { return 0.0f; }
 
+Color SmoothDielectricBsdf::straightTransmittance(const Vec3& wo) const {
+  // Fresnel transmission with the n^2 radiance scaling of the refraction lobe (pbrt-v4
+  // DielectricBxDF, TransportMode::Radiance), evaluated as if the ray were not bent.
+  const float T = 1.0f - fresnelDielectric(wo.z(), ior_);
+  const float etap = wo.z() > 0.0f ? ior_ : 1.0f / ior_;
+  return tint_ * (T / (etap * etap));
+}
+
 std::optional<BsdfSample> SmoothDielectricBsdf::sample(const Vec3& wo, float uLobe, const Vec2&) const {
   if (wo.z() == 0.0f) return std::nullopt;
   const Vec3 n(0.0f, 0.0f, 1.0f);

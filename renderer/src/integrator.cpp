@@ -20,8 +20,14 @@ Vec3 offsetOrigin(const Vec3& position, const Vec3& geometricNormal, const Vec3&
 }
 
 constexpr int kRussianRouletteDepth = 3;
+// A shadow ray gives up (counts as blocked) after this many dielectric crossings.
+constexpr int kMaxShadowCrossings = 16;
 
 }  // namespace
+
+bool PathIntegrator::countedByTransparentShadows(bool chainAfterNonSpecular, int crossings) const {
+  return frame_.settings.transparentShadows && chainAfterNonSpecular && crossings > 0;
+}
 
 struct PathIntegrator::Vertex {
   Vec3 position;
@@ -55,10 +61,45 @@ Color PathIntegrator::sampleDirectLight(const Vertex& v, PixelSampler& sampler, 
   if ((f <= 0.0f).all()) return Color::Zero();
   const Vec3 origin = offsetOrigin(v.position, v.geometricNormal, light.direction);
   const float maxDistance = std::isinf(light.distance) ? light.distance : light.distance * (1.0f - 1e-4f);
+  bool crossedDielectric = false;
+  const Color transmittance = shadowTransmittance(origin, light.direction, maxDistance, crossedDielectric, counters);
+  if ((transmittance <= 0.0f).all()) return Color::Zero();
+  // Through a dielectric, only this strategy counts the path (the BSDF strategy drops it, see
+  // radiance()), so it takes the full weight.
+  const float weight = crossedDielectric ? 1.0f : powerHeuristic(light.pdf, v.bsdf->pdf(v.woLocal, wiLocal));
+  return f * light.radiance * transmittance * (weight / light.pdf);
+}
+
+// Transparent shadows: a shadow ray that meets smooth dielectric surfaces (drops, the cornea)
+// continues straight through them, keeping each one's Fresnel transmission. Without it, light
+// reaches skin under a drop or the iris under the cornea only through BSDF-sampled paths that
+// happen to hit a small light after refraction, which leaves those regions black and speckled.
+// The straight line ignores refraction: the shadow of a drop is a soft, slightly dimmed shadow
+// instead of a focused caustic (the bias, documented in docs/shot-format.md). Caustics need
+// manifold next-event estimation (a later issue).
+Color PathIntegrator::shadowTransmittance(const Vec3& origin, const Vec3& direction, float maxDistance,
+                                          bool& crossedDielectric, PathCounters& counters) const {
   ++counters.rays;
-  if (scene_.occluded(origin, light.direction, maxDistance)) return Color::Zero();
-  const float weight = powerHeuristic(light.pdf, v.bsdf->pdf(v.woLocal, wiLocal));
-  return f * light.radiance * (weight / light.pdf);
+  if (!scene_.occluded(origin, direction, maxDistance)) return Color::Ones();
+  if (!frame_.settings.transparentShadows) return Color::Zero();
+  Color transmittance = Color::Ones();
+  Vec3 position = origin;
+  float remaining = maxDistance;
+  for (int crossing = 0; crossing < kMaxShadowCrossings; ++crossing) {
+    SurfaceHit hit;
+    ++counters.rays;
+    if (!scene_.intersect(Ray{position, direction}, hit) || hit.distance >= remaining) return transmittance;
+    if (hit.lightIndex >= 0) return Color::Zero();
+    Vec3 ns = hit.shadingNormal.dot(hit.geometricNormal) < 0.0f ? -hit.shadingNormal : hit.shadingNormal;
+    const Vec3 woLocal = ShadingFrame::fromNormal(ns).toLocal(-direction);
+    transmittance *= bsdfs_[hit.materialId]->straightTransmittance(woLocal);
+    if ((transmittance <= 0.0f).all()) return Color::Zero();
+    crossedDielectric = true;
+    const Vec3 next = offsetOrigin(hit.position, hit.geometricNormal, direction);
+    remaining -= (next - position).dot(direction);
+    position = next;
+  }
+  return Color::Zero();
 }
 
 Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, FirstHit& firstHit,
@@ -67,6 +108,11 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
   Color throughput = Color::Ones();
   float etaScale = 1.0f;         // undoes the 1/eta^2 radiance scaling for Russian roulette
   bool previousSpecular = true;  // camera rays count as specular: no MIS on what they see
+  // Since the last non-specular vertex, the path only went straight on through smooth
+  // dielectrics (chainAfterNonSpecular) and crossed at least one (crossings > 0): a light it
+  // hits now was already counted by transparent shadows, so it must not count twice.
+  bool chainAfterNonSpecular = false;
+  int crossings = 0;
   float previousBsdfPdf = 0.0f;
   Vec3 previousPosition = cameraRay.origin;
   Ray ray = cameraRay;
@@ -75,12 +121,15 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
     SurfaceHit hit;
     ++counters.rays;
     if (!scene_.intersect(ray, hit)) {
+      // A uniform background is not light-sampled, so only the environment map can be counted twice.
+      if (lights_.environmentIsSampled() && countedByTransparentShadows(chainAfterNonSpecular, crossings)) break;
       const Color background = lights_.background(ray.direction);
       const float weight = previousSpecular ? 1.0f : powerHeuristic(previousBsdfPdf, lights_.pdfEnvironment(ray.direction));
       result += throughput * background * weight;
       break;
     }
     if (hit.lightIndex >= 0) {
+      if (countedByTransparentShadows(chainAfterNonSpecular, crossings)) break;
       const Color emitted = lights_.emitted(hit.lightIndex, -ray.direction);
       const float lightPdf = lights_.pdfAreaLight(hit.lightIndex, previousPosition, hit.position, hit.geometricNormal);
       const float weight = previousSpecular ? 1.0f : powerHeuristic(previousBsdfPdf, lightPdf);
@@ -124,6 +173,14 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
     if (geometricReflect == bs->transmitted) break;  // the shading normal sent it through the surface
     throughput *= bs->f * (absCosTheta(bs->wi) / bs->pdf);
     if (bs->transmitted) etaScale *= bs->eta * bs->eta;
+    if (!bs->specular) {
+      chainAfterNonSpecular = true;
+      crossings = 0;
+    } else if (bs->transmitted && (v.bsdf->straightTransmittance(v.woLocal) > 0.0f).any()) {
+      ++crossings;
+    } else {
+      chainAfterNonSpecular = false;  // a mirror bounce: shadow rays never follow it
+    }
     previousSpecular = bs->specular;
     previousBsdfPdf = bs->pdf;
     previousPosition = hit.position;

@@ -35,6 +35,9 @@ class PathIntegrator {
   struct Vertex;  // the shading point of the current bounce (integrator.cpp)
 
   Color sampleDirectLight(const Vertex& vertex, PixelSampler& sampler, PathCounters& counters) const;
+  Color shadowTransmittance(const Vec3& origin, const Vec3& direction, float maxDistance, bool& crossedDielectric,
+                            PathCounters& counters) const;
+  bool countedByTransparentShadows(bool chainAfterNonSpecular, int crossings) const;
 
   const Frame& frame_;
   const EmbreeScene& scene_;

@@ -27,6 +27,8 @@ class LightSampler {
   // `lightNormal`) from `point`.
   float pdfAreaLight(int index, const Vec3& point, const Vec3& lightPoint, const Vec3& lightNormal) const;
   float pdfEnvironment(const Vec3& direction) const;
+  // True when next-event estimation samples the background (an environment map, not a uniform colour).
+  bool environmentIsSampled() const { return environment_ != nullptr; }
 
   // Radiance leaving area light `index` towards `towardsViewer`.
   Color emitted(int index, const Vec3& towardsViewer) const;

@@ -247,7 +247,8 @@ class ShotReader {
 
   bool readRender(const Json& v) {
     const size_t before = c_.errorCount();
-    ObjectReader o(c_, v, "/render", {"width", "height", "spp", "maxDepth", "seed", "threads", "floatOutput"});
+    ObjectReader o(c_, v, "/render", {"width", "height", "spp", "maxDepth", "seed", "threads", "floatOutput",
+                                           "transparentShadows"});
     RenderSettings& s = shot_.render;
     if (auto x = o.integer("width", Range::closed(1, 16384), true)) s.width = int(*x);
     if (auto x = o.integer("height", Range::closed(1, 16384), true)) s.height = int(*x);
@@ -256,6 +257,7 @@ class ShotReader {
     if (auto x = o.unsignedInteger("seed")) s.seed = *x;
     if (auto x = o.integer("threads", Range::atLeast(0))) s.threads = int(*x);
     if (auto x = o.boolean("floatOutput")) s.floatOutput = *x;
+    if (auto x = o.boolean("transparentShadows")) s.transparentShadows = *x;
     return c_.errorCount() == before;
   }
 
@@ -568,6 +570,8 @@ class ShotReader {
     if (focusDistance) cam.focusDistance = float(*focusDistance);
 
     if (c_.errorCount() != before) return false;
+    // An asset that failed to load has no cameras; its own error is already reported.
+    if (cam.kind == ShotCamera::Kind::Gltf && (!gltfAsset || !gltfCamera)) return false;
     deriveCamera(cam, gltfAsset, gltfCamera);
     return true;
   }

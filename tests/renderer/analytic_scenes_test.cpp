@@ -5,41 +5,14 @@
 
 #include "lacrima/renderer/environment.hpp"
 #include "lacrima/renderer/render.hpp"
-#include "support/render_statistics.hpp"
+#include "support/test_scenes.hpp"
 
 namespace lacrima {
 namespace {
 
-Camera lookAt(const Vec3& eye, const Vec3& target, float fovDegrees) {
-  Camera camera;
-  const Vec3 back = (eye - target).normalized();
-  const Vec3 right = Vec3(0, 1, 0).cross(back).normalized();
-  const Vec3 up = back.cross(right);
-  camera.cameraToWorld.linear().col(0) = right;
-  camera.cameraToWorld.linear().col(1) = up;
-  camera.cameraToWorld.linear().col(2) = back;
-  camera.cameraToWorld.translation() = eye;
-  camera.verticalFovRadians = degreesToRadians(fovDegrees);
-  return camera;
-}
-
-RenderSettings smallSettings(int size, int spp, int maxDepth) {
-  RenderSettings s;
-  s.width = size;
-  s.height = size;
-  s.samplesPerPixel = spp;
-  s.maxDepth = maxDepth;
-  s.seed = 7;
-  return s;
-}
-
-void expectMean(const Film& film, double exact, double floor) {
-  for (int c = 0; c < 3; ++c) {
-    const test::MeanEstimate e = test::channelMean(film, c);
-    EXPECT_NEAR(e.mean, exact, 5.0 * e.standardError + floor)
-        << "channel " << c << ": mean " << e.mean << " +- " << e.standardError << " over " << e.count << " pixels";
-  }
-}
+using test::expectMean;
+using test::lookAt;
+using test::smallSettings;
 
 // Nori's test: a camera inside a closed diffuse emitter of albedo a sees E / (1 - a).
 Frame insideEmittingSphere(float albedo) {
@@ -107,10 +80,7 @@ TEST(AnalyticScenes, FloorUnderRectangleLightMatchesFormFactor) {
   const Color radiance = Color::Constant(3.0f);
   Frame frame;
   frame.materials.push_back(Material{"floor", DiffuseParams{Color::Constant(albedo)}, Color::Zero()});
-  MeshInstance floor;
-  floor.mesh.positions = {Vec3(-50, 0, -50), Vec3(50, 0, -50), Vec3(50, 0, 50), Vec3(-50, 0, 50)};
-  floor.mesh.indices = {0, 2, 1, 0, 3, 2};
-  frame.meshes.push_back(floor);
+  frame.meshes.push_back(test::largeFloor(0));
   AreaLight light;
   light.center = Vec3(0, height, 0);
   light.edgeU = Vec3(size, 0, 0);

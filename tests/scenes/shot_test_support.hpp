@@ -15,9 +15,12 @@ inline std::filesystem::path sourcePath(const std::string& relative) {
   return std::filesystem::path(LACRIMA_SOURCE_DIR) / relative;
 }
 
-// Writes a shot file under the test output directory and returns its path.
+// Writes a shot file under the test's own output directory (ctest runs tests as parallel
+// processes; a shared directory would let them overwrite each other's files) and returns its path.
 inline std::filesystem::path writeShot(const std::string& name, const std::string& text) {
-  const std::filesystem::path dir = std::filesystem::path(LACRIMA_TEST_OUTPUT_DIR) / "shots";
+  const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  const std::string testName = info ? std::string(info->test_suite_name()) + "." + info->name() : "no_test";
+  const std::filesystem::path dir = std::filesystem::path(LACRIMA_TEST_OUTPUT_DIR) / "shots" / testName;
   std::filesystem::create_directories(dir);
   const std::filesystem::path path = dir / name;
   std::ofstream(path, std::ios::binary) << text;

@@ -124,7 +124,7 @@ TEST(ShotValidation, EndFrameBeforeStart) {
 
 TEST(ShotValidation, BackgroundAndEnvironmentAreExclusive) {
   const auto f = writeShot("both_backgrounds.json",
-                           shotText("\"environment\": {\"file\": \"../../../../scenes/assets/hdri/studio.exr\"}, "
+                           shotText("\"environment\": {\"file\": \"../../../../../scenes/assets/hdri/studio.exr\"}, "
                                     "\"background\": [1, 1, 1]"));
   std::vector<Diagnostic> diagnostics;
   shotErrorOf(f, &diagnostics);
@@ -219,7 +219,7 @@ TEST(ShotValidation, EulerAndAxisAngleRotations) {
 
 TEST(ShotValidation, AssetNamesPartsWeightsAndCamerasAreChecked) {
   const auto f = writeShot("face_problems.json", shotText(R"("materials": {"skin": {"type": "skin"}},
-  "assets": [{"name": "face", "file": "../../../../scenes/assets/ict-face/ict_face.glb",
+  "assets": [{"name": "face", "file": "../../../../../scenes/assets/ict-face/ict_face.glb",
     "materials": {"M_Fcae": "skin"}, "blendshapes": {"jawOpen": 1.5}, "hide": ["M_Teth"]}])",
                                                           R"({"gltf": {"asset": "face", "camera": "closeup"}})"));
   std::vector<Diagnostic> diagnostics;
@@ -233,6 +233,19 @@ TEST(ShotValidation, AssetNamesPartsWeightsAndCamerasAreChecked) {
                        "/assets/0/blendshapes/jawOpen: expected a number in [0, 1], found 1.5",
                        "/assets/0/hide/0: asset 'face' has no part or material named 'M_Teth'; did you mean 'M_Teeth'?",
                    }));
+}
+
+// A glTF camera in an asset that fails to load: the asset's error, and no crash.
+TEST(ShotValidation, GltfCameraOfAMissingAssetReportsTheAssetOnly) {
+  const auto f = writeShot("camera_of_missing_asset.json",
+                           shotText(R"("assets": [{"name": "face", "file": "nope.glb"}])",
+                                    R"({"gltf": {"asset": "face", "camera": "closeup"}})"));
+  std::vector<Diagnostic> diagnostics;
+  shotErrorOf(f, &diagnostics);
+  ASSERT_EQ(diagnostics.size(), 1u);
+  EXPECT_EQ(diagnostics[0].jsonPath, "/assets/0/file");
+  EXPECT_EQ(firstLine(diagnostics[0].message),
+            "file not found: 'nope.glb' (resolved to '" + (f.parent_path() / "nope.glb").string() + "')");
 }
 
 TEST(ShotValidation, ColorConfigIsResolvedAndMustExist) {

@@ -9,6 +9,7 @@ namespace lacrima::cli {
 int runCheck(const std::string& shotPath) {
   try {
     const Shot shot = loadShot(shotPath);
+    printShotWarnings(shot);
     // Building the first frame also loads the environment map and checks the meshes.
     buildFrame(shot, shot.frameStart);
     std::printf("%s: OK (frames %d-%d at %g fps, %dx%d, %d spp)\n", shotPath.c_str(), shot.frameStart, shot.frameEnd,

@@ -1,6 +1,8 @@
 // `lacrima render`: shot -> frames -> EXR (+ PNG preview).
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 
@@ -19,15 +21,22 @@ namespace {
 // Above this fraction of discarded NaN/Inf samples a frame is a failed render, not a noisy one.
 constexpr double kMaxNonFiniteFraction = 1e-4;
 
+// The frames to render, all inside the shot's range (checked before anything is rendered).
 std::vector<int> framesToRender(const RenderOptions& options, const Shot& shot) {
-  if (options.frames.empty()) {
+  if (!options.frames) {
     std::vector<int> frames;
     for (int f = shot.frameStart; f <= shot.frameEnd; ++f) frames.push_back(f);
     return frames;
   }
+  const std::string& text = *options.frames;
+  const std::string shown = text.empty() ? "''" : text;
   std::string error;
-  auto frames = parseFrameList(options.frames, error);
-  if (!frames) throw InputError("--frames " + options.frames + ": " + error);
+  auto frames = parseFrameList(text, error);
+  if (!frames) throw InputError("--frames " + shown + ": " + error);
+  for (int f : *frames)
+    if (f < shot.frameStart || f > shot.frameEnd)
+      throw InputError(fmt::format("--frames {}: frame {} is outside the frame range {}-{} of {}", shown, f,
+                                   shot.frameStart, shot.frameEnd, shot.path.string()));
   return *frames;
 }
 
@@ -37,19 +46,43 @@ void applyOverrides(const RenderOptions& o, RenderSettings& s) {
   if (o.height) s.height = *o.height;
   if (o.threads) s.threads = *o.threads;
   if (o.maxDepth) s.maxDepth = *o.maxDepth;
-  if (o.seed) s.seed = uint64_t(*o.seed);
+  if (o.seed) s.seed = *o.seed;
   if (o.floatOutput) s.floatOutput = true;
+}
+
+std::string lowerExtension(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
 }
 
 std::string outputPattern(const RenderOptions& o, const Shot& shot, size_t frameCount) {
   const std::string pattern = o.outputPattern.empty() ? shot.outputPattern : o.outputPattern;
-  const bool hasFrameField = pattern.find('#') != std::string::npos || pattern.find("%0") != std::string::npos ||
-                             pattern.find("%d") != std::string::npos;
+  // The same expansion the frames get: a pattern with a frame field ('#' run, %d, %04d)
+  // names different files for different frames.
+  const bool hasFrameField = expandFramePattern(pattern, 1) != expandFramePattern(pattern, 2);
   if (frameCount > 1 && !hasFrameField)
     throw InputError(fmt::format("output '{}' has no #### frame field but {} frames are to be rendered: every frame "
                                  "would overwrite the last",
                                  pattern, frameCount));
+  // Frames are always OpenEXR; another extension would mislead, and with --preview a '.png'
+  // output would be overwritten by its own preview.
+  if (lowerExtension(expandFramePattern(pattern, 1)) != ".exr")
+    throw InputError(fmt::format("output '{}': frames are OpenEXR files, the name must end in .exr", pattern));
   return pattern;
+}
+
+std::string previewOcioConfig(const Shot& shot) {
+  return shot.ocioConfig.empty() ? defaultOcioConfig() : shot.ocioConfig.string();
+}
+
+// A missing OCIO config would otherwise only show after the first frame has rendered.
+void checkPreviewConfig(const RenderOptions& o, const Shot& shot) {
+  if (!o.preview) return;
+  const std::string config = previewOcioConfig(shot);
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(config, ec))
+    throw InputError(fmt::format("OCIO config '{}' for --preview: file not found (or not a regular file)", config));
 }
 
 ExrMetadata metadataFor(const Shot& shot, const Frame& frame, const RenderStats& stats) {
@@ -91,7 +124,7 @@ bool renderOneFrame(const RenderOptions& o, const Shot& shot, const std::string&
   if (o.preview) {
     std::filesystem::path pngPath = exrPath;
     pngPath.replace_extension(".png");
-    writePreviewPng(pngPath, film, shot.ocioConfig.empty() ? defaultOcioConfig() : shot.ocioConfig.string());
+    writePreviewPng(pngPath, film, previewOcioConfig(shot));
     previewNote = " + " + pngPath.filename().string();
   }
   std::fprintf(stderr, "frame %d: %dx%d, %d spp, %s, %srays/s, %llu NaN/Inf samples discarded -> %s%s\n",
@@ -108,6 +141,8 @@ int runRender(const RenderOptions& o) {
     const Shot shot = loadShot(o.shotPath);
     const std::vector<int> frames = framesToRender(o, shot);
     const std::string pattern = outputPattern(o, shot, frames.size());
+    checkPreviewConfig(o, shot);
+    printShotWarnings(shot);
     int failed = 0;
     for (size_t i = 0; i < frames.size(); ++i)
       if (!renderOneFrame(o, shot, pattern, frames[i], int(i), int(frames.size()))) ++failed;

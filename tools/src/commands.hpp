@@ -1,8 +1,13 @@
 #pragma once
 // The subcommands of `lacrima`. Each returns the process exit status:
 // 0 success, 1 render failure (e.g. too many NaN samples), 2 bad input (shot, asset, options).
+#include <cstdint>
 #include <optional>
 #include <string>
+
+namespace lacrima {
+struct Shot;
+}
 
 namespace lacrima::cli {
 
@@ -12,9 +17,9 @@ inline constexpr int kExitBadInput = 2;
 
 struct RenderOptions {
   std::string shotPath;
-  std::string frames;  // empty: the shot's range
+  std::optional<std::string> frames;  // none: the shot's range
   std::optional<int> spp, width, height, threads, maxDepth;
-  std::optional<long long> seed;
+  std::optional<uint64_t> seed;
   std::string outputPattern;  // empty: the shot's
   bool preview = false;
   bool floatOutput = false;
@@ -30,6 +35,10 @@ int runRender(const RenderOptions& options);
 int runCheck(const std::string& shotPath);
 int runInfo(const std::string& path);
 int runBench(const BenchOptions& options);
+
+// Prints the shot's non-fatal warnings (Shot::warnings) to stderr, one per line:
+// "shot.json:13:27: /environment/file: warning: ...", before any rendering.
+void printShotWarnings(const Shot& shot);
 
 // Default OCIO config and default shot, found from the source tree this binary was built from.
 std::string defaultOcioConfig();

@@ -1,7 +1,6 @@
 #include "frame_range.hpp"
 
 #include <charconv>
-#include <sstream>
 
 namespace lacrima::cli {
 
@@ -47,15 +46,22 @@ bool parseItem(const std::string& item, std::vector<int>& frames, std::string& e
 }  // namespace
 
 std::optional<std::vector<int>> parseFrameList(const std::string& text, std::string& error) {
-  std::vector<int> frames;
-  std::stringstream stream(text);
-  std::string item;
-  while (std::getline(stream, item, ',')) {
-    if (!parseItem(item, frames, error)) return std::nullopt;
-  }
-  if (frames.empty()) {
+  if (text.empty()) {
     error = "no frames given";
     return std::nullopt;
+  }
+  std::vector<int> frames;
+  // Split on every comma, so that "1,", ",1" and "1,,2" are reported rather than read as "1" and "1,2".
+  for (size_t begin = 0;;) {
+    const size_t comma = text.find(',', begin);
+    const std::string item = text.substr(begin, comma == std::string::npos ? std::string::npos : comma - begin);
+    if (item.empty()) {
+      error = "empty item in the list (a comma at the start or end, or two in a row)";
+      return std::nullopt;
+    }
+    if (!parseItem(item, frames, error)) return std::nullopt;
+    if (comma == std::string::npos) break;
+    begin = comma + 1;
   }
   return frames;
 }

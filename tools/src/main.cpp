@@ -2,8 +2,15 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <charconv>
+#include <climits>
+#include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
+#include <limits>
+#include <string>
+#include <vector>
 
 #include "commands.hpp"
 
@@ -26,21 +33,62 @@ const char* kDescription =
     "\n"
     "Exit status: 0 success, 1 render failure, 2 bad input (shot file, asset or options).";
 
+// An option value as the error message shows it: numbers bare, anything else quoted.
+std::string describeArgument(const std::string& text) {
+  char* end = nullptr;
+  if (!text.empty()) std::strtod(text.c_str(), &end);
+  const bool numeric = !text.empty() && end == text.c_str() + text.size();
+  return numeric ? text : "'" + text + "'";
+}
+
+// Whole numbers in [lo, hi] (hi = the type's maximum: no upper bound), with messages in the
+// style of the shot-file diagnostics: "--spp: expected an integer >= 1, found 0". CLI11's own
+// PositiveNumber/NonNegativeNumber print "not in range 0.000000 to 1797693134862315..." instead.
+template <typename T>
+CLI::Validator integerIn(T lo, T hi) {
+  const std::string bound =
+      hi == std::numeric_limits<T>::max() ? fmt::format(">= {}", lo) : fmt::format("in [{}, {}]", lo, hi);
+  return CLI::Validator(
+      [lo, hi, bound](std::string& text) -> std::string {
+        T value{};
+        const char* end = text.data() + text.size();
+        const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+        if (ec == std::errc() && ptr == end && value >= lo && value <= hi) return std::string();
+        const bool tooLarge = ec == std::errc::result_out_of_range && ptr == end && text[0] != '-';
+        return fmt::format("expected an integer {}, found {}{}", bound, describeArgument(text),
+                           tooLarge ? " (too large)" : "");
+      },
+      "INT " + bound);
+}
+
+const char* kRenderExamples =
+    "Examples:\n"
+    "  lacrima render scenes/shots/tear_closeup.json --preview\n"
+    "      all frames of the shot, to the shot's output pattern, with a PNG preview next to each EXR\n"
+    "  lacrima render shot.json --frames 1-48x2 --spp 64 --width 640 --height 360\n"
+    "      every 2nd frame of 1-48 at a quick preview quality\n"
+    "  lacrima render shot.json --frames 12 --out /tmp/look.####.exr --seed 3\n"
+    "      one frame to another place, with another seed\n"
+    "\n"
+    "Overrides replace the shot file's render settings for this run only. Frames are written to a\n"
+    "temporary name and renamed when complete, so an interrupted render never leaves a partial EXR.\n"
+    "Exit status: 0 success, 1 render failure (e.g. NaN samples), 2 bad input (shot, asset, options).";
+
 void addRender(CLI::App& app, RenderOptions& o) {
   auto* render = app.add_subcommand("render", "Render a shot to an OpenEXR sequence");
-  render->footer(
-      "Overrides replace the shot file's render settings for this run only. Frames are written to a\n"
-      "temporary name and renamed when complete, so an interrupted render never leaves a partial EXR.");
-  render->add_option("shot", o.shotPath, "Shot file (JSON)")->required()->check(CLI::ExistingFile);
+  render->footer(kRenderExamples);
+  // No CLI::ExistingFile: loadShot reports a missing shot file as `check` does.
+  render->add_option("shot", o.shotPath, "Shot file (JSON)")->required();
   render->add_option("--frames,-f", o.frames, "Frames to render: 12, 1-48, 1-48x2 or lists like 1,5,10-12");
-  render->add_option("--spp,-s", o.spp, "Samples per pixel")->check(CLI::PositiveNumber);
-  auto* width = render->add_option("--width", o.width, "Image width in pixels")->check(CLI::Range(1, 16384));
-  auto* height = render->add_option("--height", o.height, "Image height in pixels")->check(CLI::Range(1, 16384));
+  render->add_option("--spp,-s", o.spp, "Samples per pixel")->check(integerIn(1, INT_MAX));
+  auto* width = render->add_option("--width", o.width, "Image width in pixels")->check(integerIn(1, 16384));
+  auto* height = render->add_option("--height", o.height, "Image height in pixels")->check(integerIn(1, 16384));
   width->needs(height);
   height->needs(width);
-  render->add_option("--seed", o.seed, "Random seed (same seed, same pixels)")->check(CLI::NonNegativeNumber);
-  render->add_option("--threads,-t", o.threads, "Worker threads (0 = all cores)")->check(CLI::NonNegativeNumber);
-  render->add_option("--max-depth", o.maxDepth, "Maximum path depth")->check(CLI::Range(0, 1000));
+  render->add_option("--seed", o.seed, "Random seed (same seed, same pixels)")
+      ->check(integerIn<uint64_t>(0, std::numeric_limits<uint64_t>::max()));
+  render->add_option("--threads,-t", o.threads, "Worker threads (0 = all cores)")->check(integerIn(0, INT_MAX));
+  render->add_option("--max-depth", o.maxDepth, "Maximum path depth")->check(integerIn(0, 1000));
   render->add_option("--out,-o", o.outputPattern, "Output path pattern, #### = frame number (e.g. out/shot.####.exr)");
   render->add_flag("--preview", o.preview, "Also write an sRGB PNG preview (OCIO, ACES SDR view) next to each EXR");
   render->add_flag("--float", o.floatOutput, "Write the beauty as 32-bit float instead of half");
@@ -64,11 +112,11 @@ void addBench(CLI::App& app, BenchOptions& o) {
   auto* bench = app.add_subcommand("bench", "Measure render and raw Embree throughput (not a test)");
   bench->footer("Renders the default shot (or SHOT) at a fixed small size and reports medians of the repetitions.");
   bench->add_option("shot", o.shotPath, "Shot file (default: scenes/shots/tear_closeup.json)");
-  bench->add_option("--width", o.width, "Width")->check(CLI::Range(8, 4096));
-  bench->add_option("--height", o.height, "Height")->check(CLI::Range(8, 4096));
-  bench->add_option("--spp", o.spp, "Samples per pixel")->check(CLI::Range(1, 4096));
-  bench->add_option("--threads", o.threads, "Threads (0 = all cores)")->check(CLI::NonNegativeNumber);
-  bench->add_option("--repetitions", o.repetitions, "Repetitions (median reported)")->check(CLI::Range(1, 50));
+  bench->add_option("--width", o.width, "Width")->check(integerIn(8, 4096));
+  bench->add_option("--height", o.height, "Height")->check(integerIn(8, 4096));
+  bench->add_option("--spp", o.spp, "Samples per pixel")->check(integerIn(1, 4096));
+  bench->add_option("--threads", o.threads, "Threads (0 = all cores)")->check(integerIn(0, INT_MAX));
+  bench->add_option("--repetitions", o.repetitions, "Repetitions (median reported)")->check(integerIn(1, 50));
   bench->callback([&o] { throw CLI::RuntimeError(runBench(o)); });
 }
 
@@ -89,6 +137,20 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::RuntimeError& status) {
     return status.get_exit_code();  // a subcommand ran; its status
+  } catch (const CLI::RequiredError& e) {
+    // "lacrima frobnicate": CLI11 checks for the missing subcommand before it complains about
+    // the extra argument, and would say only "A subcommand is required".
+    const std::vector<std::string> extra = app.remaining();
+    if (app.get_subcommands().empty() && !extra.empty()) {
+      std::string names;
+      for (const CLI::App* sub : app.get_subcommands({})) names += (names.empty() ? "" : ", ") + sub->get_name();
+      const bool isOption = !extra.front().empty() && extra.front()[0] == '-';
+      std::fprintf(stderr,
+                   "lacrima: unknown %s '%s' (expected a subcommand: %s)\nRun with --help for more information.\n",
+                   isOption ? "option" : "subcommand", extra.front().c_str(), names.c_str());
+      return kExitBadInput;
+    }
+    return app.exit(e) == 0 ? 0 : kExitBadInput;
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);
     return code == 0 ? 0 : kExitBadInput;  // --help/--version are 0; usage errors are bad input

@@ -33,6 +33,10 @@ class Bsdf {
   virtual bool isPureSpecular() const { return false; }
   // True when light can pass through (the surface bounds a medium such as water).
   virtual bool isTransmissive() const { return false; }
+  // What a shadow ray keeps when it goes straight through this surface, ignoring refraction:
+  // zero for opaque surfaces. wo is the local direction towards the shading point the shadow ray
+  // started from. Used by the renderer's transparent shadows (see integrator.cpp).
+  virtual Color straightTransmittance(const Vec3& /*wo*/) const { return Color::Zero(); }
   // Reflectance-like colour for the albedo AOV.
   virtual Color albedo() const = 0;
 };

@@ -36,6 +36,7 @@ class SmoothDielectricBsdf final : public Bsdf {
   float pdf(const Vec3& wo, const Vec3& wi) const override;
   std::optional<BsdfSample> sample(const Vec3& wo, float uLobe, const Vec2& u) const override;
   bool isPureSpecular() const override { return true; }
+  Color straightTransmittance(const Vec3& wo) const override;
   bool isTransmissive() const override { return true; }
   Color albedo() const override { return tint_; }
 

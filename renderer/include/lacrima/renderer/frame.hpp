@@ -58,6 +58,9 @@ struct RenderSettings {
   int threads = 0;         // 0 = all cores
   int frameNumber = 1;     // part of the random key
   bool floatOutput = false;  // EXR beauty as float instead of half
+  // Shadow rays pass straight through smooth dielectrics (drops, cornea) with their Fresnel
+  // transmission instead of being blocked; see integrator.cpp for the estimator and its bias.
+  bool transparentShadows = true;
 };
 
 struct Frame {

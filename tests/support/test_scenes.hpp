@@ -1,0 +1,52 @@
+#pragma once
+// Building blocks for small renderer test scenes: a look-at camera, small render settings, a
+// large diffuse floor, and the statistical mean check shared by the analytic-scene tests.
+#include <gtest/gtest.h>
+
+#include "lacrima/renderer/frame.hpp"
+#include "support/render_statistics.hpp"
+
+namespace lacrima::test {
+
+inline Camera lookAt(const Vec3& eye, const Vec3& target, float fovDegrees) {
+  Camera camera;
+  const Vec3 back = (eye - target).normalized();
+  const Vec3 right = Vec3(0, 1, 0).cross(back).normalized();
+  const Vec3 up = back.cross(right);
+  camera.cameraToWorld.linear().col(0) = right;
+  camera.cameraToWorld.linear().col(1) = up;
+  camera.cameraToWorld.linear().col(2) = back;
+  camera.cameraToWorld.translation() = eye;
+  camera.verticalFovRadians = degreesToRadians(fovDegrees);
+  return camera;
+}
+
+inline RenderSettings smallSettings(int size, int spp, int maxDepth) {
+  RenderSettings s;
+  s.width = size;
+  s.height = size;
+  s.samplesPerPixel = spp;
+  s.maxDepth = maxDepth;
+  s.seed = 7;
+  return s;
+}
+
+// A 100 x 100 floor at y = 0 facing +y, with material `materialId`.
+inline MeshInstance largeFloor(uint32_t materialId) {
+  MeshInstance floor;
+  floor.mesh.positions = {Vec3(-50, 0, -50), Vec3(50, 0, -50), Vec3(50, 0, 50), Vec3(-50, 0, 50)};
+  floor.mesh.indices = {0, 2, 1, 0, 3, 2};
+  floor.materialId = materialId;
+  return floor;
+}
+
+// |mean - exact| < 5 standard errors + floor, for R, G and B: a biased estimator fails, noise does not.
+inline void expectMean(const Film& film, double exact, double floor) {
+  for (int c = 0; c < 3; ++c) {
+    const MeanEstimate e = channelMean(film, c);
+    EXPECT_NEAR(e.mean, exact, 5.0 * e.standardError + floor)
+        << "channel " << c << ": mean " << e.mean << " +- " << e.standardError << " over " << e.count << " pixels";
+  }
+}
+
+}  // namespace lacrima::test
