@@ -10,7 +10,7 @@
 
 namespace lacrima {
 
-inline constexpr float kTearIor = 1.337f;  // tear fluid, ARCHITECTURE.md "Physics of tears"
+inline constexpr float kTearIor = 1.337f;  // refractive index of human tear fluid (about 1.336-1.337, close to water)
 
 struct DiffuseParams {
   Color albedo = Color(0.5f, 0.5f, 0.5f);
