@@ -7,7 +7,20 @@ namespace lacrima {
 
 static float tanHalfFov(const Camera& camera) { return std::tan(0.5f * camera.verticalFovRadians); }
 
-Ray generateCameraRay(const Camera& camera, int width, int height, float filmX, float filmY, const Vec2& lensU) {
+Affine3 cameraToWorldAt(const Camera& camera, float time) {
+  if (!camera.cameraToWorldAtClose) return camera.cameraToWorld;
+  const Affine3& open = camera.cameraToWorld;
+  const Affine3& close = *camera.cameraToWorldAtClose;
+  const Eigen::Quaternionf rotation =
+      Eigen::Quaternionf(open.rotation()).slerp(time, Eigen::Quaternionf(close.rotation()));
+  Affine3 m = Affine3::Identity();
+  m.linear() = rotation.toRotationMatrix();
+  m.translation() = (1.0f - time) * open.translation() + time * close.translation();
+  return m;
+}
+
+Ray generateCameraRay(const Camera& camera, int width, int height, float filmX, float filmY, const Vec2& lensU,
+                      float time) {
   const float aspect = float(width) / float(height);
   const float t = tanHalfFov(camera);
   // Point on the z = -1 image plane in camera space (y up, so the film's y is flipped).
@@ -21,8 +34,8 @@ Ray generateCameraRay(const Camera& camera, int width, int height, float filmX, 
     origin = Vec3(lens.x(), lens.y(), 0.0f);
     direction = (focusPoint - origin).normalized();
   }
-  const Affine3& m = camera.cameraToWorld;
-  return Ray{m * origin, (m.linear() * direction).normalized()};
+  const Affine3 m = cameraToWorldAt(camera, time);
+  return Ray{m * origin, (m.linear() * direction).normalized(), time};
 }
 
 Mat4 worldToCameraMatrix(const Camera& camera) { return camera.cameraToWorld.inverse(Eigen::Affine).matrix(); }

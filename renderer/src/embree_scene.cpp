@@ -18,7 +18,7 @@ void reportEmbreeError(void*, RTCError code, const char* message) {
   throw std::runtime_error(fmt::format("Embree error {}: {}", int(code), message ? message : ""));
 }
 
-RTCRay makeRay(const Vec3& origin, const Vec3& direction, float tfar) {
+RTCRay makeRay(const Vec3& origin, const Vec3& direction, float tfar, float time) {
   RTCRay ray;
   ray.org_x = origin.x();
   ray.org_y = origin.y();
@@ -27,7 +27,7 @@ RTCRay makeRay(const Vec3& origin, const Vec3& direction, float tfar) {
   ray.dir_x = direction.x();
   ray.dir_y = direction.y();
   ray.dir_z = direction.z();
-  ray.time = 0.0f;
+  ray.time = time;
   ray.tfar = tfar;
   ray.mask = 0xFFFFFFFFu;
   ray.id = 0;
@@ -47,17 +47,20 @@ EmbreeScene::EmbreeScene(const Frame& frame, int threads) : frame_(frame) {
   // Robust traversal: rays grazing shared edges of the face mesh must not slip through.
   rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST);
 
-  for (uint32_t i = 0; i < frame.meshes.size(); ++i) addMesh(frame.meshes[i].mesh, Kind::Mesh, i);
-  for (uint32_t i = 0; i < frame.spheres.size(); ++i)
-    addSphere(frame.spheres[i].center, frame.spheres[i].radius, Kind::Sphere, i);
+  for (uint32_t i = 0; i < frame.meshes.size(); ++i)
+    addMesh(frame.meshes[i].mesh, Kind::Mesh, i, frame.meshes[i].moves() ? &frame.meshes[i].positionsAtClose : nullptr);
+  for (uint32_t i = 0; i < frame.spheres.size(); ++i) {
+    const Sphere& sphere = frame.spheres[i];
+    addSphere(sphere.center, sphere.radius, Kind::Sphere, i, sphere.centerAtClose ? &*sphere.centerAtClose : nullptr);
+  }
   lightMeshes_.reserve(frame.lights.size());
   for (uint32_t i = 0; i < frame.lights.size(); ++i) {
     const AreaLight& light = frame.lights[i];
     if (light.shape == AreaLight::Shape::Rectangle) {
-      lightMeshes_.push_back(makeRectangle(light.center, light.edgeU, light.edgeV));
-      addMesh(lightMeshes_.back(), Kind::RectLight, i);
+      lightMeshes_.push_back(MeshInstance{makeRectangle(light.center, light.edgeU, light.edgeV), 0});
+      addMesh(lightMeshes_.back().mesh, Kind::RectLight, i, nullptr);
     } else {
-      addSphere(light.center, light.radius, Kind::SphereLight, i);
+      addSphere(light.center, light.radius, Kind::SphereLight, i, nullptr);
     }
   }
   rtcCommitScene(scene_);
@@ -68,12 +71,21 @@ EmbreeScene::~EmbreeScene() {
   if (device_) rtcReleaseDevice(device_);
 }
 
-void EmbreeScene::addMesh(const TriangleMesh& mesh, Kind kind, uint32_t index) {
+void EmbreeScene::addMesh(const TriangleMesh& mesh, Kind kind, uint32_t index, const std::vector<Vec3>* positionsAtClose) {
   if (mesh.triangleCount() == 0) return;  // nothing to hit
+  if (positionsAtClose && positionsAtClose->size() != mesh.vertexCount())
+    throw std::invalid_argument(fmt::format("mesh '{}': {} positions at shutter close for {} vertices", mesh.name,
+                                            positionsAtClose->size(), mesh.vertexCount()));
   RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
-  auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
-      geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.vertexCount()));
-  std::memcpy(vertices, mesh.positions.data(), mesh.vertexCount() * 3 * sizeof(float));
+  // A moving mesh has two time steps (shutter open and close); Embree interpolates linearly.
+  const std::vector<Vec3>* steps[2] = {&mesh.positions, positionsAtClose};
+  const unsigned stepCount = positionsAtClose ? 2 : 1;
+  rtcSetGeometryTimeStepCount(geometry, stepCount);
+  for (unsigned step = 0; step < stepCount; ++step) {
+    auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
+        geometry, RTC_BUFFER_TYPE_VERTEX, step, RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.vertexCount()));
+    std::memcpy(vertices, steps[step]->data(), mesh.vertexCount() * 3 * sizeof(float));
+  }
   auto* triangles = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(
       geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), mesh.triangleCount()));
   std::memcpy(triangles, mesh.indices.data(), mesh.indices.size() * sizeof(uint32_t));
@@ -83,14 +95,19 @@ void EmbreeScene::addMesh(const TriangleMesh& mesh, Kind kind, uint32_t index) {
   recordGeometry(id, kind, index);
 }
 
-void EmbreeScene::addSphere(const Vec3& center, float radius, Kind kind, uint32_t index) {
+void EmbreeScene::addSphere(const Vec3& center, float radius, Kind kind, uint32_t index, const Vec3* centerAtClose) {
   RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_SPHERE_POINT);
-  auto* point = static_cast<float*>(
-      rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), 1));
-  point[0] = center.x();
-  point[1] = center.y();
-  point[2] = center.z();
-  point[3] = radius;
+  const Vec3* steps[2] = {&center, centerAtClose};
+  const unsigned stepCount = centerAtClose ? 2 : 1;
+  rtcSetGeometryTimeStepCount(geometry, stepCount);
+  for (unsigned step = 0; step < stepCount; ++step) {
+    auto* point = static_cast<float*>(
+        rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, step, RTC_FORMAT_FLOAT4, 4 * sizeof(float), 1));
+    point[0] = steps[step]->x();
+    point[1] = steps[step]->y();
+    point[2] = steps[step]->z();
+    point[3] = radius;
+  }
   rtcCommitGeometry(geometry);
   const unsigned id = rtcAttachGeometry(scene_, geometry);
   rtcReleaseGeometry(geometry);
@@ -102,17 +119,25 @@ void EmbreeScene::recordGeometry(unsigned geometryId, Kind kind, uint32_t index)
   records_[geometryId] = {kind, index};
 }
 
-void EmbreeScene::surfaceOfMesh(const TriangleMesh& mesh, const RTCHit& rtcHit, SurfaceHit& hit) const {
+void EmbreeScene::surfaceOfMesh(const MeshInstance& instance, float time, const RTCHit& rtcHit, SurfaceHit& hit) const {
+  const TriangleMesh& mesh = instance.mesh;
   const uint32_t* tri = &mesh.indices[3 * size_t(rtcHit.primID)];
-  const Vec3& p0 = mesh.positions[tri[0]];
-  const Vec3& p1 = mesh.positions[tri[1]];
-  const Vec3& p2 = mesh.positions[tri[2]];
+  // Vertices at the ray's time, as Embree interpolated them (linear between the time steps).
+  const auto positionAt = [&](uint32_t i) -> Vec3 {
+    return instance.moves() ? Vec3((1.0f - time) * mesh.positions[i] + time * instance.positionsAtClose[i])
+                            : mesh.positions[i];
+  };
+  const auto normalAt = [&](uint32_t i) -> Vec3 {
+    return instance.normalsAtClose.empty() ? mesh.normals[i]
+                                           : Vec3((1.0f - time) * mesh.normals[i] + time * instance.normalsAtClose[i]);
+  };
+  const Vec3 p0 = positionAt(tri[0]), p1 = positionAt(tri[1]), p2 = positionAt(tri[2]);
   const float u = rtcHit.u, v = rtcHit.v, w = 1.0f - u - v;
   // Barycentric position is more precise than origin + t * direction far from the origin.
   hit.position = w * p0 + u * p1 + v * p2;
   hit.geometricNormal = (p1 - p0).cross(p2 - p0).normalized();
   if (!mesh.normals.empty()) {
-    const Vec3 n = w * mesh.normals[tri[0]] + u * mesh.normals[tri[1]] + v * mesh.normals[tri[2]];
+    const Vec3 n = w * normalAt(tri[0]) + u * normalAt(tri[1]) + v * normalAt(tri[2]);
     const float length = n.norm();
     hit.shadingNormal = length > 1e-8f ? Vec3(n / length) : hit.geometricNormal;
   } else {
@@ -124,7 +149,7 @@ bool EmbreeScene::intersect(const Ray& ray, SurfaceHit& hit) const {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRayHit rayHit;
-  rayHit.ray = makeRay(ray.origin, ray.direction, std::numeric_limits<float>::infinity());
+  rayHit.ray = makeRay(ray.origin, ray.direction, std::numeric_limits<float>::infinity(), ray.time);
   rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rayHit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(scene_, &context, &rayHit);
@@ -136,18 +161,18 @@ bool EmbreeScene::intersect(const Ray& ray, SurfaceHit& hit) const {
   switch (record.kind) {
     case Kind::Mesh: {
       const MeshInstance& instance = frame_.meshes[record.index];
-      surfaceOfMesh(instance.mesh, rayHit.hit, hit);
+      surfaceOfMesh(instance, ray.time, rayHit.hit, hit);
       hit.materialId = instance.materialId;
       break;
     }
     case Kind::RectLight:
-      surfaceOfMesh(lightMeshes_[record.index], rayHit.hit, hit);
+      surfaceOfMesh(lightMeshes_[record.index], 0.0f, rayHit.hit, hit);
       hit.lightIndex = int(record.index);
       break;
     case Kind::Sphere:
     case Kind::SphereLight: {
       const bool isLight = record.kind == Kind::SphereLight;
-      const Vec3 center = isLight ? frame_.lights[record.index].center : frame_.spheres[record.index].center;
+      const Vec3 center = isLight ? frame_.lights[record.index].center : frame_.spheres[record.index].centerAt(ray.time);
       const float radius = isLight ? frame_.lights[record.index].radius : frame_.spheres[record.index].radius;
       const Vec3 approx = ray.origin + hit.distance * ray.direction;
       const Vec3 normal = (approx - center).normalized();
@@ -162,10 +187,10 @@ bool EmbreeScene::intersect(const Ray& ray, SurfaceHit& hit) const {
   return true;
 }
 
-bool EmbreeScene::occluded(const Vec3& origin, const Vec3& direction, float maxDistance) const {
+bool EmbreeScene::occluded(const Vec3& origin, const Vec3& direction, float maxDistance, float time) const {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
-  RTCRay ray = makeRay(origin, direction, maxDistance);
+  RTCRay ray = makeRay(origin, direction, maxDistance, time);
   rtcOccluded1(scene_, &context, &ray);
   return ray.tfar < 0.0f;  // Embree sets tfar to -inf on a hit
 }

@@ -30,7 +30,8 @@ class EmbreeScene {
 
   bool intersect(const Ray& ray, SurfaceHit& hit) const;
   // True when anything blocks the segment origin + t * direction, 0 < t < maxDistance.
-  bool occluded(const Vec3& origin, const Vec3& direction, float maxDistance) const;
+  // time: the shutter time of the path, as in Ray::time.
+  bool occluded(const Vec3& origin, const Vec3& direction, float maxDistance, float time = 0.0f) const;
 
   RTCScene handle() const { return scene_; }
 
@@ -41,13 +42,14 @@ class EmbreeScene {
     uint32_t index = 0;  // into frame meshes / spheres / lights
   };
 
-  void addMesh(const TriangleMesh& mesh, Kind kind, uint32_t index);
-  void addSphere(const Vec3& center, float radius, Kind kind, uint32_t index);
+  // positionsAtClose / centerAtClose: null for still geometry, else the shutter-close state.
+  void addMesh(const TriangleMesh& mesh, Kind kind, uint32_t index, const std::vector<Vec3>* positionsAtClose);
+  void addSphere(const Vec3& center, float radius, Kind kind, uint32_t index, const Vec3* centerAtClose);
   void recordGeometry(unsigned geometryId, Kind kind, uint32_t index);
-  void surfaceOfMesh(const TriangleMesh& mesh, const RTCHit& rtcHit, SurfaceHit& hit) const;
+  void surfaceOfMesh(const MeshInstance& instance, float time, const RTCHit& rtcHit, SurfaceHit& hit) const;
 
   const Frame& frame_;
-  std::vector<TriangleMesh> lightMeshes_;  // rectangle lights as two triangles
+  std::vector<MeshInstance> lightMeshes_;  // rectangle lights as two triangles
   std::vector<GeometryRecord> records_;    // indexed by Embree geomID
   RTCDevice device_ = nullptr;
   RTCScene scene_ = nullptr;

@@ -36,6 +36,7 @@ struct PathIntegrator::Vertex {
   Vec3 wo;               // world, towards the previous vertex
   Vec3 woLocal;
   const Bsdf* bsdf;
+  float time;            // shutter time of the path
 };
 
 PathIntegrator::PathIntegrator(const Frame& frame, const EmbreeScene& scene, const LightSampler& lights)
@@ -62,7 +63,8 @@ Color PathIntegrator::sampleDirectLight(const Vertex& v, PixelSampler& sampler, 
   const Vec3 origin = offsetOrigin(v.position, v.geometricNormal, light.direction);
   const float maxDistance = std::isinf(light.distance) ? light.distance : light.distance * (1.0f - 1e-4f);
   bool crossedDielectric = false;
-  const Color transmittance = shadowTransmittance(origin, light.direction, maxDistance, crossedDielectric, counters);
+  const Color transmittance =
+      shadowTransmittance(Ray{origin, light.direction, v.time}, maxDistance, crossedDielectric, counters);
   if ((transmittance <= 0.0f).all()) return Color::Zero();
   // Through a dielectric, only this strategy counts the path (the BSDF strategy drops it, see
   // radiance()), so it takes the full weight.
@@ -77,18 +79,19 @@ Color PathIntegrator::sampleDirectLight(const Vertex& v, PixelSampler& sampler, 
 // The straight line ignores refraction: the shadow of a drop is a soft, slightly dimmed shadow
 // instead of a focused caustic (the bias, documented in docs/shot-format.md). Caustics need
 // manifold next-event estimation (a later issue).
-Color PathIntegrator::shadowTransmittance(const Vec3& origin, const Vec3& direction, float maxDistance,
-                                          bool& crossedDielectric, PathCounters& counters) const {
+Color PathIntegrator::shadowTransmittance(const Ray& shadowRay, float maxDistance, bool& crossedDielectric,
+                                          PathCounters& counters) const {
+  const Vec3& direction = shadowRay.direction;
   ++counters.rays;
-  if (!scene_.occluded(origin, direction, maxDistance)) return Color::Ones();
+  if (!scene_.occluded(shadowRay.origin, direction, maxDistance, shadowRay.time)) return Color::Ones();
   if (!frame_.settings.transparentShadows) return Color::Zero();
   Color transmittance = Color::Ones();
-  Vec3 position = origin;
+  Vec3 position = shadowRay.origin;
   float remaining = maxDistance;
   for (int crossing = 0; crossing < kMaxShadowCrossings; ++crossing) {
     SurfaceHit hit;
     ++counters.rays;
-    if (!scene_.intersect(Ray{position, direction}, hit) || hit.distance >= remaining) return transmittance;
+    if (!scene_.intersect(Ray{position, direction, shadowRay.time}, hit) || hit.distance >= remaining) return transmittance;
     if (hit.lightIndex >= 0) return Color::Zero();
     Vec3 ns = hit.shadingNormal.dot(hit.geometricNormal) < 0.0f ? -hit.shadingNormal : hit.shadingNormal;
     const Vec3 woLocal = ShadingFrame::fromNormal(ns).toLocal(-direction);
@@ -143,6 +146,7 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
     v.bsdf = bsdfs_[hit.materialId].get();
     v.position = hit.position;
     v.wo = -ray.direction;
+    v.time = ray.time;
     Vec3 ng = hit.geometricNormal;
     Vec3 ns = hit.shadingNormal;
     if (ns.dot(ng) < 0.0f) ns = -ns;  // interpolated normals follow the winding's side
@@ -184,7 +188,7 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
     previousSpecular = bs->specular;
     previousBsdfPdf = bs->pdf;
     previousPosition = hit.position;
-    ray = Ray{offsetOrigin(hit.position, ng, wi), wi};
+    ray = Ray{offsetOrigin(hit.position, ng, wi), wi, ray.time};
 
     if (depth >= kRussianRouletteDepth) {
       const float survive = std::min(1.0f, (throughput * etaScale).maxCoeff());

@@ -35,7 +35,8 @@ class PathIntegrator {
   struct Vertex;  // the shading point of the current bounce (integrator.cpp)
 
   Color sampleDirectLight(const Vertex& vertex, PixelSampler& sampler, PathCounters& counters) const;
-  Color shadowTransmittance(const Vec3& origin, const Vec3& direction, float maxDistance, bool& crossedDielectric,
+  // What reaches the shading point along shadowRay within maxDistance (see integrator.cpp).
+  Color shadowTransmittance(const Ray& shadowRay, float maxDistance, bool& crossedDielectric,
                             PathCounters& counters) const;
   bool countedByTransparentShadows(bool chainAfterNonSpecular, int crossings) const;
 

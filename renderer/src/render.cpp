@@ -71,7 +71,7 @@ float cameraDepth(const Camera& camera, const Ray& ray, float distance) {
 class TileRenderer {
  public:
   TileRenderer(const Frame& frame, const PathIntegrator& integrator, Film& film)
-      : frame_(frame), integrator_(integrator), film_(film) {}
+      : frame_(frame), integrator_(integrator), film_(film), hasMotion_(frame.hasMotion()) {}
 
   void renderTile(const TileRect& rect, PathCounters& counters, uint64_t& nonFinite) const {
     for (int y = rect.y0; y < rect.y1; ++y)
@@ -86,7 +86,9 @@ class TileRenderer {
       PixelSampler sampler(s.seed, s.frameNumber, x, y, i);
       const Vec2 jitter = sampler.get2D();
       const Vec2 lens = sampler.get2D();
-      const Ray ray = generateCameraRay(frame_.camera, s.width, s.height, float(x) + jitter.x(), float(y) + jitter.y(), lens);
+      const float time = hasMotion_ ? sampler.get1D() : 0.0f;
+      const Ray ray =
+          generateCameraRay(frame_.camera, s.width, s.height, float(x) + jitter.x(), float(y) + jitter.y(), lens, time);
       FirstHit first;
       const Color L = integrator_.radiance(ray, sampler, first, counters);
       if (isFinite(L)) sum.radiance += L;
@@ -117,6 +119,7 @@ class TileRenderer {
   const Frame& frame_;
   const PathIntegrator& integrator_;
   Film& film_;
+  bool hasMotion_;
 };
 
 }  // namespace

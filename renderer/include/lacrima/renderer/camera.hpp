@@ -8,11 +8,17 @@ namespace lacrima {
 struct Ray {
   Vec3 origin;
   Vec3 direction;  // unit
+  float time = 0.0f;  // in the shutter interval, [0, 1]
 };
+
+// The camera's placement at shutter time t: translation interpolated linearly, rotation by
+// quaternion slerp (Shoemake 1985).
+Affine3 cameraToWorldAt(const Camera& camera, float time);
 
 // A primary ray through film position (filmX, filmY) in pixels (0..width, 0..height, y down),
 // with lens sample lensU in [0,1)^2 (ignored for a pinhole).
-Ray generateCameraRay(const Camera& camera, int width, int height, float filmX, float filmY, const Vec2& lensU);
+Ray generateCameraRay(const Camera& camera, int width, int height, float filmX, float filmY, const Vec2& lensU,
+                      float time = 0.0f);
 
 // Inverse of camera.cameraToWorld.
 Mat4 worldToCameraMatrix(const Camera& camera);

@@ -6,6 +6,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "lacrima/geometry/math.hpp"
@@ -16,16 +17,33 @@ namespace lacrima {
 
 class EnvironmentMap;  // environment.hpp
 
+// Motion blur: geometry and camera are given at shutter open (the plain fields) and, when they
+// move, at shutter close; in between they move linearly in the shutter time t in [0, 1].
+
 struct MeshInstance {
-  TriangleMesh mesh;  // world space; normals optional (geometric normal used when absent)
+  MeshInstance() = default;
+  MeshInstance(TriangleMesh mesh_, uint32_t materialId_) : mesh(std::move(mesh_)), materialId(materialId_) {}
+
+  TriangleMesh mesh;  // world space at shutter open; normals optional (geometric normal when absent)
   uint32_t materialId = 0;
+  // Deformation blur: vertex positions at shutter close (same vertices and triangles), empty
+  // when the mesh does not move; normals at close are optional (the open normals otherwise).
+  std::vector<Vec3> positionsAtClose;
+  std::vector<Vec3> normalsAtClose;
+  bool moves() const { return !positionsAtClose.empty(); }
 };
 
 // Exact sphere (drops, furnace tests), rendered with Embree's analytic sphere primitive.
 struct Sphere {
-  Vec3 center = Vec3::Zero();
+  Sphere() = default;
+  Sphere(const Vec3& center_, float radius_, uint32_t materialId_)
+      : center(center_), radius(radius_), materialId(materialId_) {}
+
+  Vec3 center = Vec3::Zero();  // at shutter open
   float radius = 1.0f;
   uint32_t materialId = 0;
+  std::optional<Vec3> centerAtClose;  // transform blur (a falling drop); none = still
+  Vec3 centerAt(float time) const { return centerAtClose ? Vec3((1.0f - time) * center + time * *centerAtClose) : center; }
 };
 
 // Pinhole or thin-lens camera. Camera space: +X right, +Y up, looks down -Z (glTF convention).
@@ -34,6 +52,7 @@ struct Camera {
   float verticalFovRadians = degreesToRadians(40.0f);
   float lensRadius = 0.0f;     // 0 = pinhole; focal length / (2 f-number) for a thin lens
   float focusDistance = 1.0f;  // metres along the view axis
+  std::optional<Affine3> cameraToWorldAtClose;  // camera motion blur; none = still
 };
 
 // Area light with uniform radiance. Rectangles emit from the side of normalize(edgeU x edgeV)
@@ -72,6 +91,10 @@ struct Frame {
   Color uniformBackground = Color(0, 0, 0);  // used when environment is null (furnace tests)
   Camera camera;
   RenderSettings settings;
+
+  // True when anything moves during the shutter: camera rays then carry a sampled time. A still
+  // frame draws no time sample, so it renders bitwise as it did without motion blur.
+  bool hasMotion() const;
 };
 
 }  // namespace lacrima
