@@ -9,7 +9,7 @@
 
 namespace lacrima {
 
-Sphere fitSphere(const std::vector<Vec3>& points) {
+FittedSphere fitSphere(const std::vector<Vec3>& points) {
   if (points.size() < 4) throw InputError(fmt::format("sphere fit needs at least 4 points, got {}", points.size()));
   // Working about the centroid keeps |p|^2 small, so the normal equations stay well conditioned
   // for an eyeball 12 mm across that sits 0.1 m from the asset origin.
@@ -30,7 +30,7 @@ Sphere fitSphere(const std::vector<Vec3>& points) {
   const Eigen::Vector4d x = qr.solve(b);
   const Vec3d center = x.head<3>();
   const double radiusSquared = x(3) + center.squaredNorm();
-  Sphere sphere;
+  FittedSphere sphere;
   sphere.center = (center + centroid).cast<float>();
   sphere.radius = float(std::sqrt(std::max(0.0, radiusSquared)));
   return sphere;

@@ -196,7 +196,7 @@ TEST(SphereFit, RecoversTheCentreAndRadiusOfANoisySyntheticSphere) {
     if (d.z() < -0.3f) continue;
     points.push_back(center + d * (radius + 1e-5f * g(rng)));
   }
-  const Sphere s = fitSphere(points);
+  const FittedSphere s = fitSphere(points);
   EXPECT_LT((s.center - center).norm(), 5e-6f);
   EXPECT_NEAR(s.radius, radius, 5e-6f);
 }
@@ -246,7 +246,7 @@ TEST_F(IctFaceRig, NeutralPoseIsTheLoadedAssetBitwise) {
 
 TEST_F(IctFaceRig, FittedEyeballsAndJawHingeAreAnatomicallyPlausible) {
   for (size_t e = 0; e < 2; ++e) {
-    const Sphere& s = rig_->eyeball(e);
+    const FittedSphere& s = rig_->eyeball(e);
     std::printf("[ info     ] %s eyeball centre (%.4f, %.4f, %.4f) m, radius %.2f mm\n",
                 rig_->config().eyes[e].name.c_str(), s.center.x(), s.center.y(), s.center.z(), s.radius * 1000.0f);
     // The ICT scleras are about 30 mm across (bounds), larger than a real 24 mm eye; the cornea

@@ -77,7 +77,7 @@ class FaceRig {
   // Jaw skinning weight per vertex of a primitive (empty when the jaw does not move it).
   const std::vector<float>& jawWeights(size_t primitive) const { return jawWeights_[primitive]; }
   // Fitted sphere of eye e (index into config().eyes).
-  const Sphere& eyeball(size_t eye) const { return eyeballs_[eye]; }
+  const FittedSphere& eyeball(size_t eye) const { return eyeballs_[eye]; }
   // Index into config().eyes of the eye a primitive belongs to, or -1.
   int eyeOfPrimitive(size_t primitive) const { return eyeOfPrimitive_[primitive]; }
 
@@ -89,7 +89,7 @@ class FaceRig {
   std::vector<std::string> targetNames_;
   FaceRigConfig config_;
   std::vector<std::vector<float>> jawWeights_;
-  std::vector<Sphere> eyeballs_;
+  std::vector<FittedSphere> eyeballs_;
   std::vector<int> eyeOfPrimitive_;
 };
 

@@ -6,7 +6,7 @@
 
 namespace lacrima {
 
-struct Sphere {
+struct FittedSphere {
   Vec3 center = Vec3::Zero();
   float radius = 0.0f;
 };
@@ -15,6 +15,6 @@ struct Sphere {
 // (Pratt 1987, "Direct least-squares fitting of algebraic surfaces", the sphere case), solved in
 // double precision about the centroid. Throws InputError for fewer than 4 points or points that
 // lie on a plane or line (no unique sphere).
-Sphere fitSphere(const std::vector<Vec3>& points);
+FittedSphere fitSphere(const std::vector<Vec3>& points);
 
 }  // namespace lacrima
