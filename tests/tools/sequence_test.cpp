@@ -427,12 +427,12 @@ TEST(SequenceInterrupt, KilledRendersNeverLeaveABrokenFrameAndResumeMatchesAnUni
   const fs::path dir = freshDir();
   constexpr int kFrames = 5;
   const fs::path shot = writeSphereShot(dir, kFrames);
-  const SlowRender small{64, 36, 16};
+  const SlowRender small{128, 72, 48};  // about half a second for the five frames, start-up included
   const fs::path reference = dir / "reference", killed = dir / "killed";
   ASSERT_EQ(lacrima(slowRenderArgs(shot, reference, small)).exitStatus, 0);
 
   std::mt19937 random(20240611);
-  std::uniform_int_distribution<int> moment(0, 600);  // milliseconds after the start
+  std::uniform_int_distribution<int> moment(100, 500);  // milliseconds after the start: mid-sequence
   for (int attempt = 0; attempt < 4; ++attempt) {
     std::vector<std::string> args = slowRenderArgs(shot, killed, small);
     args.push_back("--resume");
