@@ -124,7 +124,8 @@ class TileRenderer {
 
 }  // namespace
 
-Film renderFrame(const Frame& frame, RenderStats* stats, const ProgressCallback& progress) {
+Film renderFrame(const Frame& frame, RenderStats* stats, const ProgressCallback& progress,
+                 const std::atomic<bool>* cancel) {
   validateFrame(frame);
   const auto start = std::chrono::steady_clock::now();
   const RenderSettings& s = frame.settings;
@@ -145,6 +146,7 @@ Film renderFrame(const Frame& frame, RenderStats* stats, const ProgressCallback&
     const TileRenderer tiles(frame, integrator, film);
     tbb::parallel_for(tbb::blocked_range<int>(0, tileCount, 1), [&](const tbb::blocked_range<int>& range) {
       for (int t = range.begin(); t != range.end(); ++t) {
+        if (cancel && cancel->load(std::memory_order_relaxed)) return;  // skip what is left, cheaply
         PathCounters counters;
         uint64_t tileNonFinite = 0;
         tiles.renderTile(tileRect(t, s.width, s.height), counters, tileNonFinite);
@@ -159,6 +161,7 @@ Film renderFrame(const Frame& frame, RenderStats* stats, const ProgressCallback&
       }
     });
   });
+  if (cancel && cancel->load()) throw RenderCancelled();
 
   if (stats) {
     stats->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -487,10 +487,14 @@ TEST(CliRender, TinyRenderWritesEachFrameAndItsPreviewWithMetadata) {
   }
   EXPECT_EQ(filesIn(dir), expectedFiles);
 
-  // stderr: the shot's warnings first, then one summary line per frame (--quiet: no progress).
+  // stderr: the shot's warnings first, then one summary line per frame (--quiet: no progress),
+  // then the sequence's.
   const std::vector<std::string> lines = splitLines(run.output);
   const std::vector<std::string> warnings = splitLines(warningLines(shot));
-  ASSERT_EQ(lines.size(), warnings.size() + exrs.size()) << run.output;
+  ASSERT_EQ(lines.size(), warnings.size() + exrs.size() + 1) << run.output;
+  EXPECT_TRUE(startsWith(lines.back(), "lacrima: " + std::to_string(exrs.size()) + " frames: " +
+                                           std::to_string(exrs.size()) + " rendered, 0 skipped, 0 failed in "))
+      << lines.back();
   for (size_t i = 0; i < warnings.size(); ++i) EXPECT_EQ(lines[i], warnings[i]);
   for (size_t i = 0; i < exrs.size(); ++i) {
     const std::string& line = lines[warnings.size() + i];
@@ -555,7 +559,7 @@ TEST(CliRender, WarningsComeBeforeRenderingAndFrameStepsAreHonoured) {
   const auto run = lacrima({"render", shot.string(), "--frames", "1-3x2", "--quiet"});
   ASSERT_EQ(run.exitStatus, 0) << run.output;
   EXPECT_TRUE(startsWith(run.output, warningShotWarning(shot) + "frame 1: 8x8, 1 spp, ")) << run.output;
-  EXPECT_EQ(splitLines(run.output).size(), 3u) << run.output;  // the warning, frames 1 and 3
+  EXPECT_EQ(splitLines(run.output).size(), 4u) << run.output;  // the warning, frames 1 and 3, the summary
   EXPECT_EQ(filesIn(dir), (std::set<std::string>{"warn.json", "out/warn.0001.exr", "out/warn.0003.exr"}));
 }
 

@@ -1,13 +1,19 @@
 // `lacrima render`: shot -> frames -> EXR (+ PNG preview).
 #include <fmt/format.h>
 
+#include <unistd.h>
+
 #include <algorithm>
+#include <atomic>
 #include <cctype>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 
 #include "commands.hpp"
+#include "frame_check.hpp"
 #include "frame_range.hpp"
+#include "interrupt.hpp"
 #include "lacrima/renderer/camera.hpp"
 #include "lacrima/renderer/image_output.hpp"
 #include "lacrima/renderer/render.hpp"
@@ -99,16 +105,76 @@ ExrMetadata metadataFor(const Shot& shot, const Frame& frame, const RenderStats&
   return m;
 }
 
-// Renders and writes one frame; returns false when the frame failed (not written).
-bool renderOneFrame(const RenderOptions& o, const Shot& shot, const std::string& pattern, int frameNumber,
-                    int index, int count) {
+RenderSettings settingsFor(const RenderOptions& o, const Shot& shot, int frameNumber) {
+  RenderSettings s = shot.render;
+  applyOverrides(o, s);
+  s.frameNumber = frameNumber;
+  return s;
+}
+
+std::filesystem::path previewPathFor(const std::filesystem::path& exrPath) {
+  std::filesystem::path pngPath = exrPath;
+  pngPath.replace_extension(".png");
+  return pngPath;
+}
+
+// --resume: the frames already complete on disk, each announced on stderr. An existing file that
+// cannot be used (truncated, corrupt, other settings) is announced too: it will be rendered again.
+std::vector<int> framesAlreadyComplete(const RenderOptions& o, const Shot& shot, const std::string& pattern,
+                                       const std::vector<int>& frames) {
+  std::vector<int> complete;
+  for (int f : frames) {
+    const std::filesystem::path exrPath = expandFramePattern(pattern, f);
+    std::error_code ec;
+    if (!std::filesystem::exists(exrPath, ec)) continue;
+    std::string why = whyFrameMustBeRendered(exrPath, settingsFor(o, shot, f));
+    if (why.empty() && o.preview && !std::filesystem::exists(previewPathFor(exrPath), ec))
+      why = "its --preview PNG is missing";
+    if (why.empty()) {
+      std::fprintf(stderr, "frame %d: skipped (--resume): %s is complete\n", f, exrPath.string().c_str());
+      complete.push_back(f);
+    } else {
+      std::fprintf(stderr, "frame %d: rendering again (--resume): %s is not usable: %s\n", f,
+                   exrPath.string().c_str(), why.c_str());
+    }
+  }
+  return complete;
+}
+
+// Said once, as soon as the render notices the first Ctrl-C / SIGTERM.
+void announceStopAfterFrame(int frameNumber) {
+  static std::atomic<bool> announced{false};
+  if (announced.exchange(true)) return;
+  std::fprintf(stderr, "%slacrima: interrupted: finishing frame %d, then stopping (interrupt again to abandon it)\n",
+               isatty(STDERR_FILENO) ? "\r\033[K" : "", frameNumber);
+}
+
+enum class FrameOutcome { Written, Failed, Abandoned };
+
+// Renders and writes one frame. `seconds` receives the render time (also for a failed frame).
+FrameOutcome renderOneFrame(const RenderOptions& o, const Shot& shot, const std::string& pattern, int frameNumber,
+                            int index, int count, const SequenceProgress& sequence, double& seconds) {
   Frame frame = buildFrame(shot, frameNumber);
   applyOverrides(o, frame.settings);
   frame.settings.frameNumber = frameNumber;
-  ProgressReporter reporter(frameNumber, index, count, o.quiet);
+  ProgressReporter reporter(frameNumber, index, count, sequence, o.quiet);
   RenderStats stats;
-  const Film film = renderFrame(frame, &stats, [&](const RenderProgress& p) { reporter.update(p); });
+  Film film;
+  try {
+    film = renderFrame(
+        frame, &stats,
+        [&](const RenderProgress& p) {
+          if (stopRequested()) announceStopAfterFrame(frameNumber);
+          reporter.update(p);
+        },
+        &abandonRequested());
+  } catch (const RenderCancelled&) {
+    reporter.finish();
+    std::fprintf(stderr, "frame %d: abandoned after a second interrupt; not written\n", frameNumber);
+    return FrameOutcome::Abandoned;
+  }
   reporter.finish();
+  seconds = stats.seconds;
 
   const RenderSettings& s = frame.settings;
   const double nonFiniteFraction = double(stats.nonFiniteSamples) / double(std::max<uint64_t>(1, stats.cameraPaths));
@@ -116,14 +182,15 @@ bool renderOneFrame(const RenderOptions& o, const Shot& shot, const std::string&
     std::fprintf(stderr, "lacrima: frame %d FAILED: %llu of %llu samples were NaN/Inf (limit %.4f%%); not written\n",
                  frameNumber, (unsigned long long)stats.nonFiniteSamples, (unsigned long long)stats.cameraPaths,
                  100.0 * kMaxNonFiniteFraction);
-    return false;
+    return FrameOutcome::Failed;
   }
+  // Signals only set flags, so an interrupt cannot cut these writes short: they complete (and
+  // rename their temporary file into place) before the loop looks at the flags again.
   const std::filesystem::path exrPath = expandFramePattern(pattern, frameNumber);
   writeExr(exrPath, film, metadataFor(shot, frame, stats), s.floatOutput);
   std::string previewNote;
   if (o.preview) {
-    std::filesystem::path pngPath = exrPath;
-    pngPath.replace_extension(".png");
+    const std::filesystem::path pngPath = previewPathFor(exrPath);
     writePreviewPng(pngPath, film, previewOcioConfig(shot));
     previewNote = " + " + pngPath.filename().string();
   }
@@ -131,23 +198,91 @@ bool renderOneFrame(const RenderOptions& o, const Shot& shot, const std::string&
                frameNumber, s.width, s.height, s.samplesPerPixel, formatDuration(stats.seconds).c_str(),
                formatRate(stats.rays / std::max(stats.seconds, 1e-9)).c_str(),
                (unsigned long long)stats.nonFiniteSamples, exrPath.string().c_str(), previewNote.c_str());
-  return true;
+  return FrameOutcome::Written;
+}
+
+// What happened to the frames of this run, in the order they were given.
+struct SequenceTally {
+  std::vector<int> complete;  // on disk when the run ends: skipped or rendered
+  std::vector<int> failed;
+  int rendered = 0, skipped = 0;
+  double renderSeconds = 0;  // of every frame rendered (or failed) in this run
+
+  int framesDone() const { return int(complete.size() + failed.size()); }
+  double meanFrameSeconds() const {
+    const int attempts = rendered + int(failed.size());
+    return attempts > 0 ? renderSeconds / attempts : 0.0;
+  }
+};
+
+std::vector<int> framesNotDone(const std::vector<int>& frames, const SequenceTally& tally) {
+  std::vector<int> left;
+  for (int f : frames)
+    if (std::find(tally.complete.begin(), tally.complete.end(), f) == tally.complete.end() &&
+        std::find(tally.failed.begin(), tally.failed.end(), f) == tally.failed.end())
+      left.push_back(f);
+  return left;
+}
+
+void printSummary(const std::vector<int>& frames, const SequenceTally& tally, double wallSeconds) {
+  const size_t notRendered = framesNotDone(frames, tally).size();
+  std::fprintf(stderr, "lacrima: %zu frames: %d rendered, %d skipped, %zu failed%s in %s\n", frames.size(),
+               tally.rendered, tally.skipped, tally.failed.size(),
+               notRendered > 0 ? fmt::format(", {} not rendered", notRendered).c_str() : "",
+               formatDuration(wallSeconds).c_str());
+}
+
+void printResumeHint(const std::vector<int>& frames, const SequenceTally& tally) {
+  std::vector<int> complete = tally.complete;
+  std::sort(complete.begin(), complete.end());
+  std::fprintf(stderr,
+               "lacrima: stopped by an interrupt. Frames complete: %s; not rendered: %s.\n"
+               "lacrima: run the same command with --resume to render the rest.\n",
+               formatFrameList(complete).c_str(), formatFrameList(framesNotDone(frames, tally)).c_str());
 }
 
 }  // namespace
 
 int runRender(const RenderOptions& o) {
   try {
+    const auto start = std::chrono::steady_clock::now();
     const Shot shot = loadShot(o.shotPath);
     const std::vector<int> frames = framesToRender(o, shot);
     const std::string pattern = outputPattern(o, shot, frames.size());
     checkPreviewConfig(o, shot);
     printShotWarnings(shot);
-    int failed = 0;
-    for (size_t i = 0; i < frames.size(); ++i)
-      if (!renderOneFrame(o, shot, pattern, frames[i], int(i), int(frames.size()))) ++failed;
-    if (failed > 0) {
-      std::fprintf(stderr, "lacrima: %d of %zu frames failed\n", failed, frames.size());
+    installInterruptHandlers();
+
+    SequenceTally tally;
+    if (o.resume) tally.complete = framesAlreadyComplete(o, shot, pattern, frames);
+    tally.skipped = int(tally.complete.size());
+    const std::vector<int> toRender = framesNotDone(frames, tally);
+    for (size_t i = 0; i < toRender.size() && !stopRequested(); ++i) {
+      const int frameNumber = toRender[i];
+      const int index = int(std::find(frames.begin(), frames.end(), frameNumber) - frames.begin());
+      const SequenceProgress sequence{tally.framesDone(), int(frames.size()), int(toRender.size() - i - 1),
+                                      tally.meanFrameSeconds()};
+      double seconds = 0;
+      const FrameOutcome outcome =
+          renderOneFrame(o, shot, pattern, frameNumber, index, int(frames.size()), sequence, seconds);
+      if (outcome == FrameOutcome::Abandoned) break;
+      tally.renderSeconds += seconds;
+      if (outcome == FrameOutcome::Written) {
+        tally.complete.push_back(frameNumber);
+        ++tally.rendered;
+      } else {
+        tally.failed.push_back(frameNumber);
+      }
+    }
+    printSummary(frames, tally, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+
+    // An interrupt that came after the last frame stopped nothing: the run is simply complete.
+    if (stopRequested() && !framesNotDone(frames, tally).empty()) {
+      printResumeHint(frames, tally);
+      return kExitInterrupted;
+    }
+    if (!tally.failed.empty()) {
+      std::fprintf(stderr, "lacrima: %zu of %zu frames failed\n", tally.failed.size(), frames.size());
       return kExitRenderFailure;
     }
     return kExitOk;

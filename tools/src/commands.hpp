@@ -24,6 +24,7 @@ struct RenderOptions {
   bool preview = false;
   bool floatOutput = false;
   bool quiet = false;
+  bool resume = false;  // skip frames whose EXR is already complete with these settings
 };
 
 struct BenchOptions {

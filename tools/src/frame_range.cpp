@@ -1,6 +1,7 @@
 #include "frame_range.hpp"
 
 #include <charconv>
+#include <string>
 
 namespace lacrima::cli {
 
@@ -64,6 +65,23 @@ std::optional<std::vector<int>> parseFrameList(const std::string& text, std::str
     begin = comma + 1;
   }
   return frames;
+}
+
+std::string formatFrameList(const std::vector<int>& frames) {
+  if (frames.empty()) return "none";
+  std::string text;
+  for (size_t begin = 0; begin < frames.size();) {
+    size_t end = begin + 1;  // one past the run of consecutive frames starting at `begin`
+    while (end < frames.size() && frames[end] == frames[end - 1] + 1) ++end;
+    if (!text.empty()) text += ',';
+    text += std::to_string(frames[begin]);
+    if (end - begin > 1) {
+      text += '-';
+      text += std::to_string(frames[end - 1]);
+    }
+    begin = end;
+  }
+  return text;
 }
 
 }  // namespace lacrima::cli

@@ -72,7 +72,10 @@ const char* kRenderExamples =
     "\n"
     "Overrides replace the shot file's render settings for this run only. Frames are written to a\n"
     "temporary name and renamed when complete, so an interrupted render never leaves a partial EXR.\n"
-    "Exit status: 0 success, 1 render failure (e.g. NaN samples), 2 bad input (shot, asset, options).";
+    "Ctrl-C (or SIGTERM) once: the current frame is finished and written, then the render stops and says\n"
+    "how to continue (--resume); twice: the current frame is abandoned at once.\n"
+    "Exit status: 0 success, 1 render failure (e.g. NaN samples), 2 bad input (shot, asset, options),\n"
+    "130 interrupted with frames left to render.";
 
 void addRender(CLI::App& app, RenderOptions& o) {
   auto* render = app.add_subcommand("render", "Render a shot to an OpenEXR sequence");
@@ -93,6 +96,9 @@ void addRender(CLI::App& app, RenderOptions& o) {
   render->add_flag("--preview", o.preview, "Also write an sRGB PNG preview (OCIO, ACES SDR view) next to each EXR");
   render->add_flag("--float", o.floatOutput, "Write the beauty as 32-bit float instead of half");
   render->add_flag("--quiet,-q", o.quiet, "Only print the per-frame summary lines");
+  render->add_flag("--resume", o.resume,
+                   "Skip frames whose EXR already exists, reads back completely and was rendered with the same "
+                   "resolution, spp, seed and max depth; render the others (a truncated or corrupt file again)");
   render->callback([&o] { throw CLI::RuntimeError(runRender(o)); });
 }
 

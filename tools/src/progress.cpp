@@ -19,8 +19,21 @@ std::string formatRate(double perSecond) {
   return fmt::format("{:.0f} ", perSecond);
 }
 
-ProgressReporter::ProgressReporter(int frame, int frameIndex, int frameCount, bool quiet)
-    : frame_(frame), frameIndex_(frameIndex), frameCount_(frameCount), quiet_(quiet), terminal_(isatty(STDERR_FILENO)) {}
+double sequenceEta(const SequenceProgress& sequence, double frameElapsed, double frameFraction) {
+  if (frameFraction <= 0) return 0.0;  // nothing to extrapolate from yet
+  const double frameTotal = frameElapsed / frameFraction;
+  const double perFrame = sequence.meanFrameSeconds > 0 ? sequence.meanFrameSeconds : frameTotal;
+  return frameTotal - frameElapsed + perFrame * sequence.framesToRenderAfter;
+}
+
+ProgressReporter::ProgressReporter(int frame, int frameIndex, int frameCount, const SequenceProgress& sequence,
+                                   bool quiet)
+    : frame_(frame),
+      frameIndex_(frameIndex),
+      frameCount_(frameCount),
+      sequence_(sequence),
+      quiet_(quiet),
+      terminal_(isatty(STDERR_FILENO)) {}
 
 void ProgressReporter::update(const RenderProgress& p) {
   if (quiet_ || p.tilesTotal == 0) return;
@@ -36,9 +49,11 @@ void ProgressReporter::update(const RenderProgress& p) {
   lastPrint_ = now;
   const double eta = fraction > 0 ? p.elapsedSeconds * (1.0 - fraction) / fraction : 0.0;
   const std::string line =
-      fmt::format("frame {} [{}/{}] {:5.1f}%  {}rays/s  elapsed {}  ETA {}", frame_, frameIndex_ + 1, frameCount_,
-                  100.0 * fraction, formatRate(p.raysSoFar / std::max(p.elapsedSeconds, 1e-9)),
-                  formatDuration(p.elapsedSeconds), formatDuration(eta));
+      fmt::format("frame {} [{}/{}] {:5.1f}%  {}rays/s  elapsed {}  ETA {}  | sequence {}/{} frames done, ETA {}",
+                  frame_, frameIndex_ + 1, frameCount_, 100.0 * fraction,
+                  formatRate(p.raysSoFar / std::max(p.elapsedSeconds, 1e-9)), formatDuration(p.elapsedSeconds),
+                  formatDuration(eta), sequence_.framesDone, sequence_.framesTotal,
+                  formatDuration(sequenceEta(sequence_, p.elapsedSeconds, fraction)));
   std::fprintf(stderr, terminal_ ? "\r%s\033[K" : "%s\n", line.c_str());
 }
 
