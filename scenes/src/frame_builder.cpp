@@ -1,57 +1,113 @@
 // buildFrame: a checked Shot at one frame number -> the renderer's Frame, through the geometry
-// stage (static blendshape weights, asset transforms, simple shapes). Nothing is read from disk
-// here: loadShot loaded the assets and the environment map once.
+// stage: assets posed by their rig, keyframes and performance tracks, shapes (keyed or attached
+// to the skin), lights and camera, each at shutter open and, when the shot has a shutter and it
+// moves, at shutter close (motion blur). Nothing is read from disk here.
 #include <fmt/format.h>
 
 #include <algorithm>
 
+#include "asset_pose.hpp"
 #include "lacrima/geometry/shapes.hpp"
 #include "lacrima/scenes/shot.hpp"
+#include "shot_geometry.hpp"
+#include "surface_attachment.hpp"
 
 namespace lacrima {
 
 namespace {
 
-void addAssetMeshes(const Shot& shot, const ShotAsset& asset, Frame& frame) {
+using shotfile::assetPoseAt;
+using shotfile::posedPrimitive;
+
+// The shutter interval of one frame, in (fractional) frames.
+struct ShutterTimes {
+  double open = 0.0, close = 0.0;
+  bool blurred() const { return close > open; }
+};
+
+// Every primitive of every asset posed at one time (world space).
+using PosedAssets = std::vector<std::vector<TriangleMesh>>;
+
+PosedAssets poseAssets(const Shot& shot, double frame, const PosedAssets* still) {
+  PosedAssets posed(shot.assets.size());
+  for (size_t a = 0; a < shot.assets.size(); ++a) {
+    const ShotAsset& asset = shot.assets[a];
+    if (still && !asset.animated()) continue;  // at shutter close only what moves is posed again
+    const FacePose pose = assetPoseAt(asset, frame);
+    for (size_t i = 0; i < asset.gltf->primitives.size(); ++i) posed[a].push_back(posedPrimitive(asset, pose, i));
+  }
+  return posed;
+}
+
+void checkLoaded(const Shot& shot, const ShotAsset& asset) {
   if (!asset.gltf)
     throw InputError(fmt::format("{}: asset '{}' ({}) is not loaded; shots must come from loadShot", shot.path.string(),
                                  asset.name, asset.file.string()));
-  const GltfAsset& gltf = *asset.gltf;
-  if (asset.primitiveMaterials.size() != gltf.primitives.size())
+  if (asset.primitiveMaterials.size() != asset.gltf->primitives.size())
     throw InputError(fmt::format("{}: asset '{}': {} primitive materials for {} primitives", shot.path.string(),
-                                 asset.name, asset.primitiveMaterials.size(), gltf.primitives.size()));
-  const bool morphed = std::any_of(asset.weights.begin(), asset.weights.end(), [](float w) { return w != 0.0f; });
-  const Affine3 toWorld = asset.transform.matrix();
-  for (size_t i = 0; i < gltf.primitives.size(); ++i) {
+                                 asset.name, asset.primitiveMaterials.size(), asset.gltf->primitives.size()));
+}
+
+// The visible primitives as mesh instances; deforming ones carry their shutter-close vertices.
+void addAssetMeshes(const Shot& shot, size_t a, const PosedAssets& open, const PosedAssets* close, Frame& frame) {
+  const ShotAsset& asset = shot.assets[a];
+  for (size_t i = 0; i < open[a].size(); ++i) {
     const int materialId = asset.primitiveMaterials[i];
     if (materialId < 0) continue;  // hidden
-    const GltfPrimitive& primitive = gltf.primitives[i];
-    MeshInstance instance;
-    instance.mesh = morphed ? applyMorphTargets(primitive, asset.weights) : primitive.mesh;
-    transformMesh(instance.mesh, toWorld);
-    instance.mesh.name = asset.name + "/" + primitive.name;
+    MeshInstance instance(open[a][i], uint32_t(materialId));
     if (const std::string defect = findMeshDefect(instance.mesh); !defect.empty())
       throw InputError(fmt::format("{}: asset '{}' ({}), primitive '{}': {}", shot.path.string(), asset.name,
-                                   asset.file.string(), primitive.name, defect));
-    instance.materialId = uint32_t(materialId);
+                                   asset.file.string(), asset.gltf->primitives[i].name, defect));
+    if (close && !(*close)[a].empty() && (*close)[a][i].positions != instance.mesh.positions) {
+      instance.positionsAtClose = (*close)[a][i].positions;
+      instance.normalsAtClose = (*close)[a][i].normals;
+    }
     frame.meshes.push_back(std::move(instance));
   }
 }
 
-void addShape(const ShotShape& shape, Frame& frame) {
-  switch (shape.type) {
-    case ShotShape::Type::Sphere:
-      frame.spheres.push_back(Sphere{shape.center, shape.radius, shape.materialId});
-      break;
-    case ShotShape::Type::Ellipsoid: {
-      const Mat3 axes = shape.rotation * shape.radii.asDiagonal();
-      frame.meshes.push_back(MeshInstance{makeEllipsoid(shape.center, axes), shape.materialId});
-      break;
-    }
-    case ShotShape::Type::Rectangle:
-      frame.meshes.push_back(MeshInstance{makeRectangle(shape.center, shape.edgeU, shape.edgeV), shape.materialId});
-      break;
+// The shape's center at a time: its keys, moved with the skin when it is attached.
+Vec3 shapeCenterAt(const ShotShape& shape, double frame, const PosedAssets& posed) {
+  Vec3 center = shape.centerCurve ? shape.centerCurve->evaluate(float(frame)) : shape.center;
+  if (shape.attachment && !posed[shape.attachment->asset].empty())
+    center += shotfile::attachedPoint(posed[shape.attachment->asset], *shape.attachment) - shape.attachment->reference;
+  return center;
+}
+
+MeshInstance shapeMesh(const ShotShape& shape, const Vec3& center) {
+  if (shape.type == ShotShape::Type::Ellipsoid)
+    return MeshInstance(makeEllipsoid(center, Mat3(shape.rotation * shape.radii.asDiagonal())), shape.materialId);
+  return MeshInstance(makeRectangle(center, shape.edgeU, shape.edgeV), shape.materialId);
+}
+
+void addShape(const ShotShape& shape, const ShutterTimes& shutter, const PosedAssets& open,
+              const PosedAssets* close, Frame& frame) {
+  const Vec3 centerOpen = shapeCenterAt(shape, shutter.open, open);
+  // An attached shape follows its asset at close when the asset moves; otherwise as at open.
+  const bool attachedMoves = shape.attachment && close && !(*close)[shape.attachment->asset].empty();
+  const Vec3 centerClose =
+      close ? shapeCenterAt(shape, shutter.close, attachedMoves ? *close : open) : centerOpen;
+  if (shape.type == ShotShape::Type::Sphere) {
+    Sphere sphere(centerOpen, shape.radius, shape.materialId);
+    if (centerClose != centerOpen) sphere.centerAtClose = centerClose;
+    frame.spheres.push_back(sphere);
+    return;
   }
+  MeshInstance mesh = shapeMesh(shape, centerOpen);
+  if (centerClose != centerOpen)
+    for (const Vec3& p : mesh.mesh.positions) mesh.positionsAtClose.push_back(p + (centerClose - centerOpen));
+  frame.meshes.push_back(std::move(mesh));
+}
+
+// The renderer camera at a time: keyed look-at cameras are placed again, the rest as loaded.
+Camera cameraAt(const ShotCamera& shotCamera, double frame) {
+  Camera camera = shotCamera.camera;
+  if (shotCamera.kind != ShotCamera::Kind::LookAt || !shotCamera.animated()) return camera;
+  const Vec3 position = shotCamera.animatedPosition.at(frame);
+  const Vec3 lookAt = shotCamera.animatedLookAt.at(frame);
+  if (const auto m = shotfile::lookAtCameraToWorld(position, lookAt, shotCamera.up)) camera.cameraToWorld = *m;
+  if (!shotCamera.focusDistance) camera.focusDistance = (lookAt - position).norm();
+  return camera;
 }
 
 }  // namespace
@@ -60,14 +116,30 @@ Frame buildFrame(const Shot& shot, int frameNumber) {
   if (frameNumber < shot.frameStart || frameNumber > shot.frameEnd)
     throw InputError(fmt::format("{}: frame {} is outside the shot's frame range {}-{}", shot.path.string(),
                                  frameNumber, shot.frameStart, shot.frameEnd));
+  for (const ShotAsset& asset : shot.assets) checkLoaded(shot, asset);
+  ShutterTimes shutter{double(frameNumber), double(frameNumber)};
+  if (shot.shutter) shutter = {frameNumber + shot.shutter->first, frameNumber + shot.shutter->second};
+
   Frame frame;
   frame.materials = shot.frameMaterials();
-  for (const ShotAsset& asset : shot.assets) addAssetMeshes(shot, asset, frame);
-  for (const ShotShape& shape : shot.shapes) addShape(shape, frame);
+  const PosedAssets open = poseAssets(shot, shutter.open, nullptr);
+  const std::optional<PosedAssets> close =
+      shutter.blurred() ? std::optional<PosedAssets>(poseAssets(shot, shutter.close, &open)) : std::nullopt;
+  const PosedAssets* closePtr = close ? &*close : nullptr;
+  for (size_t a = 0; a < shot.assets.size(); ++a) addAssetMeshes(shot, a, open, closePtr, frame);
+  for (const ShotShape& shape : shot.shapes) addShape(shape, shutter, open, closePtr, frame);
+
   frame.lights = shot.lights;
+  for (size_t i = 0; i < frame.lights.size() && i < shot.lightCenterCurves.size(); ++i)
+    if (shot.lightCenterCurves[i]) frame.lights[i].center = shot.lightCenterCurves[i]->evaluate(float(frameNumber));
   if (shot.environment) frame.environment = shot.environment->map;
   frame.uniformBackground = shot.background;
-  frame.camera = shot.camera.camera;
+  frame.camera = cameraAt(shot.camera, shutter.open);
+  if (shutter.blurred() && shot.camera.animated()) {
+    const Camera atClose = cameraAt(shot.camera, shutter.close);
+    if (atClose.cameraToWorld.matrix() != frame.camera.cameraToWorld.matrix())
+      frame.camera.cameraToWorldAtClose = atClose.cameraToWorld;
+  }
   frame.settings = shot.render;
   frame.settings.frameNumber = frameNumber;
   return frame;

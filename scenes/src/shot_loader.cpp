@@ -13,7 +13,10 @@
 #include "lacrima/scenes/shot.hpp"
 #include "shot_checker.hpp"
 #include "shot_geometry.hpp"
+#include "animation_reader.hpp"
+#include "asset_animation_reader.hpp"
 #include "suggest.hpp"
+#include "surface_attachment.hpp"
 
 namespace lacrima {
 
@@ -356,10 +359,64 @@ class ShotReader {
     return t;
   }
 
+  // A required [x, y, z] member that may be keyed.
+  std::optional<AnimatedVec3> readAnimatedMember(ObjectReader& o, const std::string& key) {
+    const Json* v = o.find(key);
+    if (!v) {
+      o.missing(key, "[x, y, z], or keys {\"keys\": [[frame, [x, y, z]], ...]}");
+      return std::nullopt;
+    }
+    return readAnimatedVec3(c_, *v, o.at(key));
+  }
+
+  // {"open": frames, "close": frames} relative to each frame.
+  void readShutter(const Json& v, const std::string& pointer) {
+    ObjectReader o(c_, v, pointer, {"open", "close"});
+    const auto open = o.number("open", Range::closed(-1, 1), true);
+    const auto close = o.number("close", Range::closed(-1, 1), true);
+    if (!open || !close) return;
+    if (*close < *open) {
+      o.error("close", fmt::format("the shutter must close after it opens: close {} < open {}", *close, *open));
+      return;
+    }
+    shot_.shutter = std::make_pair(*open, *close);
+  }
+
+  // {"asset": name, "part": part name}: the shape follows that part's surface.
+  void readAttachment(const Json& v, const std::string& pointer, ShotShape& shape) {
+    ObjectReader o(c_, v, pointer, {"asset", "part"});
+    const auto assetName = o.string("asset", true);
+    const auto part = o.string("part", true);
+    if (!assetName || !part) return;
+    std::vector<std::string> assetNames;
+    const ShotAsset* asset = nullptr;
+    for (const ShotAsset& a : shot_.assets) {
+      assetNames.push_back(a.name);
+      if (a.name == *assetName) asset = &a;
+    }
+    if (!asset) {
+      o.error("asset", fmt::format("undefined asset '{}'{}", *assetName,
+                                   suggestionOrList(*assetName, assetNames, "assets", "the shot has no assets")));
+      return;
+    }
+    if (!asset->gltf) return;  // its loading error is reported
+    std::vector<std::string> parts;
+    for (const GltfPrimitive& p : asset->gltf->primitives) appendUnique(parts, p.part);
+    if (std::find(parts.begin(), parts.end(), *part) == parts.end()) {
+      o.error("part", fmt::format("asset '{}' has no part '{}'{}", *assetName, *part,
+                                  suggestionOrList(*part, parts, "its parts", "it has no primitives")));
+      return;
+    }
+    shape.attachAsset = *assetName;
+    shape.attachPart = *part;
+  }
+
   // ---- assets ------------------------------------------------------------------------------
 
   void readAsset(const Json& v, const std::string& pointer) {
-    ObjectReader o(c_, v, pointer, {"name", "file", "transform", "materials", "blendshapes", "hide"});
+    ObjectReader o(c_, v, pointer,
+                   {"name", "file", "transform", "materials", "blendshapes", "hide", "rig", "joints", "controls",
+                    "performance"});
     if (!o.ok()) return;
     ShotAsset asset;
     const auto file = o.string("file", true);
@@ -416,8 +473,9 @@ class ShotReader {
       } else {
         for (const auto& item : b->items()) {
           const std::string p = childPointer(o.at("blendshapes"), item.key());
-          const auto weight = readNumber(c_, item.value(), p, Range::closed(0, 1));
-          if (asset.gltf && asset.gltf->findTarget(item.key()) < 0) {
+          const auto weight = readAnimatedNumber(c_, item.value(), p, Range::closed(0, 1));
+          const int target = asset.gltf ? asset.gltf->findTarget(item.key()) : -1;
+          if (asset.gltf && target < 0) {
             if (asset.gltf->targetNames.empty())
               c_.error(p, Anchor::Key, fmt::format("asset '{}' has no blendshapes", asset.name));
             else
@@ -425,7 +483,9 @@ class ShotReader {
                        fmt::format("unknown blendshape '{}'{}", item.key(),
                                    suggestionOrList(item.key(), asset.gltf->targetNames, "blendshapes", "")));
           }
-          if (weight) asset.blendshapes.emplace_back(item.key(), float(*weight));
+          if (weight) asset.blendshapes.emplace_back(item.key(), weight->constant);
+          if (weight && weight->animated() && target >= 0)
+            asset.animatedBlendshapes.push_back(AssetChannel{item.key(), size_t(target), *weight});
         }
       }
     }
@@ -437,6 +497,7 @@ class ShotReader {
         }
       });
     }
+    readAssetAnimation(o, asset, {baseDir_, shot_.fps, double(shot_.frameStart)});
     if (asset.gltf) assignPrimitiveMaterials(asset);
     shot_.assets.push_back(std::move(asset));
   }
@@ -491,7 +552,8 @@ class ShotReader {
   bool readCamera(const Json& v) {
     ObjectReader o(
         c_, v, "/camera",
-        {"position", "lookAt", "up", "gltf", "fov", "focalLength", "sensorHeight", "fStop", "focusDistance"});
+        {"position", "lookAt", "up", "gltf", "fov", "focalLength", "sensorHeight", "fStop", "focusDistance",
+         "shutter"});
     if (!o.ok()) return false;
     const size_t before = c_.errorCount();
     ShotCamera& cam = shot_.camera;
@@ -535,9 +597,14 @@ class ShotReader {
       }
     } else {
       cam.kind = ShotCamera::Kind::LookAt;
-      const auto position = o.vec3("position", true);
-      const auto lookAt = o.vec3("lookAt", true);
+      // Position and look-at point may be keyed; the checks below apply to their first keys.
+      const auto animatedPosition = readAnimatedMember(o, "position");
+      const auto animatedLookAt = readAnimatedMember(o, "lookAt");
+      const auto position = animatedPosition ? std::optional<Vec3>(animatedPosition->constant) : std::nullopt;
+      const auto lookAt = animatedLookAt ? std::optional<Vec3>(animatedLookAt->constant) : std::nullopt;
       const auto up = o.vec3("up");
+      if (animatedPosition) cam.animatedPosition = *animatedPosition;
+      if (animatedLookAt) cam.animatedLookAt = *animatedLookAt;
       if (position) cam.position = *position;
       if (lookAt) cam.lookAt = *lookAt;
       if (up) cam.up = *up;
@@ -568,6 +635,7 @@ class ShotReader {
     if (sensorHeight) cam.sensorHeightMm = float(*sensorHeight);
     if (fStop) cam.fStop = float(*fStop);
     if (focusDistance) cam.focusDistance = float(*focusDistance);
+    if (const Json* s = o.find("shutter")) readShutter(*s, o.at("shutter"));
 
     if (c_.errorCount() != before) return false;
     // An asset that failed to load has no cameras; its own error is already reported.
@@ -701,7 +769,9 @@ class ShotReader {
     const size_t before = c_.errorCount();
     AreaLight light;
     light.shape = rectangle ? AreaLight::Shape::Rectangle : AreaLight::Shape::Sphere;
-    const auto center = o.vec3("center", true);
+    // A keyed center moves the light; its orientation is the one at the first key.
+    const auto animatedCenter = readAnimatedMember(o, "center");
+    const auto center = animatedCenter ? std::optional<Vec3>(animatedCenter->constant) : std::nullopt;
     if (center) light.center = *center;
     float area = 0.0f;
     if (rectangle) {
@@ -735,7 +805,10 @@ class ShotReader {
     } else if (o.ok()) {
       o.missing("radiance", "[r, g, b] in W/(m^2 sr); or 'power' in watts");
     }
-    if (c_.errorCount() == before) shot_.lights.push_back(light);
+    if (c_.errorCount() == before) {
+      shot_.lights.push_back(light);
+      shot_.lightCenterCurves.push_back(animatedCenter->curve);
+    }
   }
 
   void readShape(const Json& v, const std::string& pointer) {
@@ -745,18 +818,21 @@ class ShotReader {
     std::vector<std::string> keys;
     if (*type == "sphere") {
       shape.type = ShotShape::Type::Sphere;
-      keys = {"type", "center", "radius", "material"};
+      keys = {"type", "center", "radius", "material", "attach"};
     } else if (*type == "ellipsoid") {
       shape.type = ShotShape::Type::Ellipsoid;
-      keys = {"type", "center", "radii", "rotate", "material"};
+      keys = {"type", "center", "radii", "rotate", "material", "attach"};
     } else {
       shape.type = ShotShape::Type::Rectangle;
-      keys = {"type", "center", "u", "v", "size", "normal", "lookAt", "up", "material"};
+      keys = {"type", "center", "u", "v", "size", "normal", "lookAt", "up", "material", "attach"};
     }
     ObjectReader o(c_, v, pointer, keys);
     const size_t before = c_.errorCount();
-    const auto center = o.vec3("center", true);
+    const auto animatedCenter = readAnimatedMember(o, "center");
+    const auto center = animatedCenter ? std::optional<Vec3>(animatedCenter->constant) : std::nullopt;
     if (center) shape.center = *center;
+    if (animatedCenter) shape.centerCurve = animatedCenter->curve;
+    if (const Json* a = o.find("attach")) readAttachment(*a, o.at("attach"), shape);
     if (shape.type == ShotShape::Type::Sphere) {
       if (auto x = o.number("radius", Range::above(0), true)) shape.radius = float(*x);
     } else if (shape.type == ShotShape::Type::Ellipsoid) {
@@ -828,6 +904,7 @@ Shot loadShot(const std::filesystem::path& path) {
   }
   ShotReader(checker, shot).read(*json);
   if (checker.errorCount() > 0) throw ShotError(checker.diagnostics());
+  resolveAttachments(shot);
   return shot;
 }
 

@@ -1,6 +1,8 @@
 // Small helpers of the plain-data Shot.
 #include "lacrima/scenes/shot.hpp"
 
+#include <algorithm>
+
 namespace lacrima {
 
 int Shot::findMaterial(const std::string& name) const {
@@ -13,6 +15,24 @@ std::vector<Material> Shot::frameMaterials() const {
   std::vector<Material> all = materials;
   all.insert(all.end(), assetMaterials.begin(), assetMaterials.end());
   return all;
+}
+
+bool ShotAsset::animated() const {
+  const auto keyed = [](const AssetChannel& c) { return c.value.animated(); };
+  return performance.has_value() || std::any_of(animatedBlendshapes.begin(), animatedBlendshapes.end(), keyed) ||
+         std::any_of(joints.begin(), joints.end(), keyed) ||
+         std::any_of(controlValues.begin(), controlValues.end(), keyed);
+}
+
+void ShotPerformance::addWeightsAt(double frame, std::vector<float>& weights) const {
+  if (samples.empty()) return;
+  // Linear between the samples around the time, held before the first and after the last.
+  const double position = std::clamp(frame - startFrame, 0.0, double(samples.size() - 1));
+  const size_t i0 = size_t(position);
+  const size_t i1 = std::min(i0 + 1, samples.size() - 1);
+  const float t = float(position - double(i0));
+  for (size_t c = 0; c < targets.size(); ++c)
+    weights[targets[c]] += (1.0f - t) * samples[i0][c] + t * samples[i1][c];
 }
 
 Affine3 ShotTransform::matrix() const {

@@ -10,11 +10,14 @@
 #include <utility>
 #include <vector>
 
+#include "lacrima/geometry/face_controls.hpp"
+#include "lacrima/geometry/face_rig.hpp"
 #include "lacrima/geometry/gltf_asset.hpp"
 #include "lacrima/geometry/math.hpp"
 #include "lacrima/materials/material.hpp"
 #include "lacrima/renderer/environment.hpp"
 #include "lacrima/renderer/frame.hpp"
+#include "lacrima/scenes/animated_value.hpp"
 #include "lacrima/scenes/shot.hpp"  // Diagnostic (shot.hpp includes this file after defining it)
 
 namespace lacrima {
@@ -47,7 +50,32 @@ struct ShotCamera {
   std::optional<float> fStop;
   std::optional<float> focusDistance;  // metres; default: distance to lookAt
 
-  Camera camera;  // derived: what buildFrame hands to the renderer
+  Camera camera;  // derived at the first frame: what buildFrame hands to the renderer
+  // Kind::LookAt: keyed position / look-at point (null curves when still). The up vector, field
+  // of view and lens stay as written; the focus distance follows the look-at point unless given.
+  AnimatedVec3 animatedPosition, animatedLookAt;
+  bool animated() const { return animatedPosition.animated() || animatedLookAt.animated(); }
+};
+
+// A named, animatable channel of an asset: a blendshape weight, a rig joint channel or a
+// control value. index: into the asset's targetNames, FaceControls::jointChannelNames or the
+// controls.
+struct AssetChannel {
+  std::string name;
+  size_t index = 0;
+  AnimatedFloat value;
+};
+
+// A performance-capture weight track (seed 003) bound to an asset: resampled to the shot's fps
+// and optionally filtered at load; sample i plays at shot frame startFrame + i.
+struct ShotPerformance {
+  std::filesystem::path file;  // resolved
+  double startFrame = 1.0;
+  std::vector<size_t> targets;            // per track channel: index into the asset's targetNames
+  std::vector<std::vector<float>> samples;  // samples[i][channel]
+
+  // Adds the track's weights at `frame` (linear between samples, held outside) to `weights`.
+  void addWeightsAt(double frame, std::vector<float>& weights) const;
 };
 
 struct ShotEnvironment {
@@ -70,6 +98,17 @@ struct ShotAsset {
   std::vector<float> weights;
   std::vector<std::string> hide;          // part names not rendered
   std::shared_ptr<const GltfAsset> gltf;  // loaded once by loadShot
+  // Animation (issue "The face in motion"). Keyed blendshape weights (their static weight above
+  // is the first key's value); a rig with joints and animator controls; a performance track.
+  // All weight sources add, then each weight is clamped to [0, 1].
+  std::vector<AssetChannel> animatedBlendshapes;
+  std::shared_ptr<const FaceRig> rig;            // null: morph targets only, no joints
+  std::vector<AssetChannel> joints;              // index into FaceControls::jointChannelNames
+  std::shared_ptr<const FaceControls> controls;  // null when the asset declares none
+  std::vector<AssetChannel> controlValues;       // index into controls->controls()
+  std::optional<ShotPerformance> performance;
+  // True when the asset's shape changes over the shot's frames.
+  bool animated() const;
   // Per primitive of gltf: index into the frame's material list (Shot::frameMaterials()),
   // or -1 when the primitive is hidden.
   std::vector<int> primitiveMaterials;
@@ -87,6 +126,18 @@ struct ShotShape {
   Vec3 edgeV = Vec3(0, 1, 0);        //   normal normalize(edgeU x edgeV)
   std::string material;              // shot material name
   uint32_t materialId = 0;           // index into Shot::materials
+  std::shared_ptr<const Vec3Curve> centerCurve;  // keyed center in frames; null when still
+  // A shape attached to an asset's surface follows the skin: it is translated by the movement of
+  // the surface point nearest to its center (found at the shot's first frame).
+  struct Attachment {
+    size_t asset = 0;      // index into Shot::assets
+    size_t primitive = 0;  // of that asset
+    uint32_t triangle = 0;
+    Vec3 barycentric = Vec3(1, 0, 0);
+    Vec3 reference = Vec3::Zero();  // the surface point at the first frame, world space
+  };
+  std::optional<Attachment> attachment;
+  std::string attachAsset, attachPart;  // as written (resolved into attachment after the assets)
 };
 
 struct Shot {
@@ -104,6 +155,9 @@ struct Shot {
 
   RenderSettings render;  // frameNumber is set by buildFrame
   ShotCamera camera;
+  // Motion blur: the shutter is open from frame + open to frame + close (in frames, e.g.
+  // {-0.25, 0.25} is a 180-degree shutter centred on the frame); none = no motion blur.
+  std::optional<std::pair<double, double>> shutter;
 
   std::optional<ShotEnvironment> environment;
   Color background = Color(0, 0, 0);  // uniform radiance when there is no environment
@@ -111,6 +165,7 @@ struct Shot {
   std::vector<Material> materials;       // from the shot file, in file order
   std::vector<Material> assetMaterials;  // glTF materials mapped automatically (unbound ones)
   std::vector<AreaLight> lights;         // radiance already derived from power where given
+  std::vector<std::shared_ptr<const Vec3Curve>> lightCenterCurves;  // per light; null when still
   std::vector<ShotAsset> assets;
   std::vector<ShotShape> shapes;
 

@@ -1,0 +1,199 @@
+// Rig, joints, animator controls and performance tracks of a shot asset; see the header.
+#include "asset_animation_reader.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "animation_reader.hpp"
+#include "lacrima/geometry/performance_track.hpp"
+#include "suggest.hpp"
+
+namespace lacrima::shotfile {
+
+namespace {
+
+std::string unknownName(const std::string& what, const std::string& name, const std::vector<std::string>& valid) {
+  const std::string suggestion = didYouMean(name, valid);
+  return suggestion.empty() ? fmt::format("unknown {} '{}'", what, name)
+                            : fmt::format("unknown {} '{}'{}", what, name, suggestion);
+}
+
+std::vector<std::string> eyeNames(const ShotAsset& asset) {
+  std::vector<std::string> names;
+  if (asset.rig)
+    for (const EyeballSpec& eye : asset.rig->config().eyes) names.push_back(eye.name);
+  return names;
+}
+
+std::optional<size_t> indexOf(const std::vector<std::string>& names, const std::string& name) {
+  const auto it = std::find(names.begin(), names.end(), name);
+  if (it == names.end()) return std::nullopt;
+  return size_t(it - names.begin());
+}
+
+void readRig(ObjectReader& asset, const Json& v, ShotAsset& out) {
+  Checker& c = asset.checker();
+  ObjectReader o(c, v, asset.at("rig"), {"preset", "headPivot", "jawPivot"});
+  if (!o.ok()) return;
+  const auto preset = o.string("preset", true);
+  if (!preset) return;
+  if (*preset != "ict") {
+    o.error("preset", unknownName("rig preset", *preset, {"ict"}) + " (this version knows the ICT face rig 'ict')");
+    return;
+  }
+  try {
+    FaceRigConfig config = ictFaceRigConfig(*out.gltf);
+    if (auto p = o.vec3("headPivot")) config.headPivot = *p;
+    if (auto p = o.vec3("jawPivot")) config.jawPivot = *p;
+    out.rig = std::make_shared<const FaceRig>(*out.gltf, std::move(config));
+  } catch (const InputError& e) {
+    o.error("preset", fmt::format("cannot build the '{}' rig on asset '{}': {}", *preset, out.name, e.what()));
+  }
+}
+
+// {"name": number or keys, ...} into channels indexed by `names`.
+void readChannels(ObjectReader& asset, const std::string& key, const std::vector<std::string>& names,
+                  const std::string& what, Range range, std::vector<AssetChannel>& out) {
+  Checker& c = asset.checker();
+  const Json& v = *asset.find(key);
+  if (!v.is_object()) {
+    asset.error(key, fmt::format("expected an object mapping {} names to values, found {}", what, describeValue(v)));
+    return;
+  }
+  for (const auto& item : v.items()) {
+    const std::string pointer = childPointer(asset.at(key), item.key());
+    const auto index = indexOf(names, item.key());
+    if (!index) c.error(pointer, Anchor::Key, unknownName(what, item.key(), names));
+    const auto value = readAnimatedNumber(c, item.value(), pointer, range);
+    if (index && value) out.push_back(AssetChannel{item.key(), *index, *value});
+  }
+}
+
+// {"name": gain, ...} of one control.
+std::vector<ControlMapping> readGains(Checker& c, const Json& v, const std::string& pointer,
+                                      const std::vector<std::string>& names, const std::string& what) {
+  std::vector<ControlMapping> gains;
+  if (!v.is_object()) {
+    c.error(pointer, Anchor::Value, fmt::format("expected an object mapping {} names to gains, found {}", what,
+                                                describeValue(v)));
+    return gains;
+  }
+  for (const auto& item : v.items()) {
+    const std::string p = childPointer(pointer, item.key());
+    if (!indexOf(names, item.key())) c.error(p, Anchor::Key, unknownName(what, item.key(), names));
+    if (auto gain = readNumber(c, item.value(), p, Range::any())) gains.push_back({item.key(), float(*gain)});
+  }
+  return gains;
+}
+
+void readControls(ObjectReader& asset, ShotAsset& out) {
+  Checker& c = asset.checker();
+  const Json& v = *asset.find("controls");
+  if (!v.is_object()) {
+    asset.error("controls", "expected an object mapping control names to {\"range\", \"blendshapes\", \"joints\", "
+                            "\"value\"}, found " + describeValue(v));
+    return;
+  }
+  const size_t before = c.errorCount();
+  const std::vector<std::string> channels = FaceControls::jointChannelNames(eyeNames(out));
+  std::vector<FaceControl> controls;
+  std::vector<std::pair<std::string, AnimatedFloat>> values;
+  for (const auto& item : v.items()) {
+    ObjectReader o(c, item.value(), childPointer(asset.at("controls"), item.key()),
+                   {"range", "blendshapes", "joints", "value"});
+    if (!o.ok()) continue;
+    FaceControl control;
+    control.name = item.key();
+    if (const Json* r = o.find("range")) {
+      if (auto range = readVec2(c, *r, o.at("range"), Range::any(), "[min, max]")) {
+        control.min = range->x();
+        control.max = range->y();
+        if (!(control.min <= control.max)) o.error("range", "expected [min, max] with min <= max");
+      }
+    }
+    if (const Json* b = o.find("blendshapes"))
+      control.blendshapes = readGains(c, *b, o.at("blendshapes"), out.gltf->targetNames, "blendshape");
+    if (const Json* j = o.find("joints")) {
+      if (!out.rig) o.error("joints", "a control can drive joints only when the asset has a 'rig'", Anchor::Key);
+      else control.joints = readGains(c, *j, o.at("joints"), channels, "joint channel");
+    }
+    if (const Json* x = o.find("value"))
+      if (auto value = readAnimatedNumber(c, *x, o.at("value"), Range::any())) values.emplace_back(control.name, *value);
+    controls.push_back(std::move(control));
+  }
+  if (c.errorCount() != before) return;
+  try {
+    out.controls = std::make_shared<const FaceControls>(out.gltf->targetNames, eyeNames(out), controls);
+  } catch (const InputError& e) {
+    asset.error("controls", e.what());
+    return;
+  }
+  std::vector<std::string> controlNames;
+  for (const FaceControl& control : controls) controlNames.push_back(control.name);
+  for (auto& [name, value] : values) out.controlValues.push_back(AssetChannel{name, *indexOf(controlNames, name), value});
+}
+
+void readPerformance(ObjectReader& asset, ShotAsset& out, const AssetAnimationContext& context) {
+  Checker& c = asset.checker();
+  ObjectReader o(c, *asset.find("performance"), asset.at("performance"),
+                 {"file", "fps", "startFrame", "nameMap", "filter"});
+  if (!o.ok()) return;
+  const size_t before = c.errorCount();
+  PerformanceCsvOptions options;
+  if (auto x = o.number("fps", Range::above(0))) options.sourceFps = float(*x);
+  ShotPerformance performance;
+  performance.startFrame = context.frameStart;
+  if (auto x = o.number("startFrame", Range::any())) performance.startFrame = *x;
+  if (const Json* m = o.find("nameMap")) {
+    if (!m->is_object()) o.error("nameMap", "expected an object mapping track names to blendshape names, found " +
+                                                describeValue(*m));
+    else
+      for (const auto& item : m->items())
+        if (auto name = readString(c, item.value(), childPointer(o.at("nameMap"), item.key())))
+          options.nameMap[item.key()] = *name;
+  }
+  std::optional<AdaptiveFilterOptions> filter;
+  if (const Json* f = o.find("filter")) {
+    if (f->is_boolean()) {
+      if (f->get<bool>()) filter = AdaptiveFilterOptions{};
+    } else {
+      ObjectReader fo(c, *f, o.at("filter"), {"window", "sharpness"});
+      filter = AdaptiveFilterOptions{};
+      if (auto x = fo.integer("window", Range::closed(0, 240))) filter->window = int(*x);
+      if (auto x = fo.number("sharpness", Range::above(0))) filter->sharpness = float(*x);
+    }
+  }
+  const auto file = o.string("file", true);
+  if (!file || c.errorCount() != before) return;
+  const std::filesystem::path path(*file);
+  performance.file = (path.is_absolute() ? path : context.baseDir / path).lexically_normal();
+  try {
+    PerformanceTrack track = resampleTrack(readPerformanceCsv(performance.file, out.gltf->targetNames, options),
+                                           float(context.fps));
+    performance.samples = filter ? adaptiveTemporalFilter(track.frames, *filter) : std::move(track.frames);
+    for (const std::string& name : track.names) performance.targets.push_back(*indexOf(out.gltf->targetNames, name));
+  } catch (const InputError& e) {
+    o.error("file", fmt::format("cannot use the performance track: {}", e.what()));
+    return;
+  }
+  out.performance = std::move(performance);
+}
+
+}  // namespace
+
+void readAssetAnimation(ObjectReader& o, ShotAsset& asset, const AssetAnimationContext& context) {
+  if (!asset.gltf) return;
+  if (const Json* r = o.find("rig")) readRig(o, *r, asset);
+  if (o.find("joints")) {
+    if (!asset.rig)
+      o.error("joints", "joints need a 'rig' on the asset (for example \"rig\": {\"preset\": \"ict\"})", Anchor::Key);
+    else
+      readChannels(o, "joints", FaceControls::jointChannelNames(eyeNames(asset)), "joint channel", Range::any(),
+                   asset.joints);
+  }
+  if (o.find("controls")) readControls(o, asset);
+  if (o.find("performance")) readPerformance(o, asset, context);
+}
+
+}  // namespace lacrima::shotfile
