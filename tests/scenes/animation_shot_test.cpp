@@ -1,0 +1,196 @@
+// Animated shots: keyed values, the face rig and its controls, performance tracks, the camera
+// shutter (motion blur) and shapes attached to the skin, checked through loadShot/buildFrame
+// against the geometry library evaluated directly.
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "lacrima/geometry/face_rig.hpp"
+#include "shot_test_support.hpp"
+
+namespace lacrima {
+namespace {
+
+using test::shotErrorOf;
+using test::writeShot;
+
+const std::string kFace = LACRIMA_SOURCE_DIR "/scenes/assets/ict-face/ict_face.glb";
+
+// Frames 1-5 of the face; `asset` adds members to the asset, `extra` top-level members.
+std::string faceShot(const std::string& asset, const std::string& extra = "",
+                     const std::string& cameraExtra = "") {
+  return "{\n  \"version\": 1,\n  \"frames\": {\"start\": 1, \"end\": 5, \"fps\": 24},\n"
+         "  \"output\": \"out.####.exr\",\n  \"render\": {\"width\": 16, \"height\": 8, \"spp\": 1},\n"
+         "  \"camera\": {\"position\": [0, 0, 0.5], \"lookAt\": [0, 0, 0], \"fov\": 30" + cameraExtra + "},\n"
+         "  \"materials\": {\"skin\": {\"type\": \"skin\"}, \"water\": {\"type\": \"water\"}},\n"
+         "  \"assets\": [{\"name\": \"face\", \"file\": \"" + kFace + "\", \"materials\": {\"M_Face\": \"skin\"}" +
+         (asset.empty() ? "" : ", " + asset) + "}]" + (extra.empty() ? "" : ",\n  " + extra) + "\n}\n";
+}
+
+size_t facePrimitive(const GltfAsset& asset) {
+  for (size_t i = 0; i < asset.primitives.size(); ++i)
+    if (asset.primitives[i].part == "M_Face") return i;
+  ADD_FAILURE() << "no M_Face";
+  return 0;
+}
+
+// The frame's mesh of the M_Face primitive (meshes are named "<asset>/<primitive name>").
+const MeshInstance& faceMesh(const Frame& frame, const Shot& shot) {
+  const GltfAsset& gltf = *shot.assets[0].gltf;
+  const std::string name = "face/" + gltf.primitives[facePrimitive(gltf)].name;
+  for (const MeshInstance& m : frame.meshes)
+    if (m.mesh.name == name) return m;
+  ADD_FAILURE() << "no mesh " << name;
+  return frame.meshes.front();
+}
+
+std::vector<float> weightsWith(const GltfAsset& gltf, std::initializer_list<std::pair<const char*, float>> values) {
+  std::vector<float> w(gltf.targetNames.size(), 0.0f);
+  for (const auto& [name, value] : values) w[size_t(gltf.findTarget(name))] = value;
+  return w;
+}
+
+void expectPositionsNear(const std::vector<Vec3>& a, const std::vector<Vec3>& b, float tolerance) {
+  ASSERT_EQ(a.size(), b.size());
+  float worst = 0.0f;
+  for (size_t i = 0; i < a.size(); ++i) worst = std::max(worst, (a[i] - b[i]).norm());
+  EXPECT_LE(worst, tolerance);
+}
+
+TEST(AnimatedShot, KeyedBlendshapeIsInterpolatedBetweenKeys) {
+  const Shot shot = loadShot(writeShot(
+      "keyed.json", faceShot(R"("blendshapes": {"jawOpen": {"keys": [[1, 0], [5, 0.8]], "interpolation": "linear"}})")));
+  const GltfAsset& gltf = *shot.assets[0].gltf;
+  const TriangleMesh expected = applyMorphTargets(gltf.primitives[facePrimitive(gltf)], weightsWith(gltf, {{"jawOpen", 0.4f}}));
+  expectPositionsNear(faceMesh(buildFrame(shot, 3), shot).mesh.positions, expected.positions, 1e-6f);
+  // Frame 1 is the first key: weight 0, the neutral face bitwise.
+  EXPECT_EQ(faceMesh(buildFrame(shot, 1), shot).mesh.positions, gltf.primitives[facePrimitive(gltf)].mesh.positions);
+}
+
+TEST(AnimatedShot, ControlsDriveBlendshapesWithGainsAndClampToTheirRange) {
+  const Shot shot = loadShot(writeShot("controls.json", faceShot(R"("controls": {"sadness": {"range": [0, 1],
+      "blendshapes": {"browInnerUp_L": 0.8, "mouthFrown_L": 0.5}, "value": {"keys": [[1, 0], [5, 2]], "interpolation": "linear"}}})")));
+  const GltfAsset& gltf = *shot.assets[0].gltf;
+  // Frame 5: the value 2 is clamped to the range's 1.
+  const TriangleMesh expected = applyMorphTargets(gltf.primitives[facePrimitive(gltf)],
+                                                  weightsWith(gltf, {{"browInnerUp_L", 0.8f}, {"mouthFrown_L", 0.5f}}));
+  expectPositionsNear(faceMesh(buildFrame(shot, 5), shot).mesh.positions, expected.positions, 1e-6f);
+}
+
+TEST(AnimatedShot, RigJointsPoseTheFaceAsTheRigDoes) {
+  const Shot shot = loadShot(writeShot("joints.json", faceShot(R"("rig": {"preset": "ict"},
+      "joints": {"head.ry": {"keys": [[1, 0], [5, 12]], "interpolation": "linear"}, "jaw.rx": 4})")));
+  const GltfAsset& gltf = *shot.assets[0].gltf;
+  const FaceRig rig(gltf, ictFaceRigConfig(gltf));
+  FacePose pose;
+  pose.head.eulerDegrees = Vec3(0, 6, 0);
+  pose.jaw.eulerDegrees = Vec3(4, 0, 0);
+  const TriangleMesh expected = rig.evaluatePrimitive(facePrimitive(gltf), pose);
+  expectPositionsNear(faceMesh(buildFrame(shot, 3), shot).mesh.positions, expected.positions, 1e-6f);
+}
+
+TEST(AnimatedShot, PerformanceTrackIsResampledToTheShotRate) {
+  const auto dir = writeShot("placeholder.json", "").parent_path();
+  std::ofstream(dir / "track.csv") << "time,jawOpen,eyeBlink_L\n0,0,1\n1,0.6,0\n";
+  const Shot shot = loadShot(writeShot(
+      "performance.json", faceShot(R"("performance": {"file": "track.csv", "startFrame": 1})")));
+  const GltfAsset& gltf = *shot.assets[0].gltf;
+  // Frame 4 plays 3/24 s into the track: jawOpen 0.6 * 3/24, eyeBlink_L 1 - 3/24.
+  const TriangleMesh expected = applyMorphTargets(
+      gltf.primitives[facePrimitive(gltf)], weightsWith(gltf, {{"jawOpen", 0.075f}, {"eyeBlink_L", 0.875f}}));
+  expectPositionsNear(faceMesh(buildFrame(shot, 4), shot).mesh.positions, expected.positions, 1e-5f);
+}
+
+TEST(AnimatedShot, ShutterGivesMovingGeometryItsPositionsAtClose) {
+  const std::string drop =
+      R"("shapes": [{"type": "sphere", "radius": 0.01, "material": "water", "center": {"keys": [[1, [0, 0, 0]], [5, [0, -0.4, 0]]], "interpolation": "linear"}}])";
+  const Shot blurred = loadShot(writeShot(
+      "shutter.json", faceShot(R"("blendshapes": {"jawOpen": {"keys": [[1, 0], [5, 1]], "interpolation": "linear"}})",
+                               drop, R"(, "shutter": {"open": -0.25, "close": 0.25})")));
+  const Frame frame = buildFrame(blurred, 3);
+  ASSERT_EQ(frame.spheres.size(), 1u);
+  EXPECT_TRUE(frame.spheres[0].center.isApprox(Vec3(0, -0.175f, 0), 1e-5f));
+  ASSERT_TRUE(frame.spheres[0].centerAtClose.has_value());
+  EXPECT_TRUE(frame.spheres[0].centerAtClose->isApprox(Vec3(0, -0.225f, 0), 1e-5f));
+  EXPECT_TRUE(faceMesh(frame, blurred).moves());
+  EXPECT_TRUE(frame.hasMotion());
+}
+
+TEST(AnimatedShot, StillShotWithAShutterHasNoMotion) {
+  const Shot shot = loadShot(writeShot(
+      "still_shutter.json", faceShot(R"("blendshapes": {"jawOpen": 0.3})", "", R"(, "shutter": {"open": 0, "close": 0.5})")));
+  EXPECT_FALSE(buildFrame(shot, 2).hasMotion());
+}
+
+TEST(AnimatedShot, AttachedDropFollowsTheSkin) {
+  const std::string drop =
+      R"("shapes": [{"type": "sphere", "center": [-0.0345, -0.0018, 0.0995], "radius": 0.002, "material": "water", "attach": {"asset": "face", "part": "M_Face"}}])";
+  const Shot shot = loadShot(writeShot(
+      "attached.json",
+      faceShot(R"("blendshapes": {"cheekRaiser_R": {"keys": [[1, 0], [5, 1]], "interpolation": "linear"}})", drop)));
+  ASSERT_TRUE(shot.shapes[0].attachment.has_value());
+  EXPECT_LT((shot.shapes[0].attachment->reference - Vec3(-0.0345f, -0.0018f, 0.0995f)).norm(), 2e-3f);
+  // At the first frame the drop is where it was written; later it moves with the raised cheek.
+  EXPECT_TRUE(buildFrame(shot, 1).spheres[0].center.isApprox(Vec3(-0.0345f, -0.0018f, 0.0995f), 1e-6f));
+  const Vec3 moved = buildFrame(shot, 5).spheres[0].center;
+  EXPECT_GT((moved - Vec3(-0.0345f, -0.0018f, 0.0995f)).norm(), 5e-4f) << "the cheek raiser should move the drop";
+  EXPECT_GT(moved.y(), -0.0018f) << "a cheek raiser lifts the cheek";
+}
+
+TEST(AnimatedShot, KeyedCameraIsPlacedAtEveryFrameAndBlursWithAShutter) {
+  const Shot shot = loadShot(writeShot("camera.json", faceShot("", "", "").replace(
+      faceShot("", "", "").find(R"("position": [0, 0, 0.5])"), 23,
+      R"("position": {"keys": [[1, [0, 0, 0.5]], [5, [0.4, 0, 0.5]]], "interpolation": "linear"}, "shutter": {"open": 0, "close": 1})")));
+  const Frame frame = buildFrame(shot, 3);
+  EXPECT_TRUE(frame.camera.cameraToWorld.translation().isApprox(Vec3(0.2f, 0, 0.5f), 1e-6f));
+  ASSERT_TRUE(frame.camera.cameraToWorldAtClose.has_value());
+  EXPECT_TRUE(frame.camera.cameraToWorldAtClose->translation().isApprox(Vec3(0.3f, 0, 0.5f), 1e-6f));
+}
+
+std::string firstLineOf(const std::string& s) { return s.substr(0, s.find('\n')); }
+
+// Each bad animation gives one located message; `pointerAndMessage` is what follows "file:line:col: ".
+void expectError(const std::string& name, const std::string& text, const std::string& pointerAndMessage) {
+  const auto path = writeShot(name, text);
+  std::vector<Diagnostic> diagnostics;
+  shotErrorOf(path, &diagnostics);
+  ASSERT_EQ(diagnostics.size(), 1u) << shotErrorOf(path);
+  EXPECT_EQ(diagnostics[0].jsonPath + ": " + firstLineOf(diagnostics[0].message), pointerAndMessage);
+}
+
+TEST(AnimatedShot, BadAnimationsGetExactMessages) {
+  expectError("keys_order.json", faceShot(R"("blendshapes": {"jawOpen": {"keys": [[1, 0], [1, 1]]}})"),
+              "/assets/0/blendshapes/jawOpen/keys/1/0: key frames must increase: frame 1 is not after the previous "
+              "key's frame 1");
+  expectError("interpolation.json", faceShot(R"("blendshapes": {"jawOpen": {"keys": [[1, 0]], "interpolation": "lineer"}})"),
+              "/assets/0/blendshapes/jawOpen/interpolation: unknown interpolation 'lineer'; did you mean 'linear'?");
+  expectError("weight_range.json", faceShot(R"("blendshapes": {"jawOpen": {"keys": [[1, 0], [2, 1.5]]}})"),
+              "/assets/0/blendshapes/jawOpen/keys/1/1: expected a number in [0, 1], found 1.5");
+  expectError("joints_without_rig.json", faceShot(R"("joints": {"head.ry": 3})"),
+              "/assets/0/joints: joints need a 'rig' on the asset (for example \"rig\": {\"preset\": \"ict\"})");
+  expectError("joint_name.json", faceShot(R"("rig": {"preset": "ict"}, "joints": {"head.ryy": 3})"),
+              "/assets/0/joints/head.ryy: unknown joint channel 'head.ryy'; did you mean 'head.ry'?");
+  expectError("rig_preset.json", faceShot(R"("rig": {"preset": "ictt"})"),
+              "/assets/0/rig/preset: unknown rig preset 'ictt'; did you mean 'ict'? (this version knows the ICT "
+              "face rig 'ict')");
+  expectError("control_shape.json", faceShot(R"("controls": {"sad": {"blendshapes": {"browInnerUp": 1}}})"),
+              "/assets/0/controls/sad/blendshapes/browInnerUp: unknown blendshape 'browInnerUp'; did you mean "
+              "'browInnerUp_L'?");
+  expectError("shutter.json", faceShot("", "", R"(, "shutter": {"open": 0.25, "close": -0.25})"),
+              "/camera/shutter/close: the shutter must close after it opens: close -0.25 < open 0.25");
+  expectError("attach.json",
+              faceShot("", R"("shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 0.01, "material": "water", "attach": {"asset": "face", "part": "M_Fcae"}}])"),
+              "/shapes/0/attach/part: asset 'face' has no part 'M_Fcae'; did you mean 'M_Face'?");
+}
+
+TEST(AnimatedShot, MissingPerformanceFileIsReportedAtItsKey) {
+  const auto path = writeShot("no_track.json", faceShot(R"("performance": {"file": "nope.csv"})"));
+  std::vector<Diagnostic> diagnostics;
+  shotErrorOf(path, &diagnostics);
+  ASSERT_EQ(diagnostics.size(), 1u);
+  EXPECT_EQ(diagnostics[0].jsonPath, "/assets/0/performance/file");
+  EXPECT_NE(diagnostics[0].message.find("nope.csv"), std::string::npos) << diagnostics[0].message;
+}
+
+}  // namespace
+}  // namespace lacrima
