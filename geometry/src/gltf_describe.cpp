@@ -81,6 +81,23 @@ std::string describeCameras(const GltfAsset& asset) {
   return out;
 }
 
+// One line per animation, then one per channel: what each channel drives and over which keys.
+std::string describeAnimations(const GltfAsset& asset) {
+  std::string out = fmt::format("animations: {}\n", asset.animations.size());
+  for (size_t a = 0; a < asset.animations.size(); ++a) {
+    const GltfAnimation& animation = asset.animations[a];
+    out += fmt::format("  {}: {}, {} channels, duration {:.3f} s\n", a, animation.name.empty() ? "(unnamed)" : animation.name,
+                       animation.channels.size(), animation.duration());
+    for (const GltfAnimationChannel& c : animation.channels) {
+      const std::string node = c.nodeName.empty() ? fmt::format("node {}", c.node) : c.nodeName;
+      const std::string weights = c.path == GltfAnimationPath::Weights ? fmt::format(" ({} targets)", c.valueSize) : "";
+      out += fmt::format("    {} {}{}: {} keys {}, {:.3f}..{:.3f} s\n", node, gltfAnimationPathName(c.path), weights,
+                         c.times.size(), gltfInterpolationName(c.interpolation), c.times.front(), c.times.back());
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 std::string describeGltfAsset(const GltfAsset& asset) {
@@ -91,6 +108,7 @@ std::string describeGltfAsset(const GltfAsset& asset) {
   out += describeCameras(asset);
   out += describeBounds(asset);
   out += fmt::format("landmarks: {}\n", asset.landmarks.size());
+  out += describeAnimations(asset);
   if (!asset.warnings.empty()) {
     out += fmt::format("warnings: {}\n", asset.warnings.size());
     for (const std::string& w : asset.warnings) out += "  " + w + "\n";

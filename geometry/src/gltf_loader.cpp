@@ -5,6 +5,7 @@
 // Flattening: the default scene's node tree is walked, each mesh primitive becomes one
 // GltfPrimitive in asset space (world transform applied), its morph targets become sparse
 // deltas (transformed by the linear part), and smooth normals are computed welded by position.
+// Animations are read as they are (node-local keys), validated against spec 3.11.
 #include <tiny_gltf.h>  // Debian's shared libtinygltf: never define TINYGLTF_IMPLEMENTATION here.
 
 #include <algorithm>
@@ -16,6 +17,7 @@
 #include <map>
 #include <numbers>
 #include <numeric>
+#include <optional>
 #include <set>
 #include <string>
 #include <unordered_map>
@@ -718,6 +720,207 @@ class SceneFlattener {
   std::unordered_map<int, size_t> firstPrimitiveOfNode_;
 };
 
+// ------------------------------------------------------------------------------------------
+// Animations (spec 3.11)
+// ------------------------------------------------------------------------------------------
+
+const char* accessorTypeName(int type) {
+  switch (type) {
+    case TINYGLTF_TYPE_SCALAR: return "SCALAR";
+    case TINYGLTF_TYPE_VEC2: return "VEC2";
+    case TINYGLTF_TYPE_VEC3: return "VEC3";
+    case TINYGLTF_TYPE_VEC4: return "VEC4";
+    case TINYGLTF_TYPE_MAT2: return "MAT2";
+    case TINYGLTF_TYPE_MAT3: return "MAT3";
+    case TINYGLTF_TYPE_MAT4: return "MAT4";
+    default: return "unknown";
+  }
+}
+
+std::optional<GltfAnimationPath> parseAnimationPath(const std::string& path) {
+  if (path == "translation") return GltfAnimationPath::Translation;
+  if (path == "rotation") return GltfAnimationPath::Rotation;
+  if (path == "scale") return GltfAnimationPath::Scale;
+  if (path == "weights") return GltfAnimationPath::Weights;
+  return std::nullopt;
+}
+
+std::optional<GltfInterpolation> parseInterpolation(const std::string& name) {
+  if (name == "LINEAR") return GltfInterpolation::Linear;
+  if (name == "STEP") return GltfInterpolation::Step;
+  if (name == "CUBICSPLINE") return GltfInterpolation::CubicSpline;
+  return std::nullopt;
+}
+
+// Spec 3.11.2, table of channel.target.path: the output accessor type of each path, and
+// whether normalized integers may stand in for floats (rotation and weights only).
+int outputComponentsFor(GltfAnimationPath path) {
+  switch (path) {
+    case GltfAnimationPath::Translation:
+    case GltfAnimationPath::Scale: return 3;
+    case GltfAnimationPath::Rotation: return 4;
+    case GltfAnimationPath::Weights: return 1;
+  }
+  return 0;
+}
+
+bool acceptsNormalizedIntegers(GltfAnimationPath path) {
+  return path == GltfAnimationPath::Rotation || path == GltfAnimationPath::Weights;
+}
+
+bool isSmallInteger(int componentType) {
+  return componentType == TINYGLTF_COMPONENT_TYPE_BYTE || componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+         componentType == TINYGLTF_COMPONENT_TYPE_SHORT || componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
+}
+
+// Reads and validates every animation; each channel gets its sampler's keys copied in, so a
+// channel is self-contained for evaluation (samplers are small next to meshes).
+class AnimationReader {
+ public:
+  AnimationReader(const fs::path& path, const tinygltf::Model& model) : path_(path), model_(model), reader_(path, model) {}
+
+  std::vector<GltfAnimation> readAll() const {
+    std::vector<GltfAnimation> out;
+    for (size_t a = 0; a < model_.animations.size(); ++a) out.push_back(readAnimation(a));
+    return out;
+  }
+
+ private:
+  [[noreturn]] void fail(const std::string& what) const { failFile(path_, what); }
+
+  GltfAnimation readAnimation(size_t index) const {
+    const tinygltf::Animation& source = model_.animations[index];
+    GltfAnimation out;
+    out.name = source.name;
+    const std::string animationWhat = fmt::format("animation {} ('{}')", index, source.name);
+    for (size_t c = 0; c < source.channels.size(); ++c) {
+      const std::string what = fmt::format("{}, channel {}", animationWhat, c);
+      GltfAnimationChannel channel = readChannel(source, source.channels[c], what);
+      // Spec 3.11.2: within one animation, a node property is the target of one channel only.
+      if (const GltfAnimationChannel* earlier = findChannel(out, channel.node, channel.path))
+        fail(fmt::format("{}: node {} ('{}') {} is already animated by channel {}", what, channel.node, channel.nodeName,
+                         gltfAnimationPathName(channel.path), earlier - out.channels.data()));
+      out.channels.push_back(std::move(channel));
+    }
+    return out;
+  }
+
+  GltfAnimationChannel readChannel(const tinygltf::Animation& animation, const tinygltf::AnimationChannel& source,
+                                   const std::string& what) const {
+    GltfAnimationChannel out;
+    if (source.target_node < 0 || size_t(source.target_node) >= model_.nodes.size())
+      fail(fmt::format("{}: target node {} does not exist ({} nodes)", what, source.target_node, model_.nodes.size()));
+    out.node = source.target_node;
+    out.nodeName = model_.nodes[size_t(out.node)].name;
+    const std::optional<GltfAnimationPath> path = parseAnimationPath(source.target_path);
+    if (!path)
+      fail(fmt::format("{}: unknown target path '{}' (expected translation, rotation, scale or weights)", what,
+                       source.target_path));
+    out.path = *path;
+    if (source.sampler < 0 || size_t(source.sampler) >= animation.samplers.size())
+      fail(fmt::format("{}: sampler {} does not exist ({} samplers)", what, source.sampler, animation.samplers.size()));
+    const tinygltf::AnimationSampler& sampler = animation.samplers[size_t(source.sampler)];
+    const std::string samplerWhat = fmt::format("{} (sampler {})", what, source.sampler);
+    const std::optional<GltfInterpolation> interpolation = parseInterpolation(sampler.interpolation);
+    if (!interpolation)
+      fail(fmt::format("{}: unknown interpolation '{}' (expected LINEAR, STEP or CUBICSPLINE)", samplerWhat,
+                       sampler.interpolation));
+    out.interpolation = *interpolation;
+    out.valueSize = out.path == GltfAnimationPath::Weights ? morphTargetCount(out.node, what)
+                                                            : size_t(outputComponentsFor(out.path));
+    out.times = readTimes(sampler.input, out.interpolation, samplerWhat);
+    out.values = readValues(sampler.output, out, samplerWhat);
+    return out;
+  }
+
+  // A weights channel drives the morph targets of the node's mesh (spec 3.11.2).
+  size_t morphTargetCount(int nodeIndex, const std::string& what) const {
+    const tinygltf::Node& node = model_.nodes[size_t(nodeIndex)];
+    if (node.mesh < 0) fail(fmt::format("{}: animates the weights of node {} ('{}'), which has no mesh", what, nodeIndex, node.name));
+    if (size_t(node.mesh) >= model_.meshes.size())
+      fail(fmt::format("{}: node {} ('{}') refers to mesh {}, which does not exist", what, nodeIndex, node.name, node.mesh));
+    const tinygltf::Mesh& mesh = model_.meshes[size_t(node.mesh)];
+    const size_t count = mesh.primitives.empty() ? 0 : mesh.primitives[0].targets.size();
+    if (count == 0)
+      fail(fmt::format("{}: animates the weights of node {} ('{}'), whose mesh {} ('{}') has no morph targets", what,
+                       nodeIndex, node.name, node.mesh, mesh.name));
+    return count;
+  }
+
+  // Spec 3.11.3: SCALAR float times in seconds, time[0] >= 0, strictly increasing; CUBICSPLINE
+  // needs two keys to have a segment at all.
+  std::vector<float> readTimes(int accessorIndex, GltfInterpolation interpolation, const std::string& what) const {
+    const std::string inputWhat = what + " input";
+    const tinygltf::Accessor& a = reader_.accessor(accessorIndex, inputWhat);
+    if (a.type != TINYGLTF_TYPE_SCALAR || a.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT)
+      fail(fmt::format("{}: accessor {} is {} with componentType {}; key times must be SCALAR FLOAT (5126)", inputWhat,
+                       accessorIndex, accessorTypeName(a.type), a.componentType));
+    const std::vector<double> times = reader_.readDense(accessorIndex, 1, false, inputWhat);
+    const size_t minimumKeys = interpolation == GltfInterpolation::CubicSpline ? 2 : 1;
+    if (times.size() < minimumKeys)
+      fail(fmt::format("{}: accessor {} has {} key times; {} needs at least {}", inputWhat, accessorIndex, times.size(),
+                       gltfInterpolationName(interpolation), minimumKeys));
+    for (size_t k = 0; k < times.size(); ++k) {
+      if (!std::isfinite(times[k])) fail(fmt::format("{}: key time {} is not finite", inputWhat, k));
+      if (k == 0 && times[k] < 0.0) fail(fmt::format("{}: the first key time is {} s; times must be >= 0", inputWhat, times[k]));
+      if (k > 0 && !(times[k] > times[k - 1]))
+        fail(fmt::format("{}: key times must be strictly increasing, but key {} at {} s follows {} s", inputWhat, k,
+                         times[k], times[k - 1]));
+    }
+    return std::vector<float>(times.begin(), times.end());
+  }
+
+  std::vector<float> readValues(int accessorIndex, const GltfAnimationChannel& channel, const std::string& what) const {
+    const std::string outputWhat = what + " output";
+    const tinygltf::Accessor& a = reader_.accessor(accessorIndex, outputWhat);
+    checkOutputFormat(a, accessorIndex, channel.path, outputWhat);
+    const size_t keys = channel.times.size();
+    const size_t perKey = channel.interpolation == GltfInterpolation::CubicSpline ? 3 : 1;  // in-tangent, value, out-tangent
+    const size_t elementsPerValue = channel.path == GltfAnimationPath::Weights ? channel.valueSize : 1;
+    const size_t expected = keys * perKey * elementsPerValue;
+    if (a.count != expected)
+      fail(fmt::format("{}: accessor {} has {} elements, expected {} ({} keys{}{})", outputWhat, accessorIndex, a.count,
+                       expected, keys, perKey == 3 ? " x 3 for CUBICSPLINE" : "",
+                       elementsPerValue > 1 ? fmt::format(" x {} morph targets", elementsPerValue) : ""));
+    const std::vector<double> values = reader_.readDense(accessorIndex, outputComponentsFor(channel.path), false, outputWhat);
+    for (size_t i = 0; i < values.size(); ++i)
+      if (!std::isfinite(values[i])) fail(fmt::format("{}: value {} is not finite", outputWhat, i));
+    if (channel.path == GltfAnimationPath::Rotation) rejectZeroQuaternions(values, perKey, outputWhat);
+    return std::vector<float>(values.begin(), values.end());
+  }
+
+  // Spec 3.11.2: translation and scale are FLOAT; rotation and weights may also be normalized
+  // (unsigned) byte or short, decoded by decodeComponent.
+  void checkOutputFormat(const tinygltf::Accessor& a, int index, GltfAnimationPath path, const std::string& what) const {
+    const int components = outputComponentsFor(path);
+    if (componentCount(a.type) != components)  // matrices count 0 components and land here too
+      fail(fmt::format("{}: accessor {} is {}, but a {} channel needs {}", what, index, accessorTypeName(a.type),
+                       gltfAnimationPathName(path), components == 1 ? "SCALAR" : components == 3 ? "VEC3" : "VEC4"));
+    if (a.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT) return;
+    if (!acceptsNormalizedIntegers(path))
+      fail(fmt::format("{}: accessor {} has componentType {}; {} values must be FLOAT (5126)", what, index,
+                       a.componentType, gltfAnimationPathName(path)));
+    if (!isSmallInteger(a.componentType) || !a.normalized)
+      fail(fmt::format("{}: accessor {} has componentType {}{}; {} values must be FLOAT or normalized (unsigned) byte or "
+                       "short", what, index, a.componentType, a.normalized ? "" : " without normalized",
+                       gltfAnimationPathName(path)));
+  }
+
+  // A zero quaternion has no rotation to normalize to; tangents (CUBICSPLINE) may be zero.
+  void rejectZeroQuaternions(const std::vector<double>& values, size_t perKey, const std::string& what) const {
+    for (size_t k = 0; k * perKey * 4 < values.size(); ++k) {
+      const size_t start = (k * perKey + (perKey == 3 ? 1 : 0)) * 4;
+      const double norm2 = values[start] * values[start] + values[start + 1] * values[start + 1] +
+                           values[start + 2] * values[start + 2] + values[start + 3] * values[start + 3];
+      if (norm2 == 0.0) fail(fmt::format("{}: the rotation of key {} is the zero quaternion", what, k));
+    }
+  }
+
+  const fs::path& path_;
+  const tinygltf::Model& model_;
+  AccessorReader reader_;
+};
+
 }  // namespace
 
 GltfAsset loadGltfAsset(const fs::path& path) {
@@ -726,6 +929,7 @@ GltfAsset loadGltfAsset(const fs::path& path) {
   const tinygltf::Model model = parseModel(path, asset.warnings);
   try {
     SceneFlattener(path, model, asset).run();
+    asset.animations = AnimationReader(path, model).readAll();
   } catch (const std::bad_alloc&) {
     failFile(path, "out of memory while reading (corrupt element counts?)");
   }

@@ -274,6 +274,13 @@ TEST_F(IctFace, Has68LandmarksOnTheFace) {
   EXPECT_LT(at(39).x(), 0.0f);
 }
 
+// The committed face is a static rig: its JSON has no "animations" array at all.
+TEST_F(IctFace, HasNoAnimations) {
+  EXPECT_FALSE(raw_->json.contains("animations"));
+  EXPECT_TRUE(asset_->animations.empty());
+  EXPECT_NE(describeGltfAsset(*asset_).find("animations: 0\n"), std::string::npos);
+}
+
 TEST_F(IctFace, DescriptionListsPartsTargetsAndBounds) {
   const std::string text = describeGltfAsset(*asset_);
   for (const char* expected : {"ict_face.glb", "primitives: 12", "M_Face", "9547", "18460", "M_EyeLashes",

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "lacrima/geometry/gltf_animation.hpp"
 #include "lacrima/geometry/math.hpp"
 #include "lacrima/geometry/mesh.hpp"
 
@@ -64,6 +65,7 @@ struct GltfAsset {
   std::vector<GltfCamera> cameras;
   std::vector<std::string> nodeNames;
   std::vector<Landmark> landmarks;     // nodes[0].extras.landmarks68 when present
+  std::vector<GltfAnimation> animations;  // every animation of the file, in file order
   std::vector<std::string> warnings;   // things loaded with a caveat or skipped, and why
 
   // Index of a morph target by exact name, or -1.
@@ -71,7 +73,9 @@ struct GltfAsset {
 };
 
 // Loads a .glb or .gltf file. Throws InputError naming the file for missing, truncated or
-// corrupt files, unsupported primitive modes, or accessors that point outside their buffers.
+// corrupt files, unsupported primitive modes, or accessors that point outside their buffers, and
+// naming the animation and channel for animations that break spec 3.11 (accessor types and
+// counts, key times, node / sampler indices, target paths, interpolations).
 GltfAsset loadGltfAsset(const std::filesystem::path& path);
 
 // Neutral mesh plus weighted sparse deltas: x = n + B b (seed 002, eq. 1 without skinning).
@@ -82,7 +86,7 @@ GltfAsset loadGltfAsset(const std::filesystem::path& path);
 TriangleMesh applyMorphTargets(const GltfPrimitive& primitive, const std::vector<float>& weights);
 
 // Human-readable summary for `lacrima info`: primitives with vertex/triangle counts,
-// materials, morph target names, cameras, bounding box.
+// materials, morph target names, cameras, bounding box, animations.
 std::string describeGltfAsset(const GltfAsset& asset);
 
 }  // namespace lacrima
