@@ -100,14 +100,14 @@ ExrMetadata metadataFor(const Shot& shot, const Frame& frame, const RenderStats&
 }
 
 // Renders and writes one frame; returns false when the frame failed (not written).
-bool renderOneFrame(const RenderOptions& o, const Shot& shot, const std::string& pattern, int frameNumber,
-                    int index, int count) {
+bool renderOneFrame(Renderer& renderer, const RenderOptions& o, const Shot& shot, const std::string& pattern,
+                    int frameNumber, int index, int count) {
   Frame frame = buildFrame(shot, frameNumber);
   applyOverrides(o, frame.settings);
   frame.settings.frameNumber = frameNumber;
   ProgressReporter reporter(frameNumber, index, count, o.quiet);
   RenderStats stats;
-  const Film film = renderFrame(frame, &stats, [&](const RenderProgress& p) { reporter.update(p); });
+  const Film film = renderer.render(frame, &stats, [&](const RenderProgress& p) { reporter.update(p); });
   reporter.finish();
 
   const RenderSettings& s = frame.settings;
@@ -127,8 +127,9 @@ bool renderOneFrame(const RenderOptions& o, const Shot& shot, const std::string&
     writePreviewPng(pngPath, film, previewOcioConfig(shot));
     previewNote = " + " + pngPath.filename().string();
   }
-  std::fprintf(stderr, "frame %d: %dx%d, %d spp, %s, %srays/s, %llu NaN/Inf samples discarded -> %s%s\n",
+  std::fprintf(stderr, "frame %d: %dx%d, %d spp, %s (scene %s %.3f s), %srays/s, %llu NaN/Inf samples discarded -> %s%s\n",
                frameNumber, s.width, s.height, s.samplesPerPixel, formatDuration(stats.seconds).c_str(),
+               stats.sceneUpdate == SceneUpdate::Refit ? "refit" : "build", stats.sceneUpdateSeconds,
                formatRate(stats.rays / std::max(stats.seconds, 1e-9)).c_str(),
                (unsigned long long)stats.nonFiniteSamples, exrPath.string().c_str(), previewNote.c_str());
   return true;
@@ -144,8 +145,9 @@ int runRender(const RenderOptions& o) {
     checkPreviewConfig(o, shot);
     printShotWarnings(shot);
     int failed = 0;
+    Renderer renderer;  // keeps the Embree scene from frame to frame (refit when the topology stays)
     for (size_t i = 0; i < frames.size(); ++i)
-      if (!renderOneFrame(o, shot, pattern, frames[i], int(i), int(frames.size()))) ++failed;
+      if (!renderOneFrame(renderer, o, shot, pattern, frames[i], int(i), int(frames.size()))) ++failed;
     if (failed > 0) {
       std::fprintf(stderr, "lacrima: %d of %zu frames failed\n", failed, frames.size());
       return kExitRenderFailure;
