@@ -7,6 +7,7 @@
 #include <chrono>
 
 #include "embree_scene.hpp"
+#include "lacrima/geometry/error.hpp"
 #include "lacrima/geometry/sampler.hpp"
 #include "lacrima/materials/sampling.hpp"
 #include "lacrima/renderer/camera.hpp"
@@ -89,6 +90,23 @@ RawTraceRates measureRawEmbreeThroughput(const Frame& frame) {
     rates.occludedSeconds = timeQueries(rays.bounce, occluded);
   });
   return rates;
+}
+
+SceneUpdateTimes measureSceneBuildAndRefit(const Frame& frame, const Frame& deformed) {
+  const int threads = frame.settings.threads;
+  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+  SceneUpdateTimes times;
+  arena.execute([&] {
+    const auto buildStart = std::chrono::steady_clock::now();
+    EmbreeScene scene(frame, threads);
+    times.buildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - buildStart).count();
+    if (!scene.canRefitTo(deformed, threads))
+      throw InputError("bench: the deformed frame does not have the geometry layout of the frame");
+    const auto refitStart = std::chrono::steady_clock::now();
+    scene.refitTo(deformed);
+    times.refitSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - refitStart).count();
+  });
+  return times;
 }
 
 }  // namespace lacrima

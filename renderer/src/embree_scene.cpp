@@ -37,30 +37,35 @@ RTCRay makeRay(const Vec3& origin, const Vec3& direction, float tfar, float time
 
 }  // namespace
 
-EmbreeScene::EmbreeScene(const Frame& frame, int threads) : frame_(frame) {
+EmbreeScene::EmbreeScene(const Frame& frame, int threads) : frame_(&frame), threads_(threads) {
   const std::string config = threads > 0 ? fmt::format("threads={}", threads) : std::string();
   device_ = rtcNewDevice(config.c_str());
   if (!device_) throw std::runtime_error("could not create the Embree device");
   rtcSetDeviceErrorFunction(device_, reportEmbreeError, nullptr);
   scene_ = rtcNewScene(device_);
-  rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_MEDIUM);
+  // LOW selects Embree's two-level BVH, the only one that honours a per-geometry REFIT quality;
+  // each mesh's own BVH is still a full SAH build (see addMesh).
+  rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_LOW);
   // Robust traversal: rays grazing shared edges of the face mesh must not slip through.
   rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST);
 
-  for (uint32_t i = 0; i < frame.meshes.size(); ++i)
-    addMesh(frame.meshes[i].mesh, Kind::Mesh, i, frame.meshes[i].moves() ? &frame.meshes[i].positionsAtClose : nullptr);
+  for (uint32_t i = 0; i < frame.meshes.size(); ++i) {
+    const MeshInstance& instance = frame.meshes[i];
+    meshGeometry_.push_back(addMesh(instance.mesh, Kind::Mesh, i, instance.moves() ? &instance.positionsAtClose : nullptr));
+  }
   for (uint32_t i = 0; i < frame.spheres.size(); ++i) {
     const Sphere& sphere = frame.spheres[i];
-    addSphere(sphere.center, sphere.radius, Kind::Sphere, i, sphere.centerAtClose ? &*sphere.centerAtClose : nullptr);
+    sphereGeometry_.push_back(
+        addSphere(sphere.center, sphere.radius, Kind::Sphere, i, sphere.centerAtClose ? &*sphere.centerAtClose : nullptr));
   }
-  lightMeshes_.reserve(frame.lights.size());
+  lightMeshes_.resize(frame.lights.size());
   for (uint32_t i = 0; i < frame.lights.size(); ++i) {
     const AreaLight& light = frame.lights[i];
     if (light.shape == AreaLight::Shape::Rectangle) {
-      lightMeshes_.push_back(MeshInstance{makeRectangle(light.center, light.edgeU, light.edgeV), 0});
-      addMesh(lightMeshes_.back().mesh, Kind::RectLight, i, nullptr);
+      lightMeshes_[i].mesh = makeRectangle(light.center, light.edgeU, light.edgeV);
+      lightGeometry_.push_back(addMesh(lightMeshes_[i].mesh, Kind::RectLight, i, nullptr));
     } else {
-      addSphere(light.center, light.radius, Kind::SphereLight, i, nullptr);
+      lightGeometry_.push_back(addSphere(light.center, light.radius, Kind::SphereLight, i, nullptr));
     }
   }
   rtcCommitScene(scene_);
@@ -71,12 +76,21 @@ EmbreeScene::~EmbreeScene() {
   if (device_) rtcReleaseDevice(device_);
 }
 
-void EmbreeScene::addMesh(const TriangleMesh& mesh, Kind kind, uint32_t index, const std::vector<Vec3>* positionsAtClose) {
-  if (mesh.triangleCount() == 0) return;  // nothing to hit
+unsigned EmbreeScene::addMesh(const TriangleMesh& mesh, Kind kind, uint32_t index,
+                              const std::vector<Vec3>* positionsAtClose) {
+  if (mesh.triangleCount() == 0) return kNoGeometry;  // nothing to hit
   if (positionsAtClose && positionsAtClose->size() != mesh.vertexCount())
     throw std::invalid_argument(fmt::format("mesh '{}': {} positions at shutter close for {} vertices", mesh.name,
                                             positionsAtClose->size(), mesh.vertexCount()));
   RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
+  // REFIT: the first commit is a full SAH build, later vertex-only changes refit that BVH.
+  // Still meshes are never recommitted, so they cost nothing per frame either way. (Embree
+  // rebuilds motion-blurred meshes, two time steps, in full on every change: no MB refit.)
+  // Measured with Debian's Embree 3.13.5 (lacrima bench, and a bare Embree probe on a 98k and
+  // a 720k triangle grid): a REFIT recommit takes as long as the first build, so the saving
+  // per frame is the device and buffers, not the BVH. Kept: it is the documented API, and an
+  // Embree that refits needs no change here.
+  rtcSetGeometryBuildQuality(geometry, RTC_BUILD_QUALITY_REFIT);
   // A moving mesh has two time steps (shutter open and close); Embree interpolates linearly.
   const std::vector<Vec3>* steps[2] = {&mesh.positions, positionsAtClose};
   const unsigned stepCount = positionsAtClose ? 2 : 1;
@@ -91,11 +105,12 @@ void EmbreeScene::addMesh(const TriangleMesh& mesh, Kind kind, uint32_t index, c
   std::memcpy(triangles, mesh.indices.data(), mesh.indices.size() * sizeof(uint32_t));
   rtcCommitGeometry(geometry);
   const unsigned id = rtcAttachGeometry(scene_, geometry);
-  rtcReleaseGeometry(geometry);
-  recordGeometry(id, kind, index);
+  rtcReleaseGeometry(geometry);  // the scene keeps it alive
+  recordGeometry(id, {kind, index, geometry, stepCount, mesh.vertexCount(), mesh.triangleCount()});
+  return id;
 }
 
-void EmbreeScene::addSphere(const Vec3& center, float radius, Kind kind, uint32_t index, const Vec3* centerAtClose) {
+unsigned EmbreeScene::addSphere(const Vec3& center, float radius, Kind kind, uint32_t index, const Vec3* centerAtClose) {
   RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_SPHERE_POINT);
   const Vec3* steps[2] = {&center, centerAtClose};
   const unsigned stepCount = centerAtClose ? 2 : 1;
@@ -110,13 +125,103 @@ void EmbreeScene::addSphere(const Vec3& center, float radius, Kind kind, uint32_
   }
   rtcCommitGeometry(geometry);
   const unsigned id = rtcAttachGeometry(scene_, geometry);
-  rtcReleaseGeometry(geometry);
-  recordGeometry(id, kind, index);
+  rtcReleaseGeometry(geometry);  // the scene keeps it alive
+  recordGeometry(id, {kind, index, geometry, stepCount, 1, 0});
+  return id;
 }
 
-void EmbreeScene::recordGeometry(unsigned geometryId, Kind kind, uint32_t index) {
+void EmbreeScene::recordGeometry(unsigned geometryId, const GeometryRecord& record) {
   if (records_.size() <= geometryId) records_.resize(geometryId + 1);
-  records_[geometryId] = {kind, index};
+  records_[geometryId] = record;
+}
+
+bool EmbreeScene::canRefitTo(const Frame& frame, int threads) const {
+  // Another thread count needs another Embree device.
+  if (threads != threads_ || frame.meshes.size() != meshGeometry_.size() ||
+      frame.spheres.size() != sphereGeometry_.size() || frame.lights.size() != lightGeometry_.size())
+    return false;
+  for (size_t i = 0; i < frame.meshes.size(); ++i)
+    if (!meshHasLayout(frame.meshes[i], meshGeometry_[i])) return false;
+  for (size_t i = 0; i < frame.spheres.size(); ++i)
+    if (!sphereHasLayout(frame.spheres[i].centerAtClose.has_value(), sphereGeometry_[i])) return false;
+  for (size_t i = 0; i < frame.lights.size(); ++i) {
+    const bool isRectangle = frame.lights[i].shape == AreaLight::Shape::Rectangle;
+    if (isRectangle != (records_[lightGeometry_[i]].kind == Kind::RectLight)) return false;
+  }
+  return true;
+}
+
+bool EmbreeScene::meshHasLayout(const MeshInstance& instance, unsigned geometryId) const {
+  const TriangleMesh& mesh = instance.mesh;
+  if (geometryId == kNoGeometry) return mesh.triangleCount() == 0;
+  const GeometryRecord& record = records_[geometryId];
+  if (record.vertexCount != mesh.vertexCount() || record.triangleCount != mesh.triangleCount() ||
+      record.timeSteps != (instance.moves() ? 2u : 1u))
+    return false;
+  if (instance.moves() && instance.positionsAtClose.size() != mesh.vertexCount()) return false;  // rebuild reports it
+  // The triangles Embree holds, compared in place: no copy of the previous frame's indices.
+  const void* indices = rtcGetGeometryBufferData(record.geometry, RTC_BUFFER_TYPE_INDEX, 0);
+  return std::memcmp(indices, mesh.indices.data(), mesh.indices.size() * sizeof(uint32_t)) == 0;
+}
+
+bool EmbreeScene::sphereHasLayout(bool moves, unsigned geometryId) const {
+  return records_[geometryId].kind == Kind::Sphere && records_[geometryId].timeSteps == (moves ? 2u : 1u);
+}
+
+namespace {
+
+// Copies `source` into a geometry's vertex buffer; false (and no Embree update) when unchanged.
+bool writeVertexBuffer(RTCGeometry geometry, unsigned slot, const void* source, size_t bytes) {
+  void* buffer = rtcGetGeometryBufferData(geometry, RTC_BUFFER_TYPE_VERTEX, slot);
+  if (std::memcmp(buffer, source, bytes) == 0) return false;
+  std::memcpy(buffer, source, bytes);
+  rtcUpdateGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, slot);
+  return true;
+}
+
+}  // namespace
+
+void EmbreeScene::refitTo(const Frame& frame) {
+  frame_ = &frame;
+  for (size_t i = 0; i < frame.meshes.size(); ++i) {
+    const MeshInstance& instance = frame.meshes[i];
+    moveMesh(instance.mesh, instance.moves() ? &instance.positionsAtClose : nullptr, meshGeometry_[i]);
+  }
+  for (size_t i = 0; i < frame.spheres.size(); ++i) {
+    const Sphere& sphere = frame.spheres[i];
+    moveSphere(sphere.center, sphere.radius, sphere.centerAtClose ? &*sphere.centerAtClose : nullptr, sphereGeometry_[i]);
+  }
+  for (size_t i = 0; i < frame.lights.size(); ++i) {
+    const AreaLight& light = frame.lights[i];
+    if (light.shape == AreaLight::Shape::Rectangle) {
+      lightMeshes_[i].mesh = makeRectangle(light.center, light.edgeU, light.edgeV);
+      moveMesh(lightMeshes_[i].mesh, nullptr, lightGeometry_[i]);
+    } else {
+      moveSphere(light.center, light.radius, nullptr, lightGeometry_[i]);
+    }
+  }
+  rtcCommitScene(scene_);
+}
+
+void EmbreeScene::moveMesh(const TriangleMesh& mesh, const std::vector<Vec3>* positionsAtClose, unsigned geometryId) {
+  if (geometryId == kNoGeometry) return;
+  const GeometryRecord& record = records_[geometryId];
+  const size_t bytes = record.vertexCount * 3 * sizeof(float);
+  bool changed = writeVertexBuffer(record.geometry, 0, mesh.positions.data(), bytes);
+  if (positionsAtClose) changed |= writeVertexBuffer(record.geometry, 1, positionsAtClose->data(), bytes);
+  // An uncommitted geometry keeps its BVH as it is: still meshes cost nothing.
+  if (changed) rtcCommitGeometry(record.geometry);
+}
+
+void EmbreeScene::moveSphere(const Vec3& center, float radius, const Vec3* centerAtClose, unsigned geometryId) {
+  const GeometryRecord& record = records_[geometryId];
+  const Vec3* steps[2] = {&center, centerAtClose};
+  bool changed = false;
+  for (unsigned step = 0; step < record.timeSteps; ++step) {
+    const float point[4] = {steps[step]->x(), steps[step]->y(), steps[step]->z(), radius};
+    changed |= writeVertexBuffer(record.geometry, step, point, sizeof(point));
+  }
+  if (changed) rtcCommitGeometry(record.geometry);
 }
 
 void EmbreeScene::surfaceOfMesh(const MeshInstance& instance, float time, const RTCHit& rtcHit, SurfaceHit& hit) const {
@@ -160,7 +265,7 @@ bool EmbreeScene::intersect(const Ray& ray, SurfaceHit& hit) const {
   hit.lightIndex = -1;
   switch (record.kind) {
     case Kind::Mesh: {
-      const MeshInstance& instance = frame_.meshes[record.index];
+      const MeshInstance& instance = frame_->meshes[record.index];
       surfaceOfMesh(instance, ray.time, rayHit.hit, hit);
       hit.materialId = instance.materialId;
       break;
@@ -172,15 +277,15 @@ bool EmbreeScene::intersect(const Ray& ray, SurfaceHit& hit) const {
     case Kind::Sphere:
     case Kind::SphereLight: {
       const bool isLight = record.kind == Kind::SphereLight;
-      const Vec3 center = isLight ? frame_.lights[record.index].center : frame_.spheres[record.index].centerAt(ray.time);
-      const float radius = isLight ? frame_.lights[record.index].radius : frame_.spheres[record.index].radius;
+      const Vec3 center = isLight ? frame_->lights[record.index].center : frame_->spheres[record.index].centerAt(ray.time);
+      const float radius = isLight ? frame_->lights[record.index].radius : frame_->spheres[record.index].radius;
       const Vec3 approx = ray.origin + hit.distance * ray.direction;
       const Vec3 normal = (approx - center).normalized();
       hit.position = center + radius * normal;  // reproject onto the exact surface
       hit.geometricNormal = normal;
       hit.shadingNormal = normal;
       if (isLight) hit.lightIndex = int(record.index);
-      else hit.materialId = frame_.spheres[record.index].materialId;
+      else hit.materialId = frame_->spheres[record.index].materialId;
       break;
     }
   }

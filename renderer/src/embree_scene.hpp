@@ -21,12 +21,24 @@ struct SurfaceHit {
   int lightIndex = -1;   // >= 0 when the surface is an area light (emits, does not reflect)
 };
 
+// One Embree device and scene that can follow the frames of a shot. The BVH is two-level
+// (scene build quality LOW): one BVH per geometry under a top-level BVH, which is what lets
+// Embree refit a single geometry's BVH (geometry build quality REFIT) instead of rebuilding it.
 class EmbreeScene {
  public:
   EmbreeScene(const Frame& frame, int threads);
   ~EmbreeScene();
   EmbreeScene(const EmbreeScene&) = delete;
   EmbreeScene& operator=(const EmbreeScene&) = delete;
+
+  // True when `frame` has this scene's geometry layout: the same meshes (vertex and triangle
+  // counts, identical indices), spheres and lights (count and shape), the same number of time
+  // steps for each, and the same thread count. Only then can refitTo() take it.
+  bool canRefitTo(const Frame& frame, int threads) const;
+  // Moves every vertex, sphere and light to `frame` (which must pass canRefitTo) and recommits:
+  // Embree refits the BVH of each changed mesh and rebuilds only the small top level. Hit
+  // lookups read `frame` from now on; it must outlive its use here.
+  void refitTo(const Frame& frame);
 
   bool intersect(const Ray& ray, SurfaceHit& hit) const;
   // True when anything blocks the segment origin + t * direction, 0 < t < maxDistance.
@@ -40,17 +52,29 @@ class EmbreeScene {
   struct GeometryRecord {
     Kind kind = Kind::Mesh;
     uint32_t index = 0;  // into frame meshes / spheres / lights
+    RTCGeometry geometry = nullptr;  // owned by scene_
+    unsigned timeSteps = 1;
+    size_t vertexCount = 0;
+    size_t triangleCount = 0;
   };
+  static constexpr unsigned kNoGeometry = RTC_INVALID_GEOMETRY_ID;  // a mesh without triangles
 
   // positionsAtClose / centerAtClose: null for still geometry, else the shutter-close state.
-  void addMesh(const TriangleMesh& mesh, Kind kind, uint32_t index, const std::vector<Vec3>* positionsAtClose);
-  void addSphere(const Vec3& center, float radius, Kind kind, uint32_t index, const Vec3* centerAtClose);
-  void recordGeometry(unsigned geometryId, Kind kind, uint32_t index);
+  unsigned addMesh(const TriangleMesh& mesh, Kind kind, uint32_t index, const std::vector<Vec3>* positionsAtClose);
+  unsigned addSphere(const Vec3& center, float radius, Kind kind, uint32_t index, const Vec3* centerAtClose);
+  void recordGeometry(unsigned geometryId, const GeometryRecord& record);
+  bool meshHasLayout(const MeshInstance& instance, unsigned geometryId) const;
+  bool sphereHasLayout(bool moves, unsigned geometryId) const;
+  void moveMesh(const TriangleMesh& mesh, const std::vector<Vec3>* positionsAtClose, unsigned geometryId);
+  void moveSphere(const Vec3& center, float radius, const Vec3* centerAtClose, unsigned geometryId);
   void surfaceOfMesh(const MeshInstance& instance, float time, const RTCHit& rtcHit, SurfaceHit& hit) const;
 
-  const Frame& frame_;
-  std::vector<MeshInstance> lightMeshes_;  // rectangle lights as two triangles
+  const Frame* frame_;
+  int threads_;
+  std::vector<MeshInstance> lightMeshes_;  // per light: a rectangle as two triangles, else empty
   std::vector<GeometryRecord> records_;    // indexed by Embree geomID
+  // Embree geomID of each frame mesh / sphere / light, for following the next frame.
+  std::vector<unsigned> meshGeometry_, sphereGeometry_, lightGeometry_;
   RTCDevice device_ = nullptr;
   RTCScene scene_ = nullptr;
 };

@@ -124,8 +124,28 @@ class TileRenderer {
 
 }  // namespace
 
-Film renderFrame(const Frame& frame, RenderStats* stats, const ProgressCallback& progress,
-                 const std::atomic<bool>* cancel) {
+Renderer::Renderer() = default;
+Renderer::~Renderer() = default;
+
+// Runs inside the frame's task arena: Embree's BVH builders use the calling TBB arena.
+SceneUpdate Renderer::updateScene(const Frame& frame) {
+  const int threads = frame.settings.threads;
+  try {
+    if (scene_ && scene_->canRefitTo(frame, threads)) {
+      scene_->refitTo(frame);
+      return SceneUpdate::Refit;
+    }
+    scene_.reset();  // release the old device before creating the next
+    scene_ = std::make_unique<EmbreeScene>(frame, threads);
+    return SceneUpdate::Build;
+  } catch (...) {
+    scene_.reset();  // a half-updated scene must not serve the next frame
+    throw;
+  }
+}
+
+Film Renderer::render(const Frame& frame, RenderStats* stats, const ProgressCallback& progress,
+                      const std::atomic<bool>* cancel) {
   validateFrame(frame);
   const auto start = std::chrono::steady_clock::now();
   const RenderSettings& s = frame.settings;
@@ -138,9 +158,14 @@ Film renderFrame(const Frame& frame, RenderStats* stats, const ProgressCallback&
   std::atomic<uint64_t> rays{0}, nonFinite{0};
   std::atomic<int> tilesDone{0};
   std::mutex progressMutex;
+  SceneUpdate sceneUpdate = SceneUpdate::Build;
+  double sceneUpdateSeconds = 0.0;
 
   arena.execute([&] {
-    const EmbreeScene scene(frame, s.threads);
+    const auto updateStart = std::chrono::steady_clock::now();
+    sceneUpdate = updateScene(frame);
+    sceneUpdateSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - updateStart).count();
+    const EmbreeScene& scene = *scene_;
     const LightSampler lights(frame);
     const PathIntegrator integrator(frame, scene, lights);
     const TileRenderer tiles(frame, integrator, film);
@@ -168,8 +193,16 @@ Film renderFrame(const Frame& frame, RenderStats* stats, const ProgressCallback&
     stats->cameraPaths = uint64_t(s.width) * s.height * s.samplesPerPixel;
     stats->rays = rays.load();
     stats->nonFiniteSamples = nonFinite.load();
+    stats->sceneUpdate = sceneUpdate;
+    stats->sceneUpdateSeconds = sceneUpdateSeconds;
   }
   return film;
+}
+
+Film renderFrame(const Frame& frame, RenderStats* stats, const ProgressCallback& progress,
+                 const std::atomic<bool>* cancel) {
+  Renderer renderer;
+  return renderer.render(frame, stats, progress, cancel);
 }
 
 }  // namespace lacrima

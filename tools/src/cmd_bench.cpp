@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <vector>
 
@@ -28,6 +29,20 @@ size_t triangleCount(const Frame& frame) {
   return count;
 }
 
+// The frame with every mesh vertex moved by up to 0.05 mm in a direction that varies from
+// vertex to vertex: a deformation between two frames of a face, same topology, so the Embree
+// scene can be refitted (a still frame would leave nothing to refit).
+Frame deformedCopy(const Frame& frame) {
+  Frame deformed = frame;
+  constexpr float kAmplitudeMetres = 5e-5f;
+  for (MeshInstance& instance : deformed.meshes)
+    for (size_t i = 0; i < instance.mesh.positions.size(); ++i) {
+      const float k = float(i);
+      instance.mesh.positions[i] += kAmplitudeMetres * Vec3(std::sin(k), std::cos(1.3f * k), std::sin(0.7f * k));
+    }
+  return deformed;
+}
+
 }  // namespace
 
 int runBench(const BenchOptions& o) {
@@ -43,7 +58,8 @@ int runBench(const BenchOptions& o) {
                 shotPath.c_str(), shot.frameStart, o.width, o.height, o.spp,
                 o.threads ? std::to_string(o.threads).c_str() : "all", triangleCount(frame), frame.spheres.size(),
                 o.repetitions);
-    std::vector<double> seconds, pathRates, rayRates, intersectRates, occludedRates;
+    const Frame deformed = deformedCopy(frame);
+    std::vector<double> seconds, pathRates, rayRates, intersectRates, occludedRates, buildSeconds, refitSeconds;
     for (int r = 0; r < o.repetitions; ++r) {
       RenderStats stats;
       renderFrame(frame, &stats);
@@ -53,6 +69,9 @@ int runBench(const BenchOptions& o) {
       const RawTraceRates raw = measureRawEmbreeThroughput(frame);
       intersectRates.push_back(raw.intersectRaysPerSecond());
       occludedRates.push_back(raw.occludedRaysPerSecond());
+      const SceneUpdateTimes sceneTimes = measureSceneBuildAndRefit(frame, deformed);
+      buildSeconds.push_back(sceneTimes.buildSeconds);
+      refitSeconds.push_back(sceneTimes.refitSeconds);
     }
     const double renderRays = median(rayRates), rawIntersect = median(intersectRates);
     std::printf("render seconds        %.3f (median)\n", median(seconds));
@@ -61,6 +80,10 @@ int runBench(const BenchOptions& o) {
     std::printf("raw rtcIntersect1/s   %s (camera + bounce rays, no shading)\n", formatRate(rawIntersect).c_str());
     std::printf("raw rtcOccluded1/s    %s\n", formatRate(median(occludedRates)).c_str());
     std::printf("renderer / raw ratio  %.2f\n", rawIntersect > 0 ? renderRays / rawIntersect : 0.0);
+    std::printf("scene build seconds   %.4f (median; Embree device + BVH from scratch, first frame of a shot)\n",
+                median(buildSeconds));
+    std::printf("scene refit seconds   %.4f (median; every vertex moved, BVH refitted, later frames)\n",
+                median(refitSeconds));
     return kExitOk;
   } catch (const InputError& e) {
     std::fprintf(stderr, "%s\n", e.what());

@@ -152,8 +152,8 @@ void announceStopAfterFrame(int frameNumber) {
 enum class FrameOutcome { Written, Failed, Abandoned };
 
 // Renders and writes one frame. `seconds` receives the render time (also for a failed frame).
-FrameOutcome renderOneFrame(const RenderOptions& o, const Shot& shot, const std::string& pattern, int frameNumber,
-                            int index, int count, const SequenceProgress& sequence, double& seconds) {
+FrameOutcome renderOneFrame(Renderer& renderer, const RenderOptions& o, const Shot& shot, const std::string& pattern,
+                            int frameNumber, int index, int count, const SequenceProgress& sequence, double& seconds) {
   Frame frame = buildFrame(shot, frameNumber);
   applyOverrides(o, frame.settings);
   frame.settings.frameNumber = frameNumber;
@@ -161,7 +161,7 @@ FrameOutcome renderOneFrame(const RenderOptions& o, const Shot& shot, const std:
   RenderStats stats;
   Film film;
   try {
-    film = renderFrame(
+    film = renderer.render(
         frame, &stats,
         [&](const RenderProgress& p) {
           if (stopRequested()) announceStopAfterFrame(frameNumber);
@@ -194,8 +194,9 @@ FrameOutcome renderOneFrame(const RenderOptions& o, const Shot& shot, const std:
     writePreviewPng(pngPath, film, previewOcioConfig(shot));
     previewNote = " + " + pngPath.filename().string();
   }
-  std::fprintf(stderr, "frame %d: %dx%d, %d spp, %s, %srays/s, %llu NaN/Inf samples discarded -> %s%s\n",
+  std::fprintf(stderr, "frame %d: %dx%d, %d spp, %s (scene %s %.3f s), %srays/s, %llu NaN/Inf samples discarded -> %s%s\n",
                frameNumber, s.width, s.height, s.samplesPerPixel, formatDuration(stats.seconds).c_str(),
+               stats.sceneUpdate == SceneUpdate::Refit ? "refit" : "build", stats.sceneUpdateSeconds,
                formatRate(stats.rays / std::max(stats.seconds, 1e-9)).c_str(),
                (unsigned long long)stats.nonFiniteSamples, exrPath.string().c_str(), previewNote.c_str());
   return FrameOutcome::Written;
@@ -257,6 +258,7 @@ int runRender(const RenderOptions& o) {
     if (o.resume) tally.complete = framesAlreadyComplete(o, shot, pattern, frames);
     tally.skipped = int(tally.complete.size());
     const std::vector<int> toRender = framesNotDone(frames, tally);
+    Renderer renderer;  // keeps the Embree scene from frame to frame (refit when the topology stays)
     for (size_t i = 0; i < toRender.size() && !stopRequested(); ++i) {
       const int frameNumber = toRender[i];
       const int index = int(std::find(frames.begin(), frames.end(), frameNumber) - frames.begin());
@@ -264,7 +266,7 @@ int runRender(const RenderOptions& o) {
                                       tally.meanFrameSeconds()};
       double seconds = 0;
       const FrameOutcome outcome =
-          renderOneFrame(o, shot, pattern, frameNumber, index, int(frames.size()), sequence, seconds);
+          renderOneFrame(renderer, o, shot, pattern, frameNumber, index, int(frames.size()), sequence, seconds);
       if (outcome == FrameOutcome::Abandoned) break;
       tally.renderSeconds += seconds;
       if (outcome == FrameOutcome::Written) {

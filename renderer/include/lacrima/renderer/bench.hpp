@@ -21,4 +21,14 @@ struct RawTraceRates {
 // renderer. Only the Embree calls and the ray set-up are timed.
 RawTraceRates measureRawEmbreeThroughput(const Frame& frame);
 
+struct SceneUpdateTimes {
+  double buildSeconds = 0.0;  // the Embree scene of `frame` from scratch (device included)
+  double refitSeconds = 0.0;  // then moved to `deformed` and refitted, as Renderer does
+};
+
+// Times what Renderer spends on the Embree scene of the first frame of a shot and of every
+// later frame with the same geometry layout, with frame.settings.threads threads. `deformed`
+// must have the layout of `frame` (InputError otherwise).
+SceneUpdateTimes measureSceneBuildAndRefit(const Frame& frame, const Frame& deformed);
+
 }  // namespace lacrima

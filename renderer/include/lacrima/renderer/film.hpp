@@ -21,8 +21,15 @@ struct Film {
   size_t pixelIndex(int x, int y) const { return size_t(y) * width + x; }
 };
 
+// How the Embree scene of a frame came to be: built from scratch (first frame of a Renderer,
+// or the geometry layout changed), or the previous frame's scene with its vertices moved and
+// its BVH refitted (same meshes, triangles, spheres, lights and time steps).
+enum class SceneUpdate : uint8_t { Build, Refit };
+
 // Statistics of one rendered frame.
 struct RenderStats {
+  SceneUpdate sceneUpdate = SceneUpdate::Build;
+  double sceneUpdateSeconds = 0.0;  // building or refitting the Embree scene (part of seconds)
   double seconds = 0.0;
   uint64_t cameraPaths = 0;
   uint64_t rays = 0;          // intersect + occluded queries
