@@ -2,7 +2,7 @@
 # One-command set-up for a fresh Debian 12 machine:
 #   tools/bootstrap.sh render   install missing packages, build Release, render the default shot
 #   tools/bootstrap.sh test     install missing packages, build Release, run the whole test suite
-# Environment: BUILD_DIR (default build), JOBS (default: number of cores).
+# Environment: BUILD_DIR (default build), JOBS (default: number of cores), FRAMES (render: which frames).
 set -euo pipefail
 
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -40,7 +40,8 @@ cmake --build "$build_dir" -j "$jobs"
 
 case "$mode" in
   render)
-    "$build_dir/tools/lacrima" render scenes/shots/tear_closeup.json --preview
+    # FRAMES (optional): which frames, as --frames takes them; --resume continues a stopped run.
+    "$build_dir/tools/lacrima" render scenes/shots/tear_closeup.json --preview --resume ${FRAMES:+--frames "$FRAMES"}
     ;;
   test)
     ctest --test-dir "$build_dir" --output-on-failure -j "$jobs"
