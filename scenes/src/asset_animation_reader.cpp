@@ -169,7 +169,7 @@ void readPerformance(ObjectReader& asset, ShotAsset& out, const AssetAnimationCo
   const std::filesystem::path path(*file);
   performance.file = (path.is_absolute() ? path : context.baseDir / path).lexically_normal();
   try {
-    PerformanceTrack track = resampleTrack(readPerformanceCsv(performance.file, out.gltf->targetNames, options),
+    PerformanceTrack track = resampleTrack(readPerformanceTrack(performance.file, out.gltf->targetNames, options),
                                            float(context.fps));
     performance.samples = filter ? adaptiveTemporalFilter(track.frames, *filter) : std::move(track.frames);
     for (const std::string& name : track.names) performance.targets.push_back(*indexOf(out.gltf->targetNames, name));

@@ -101,6 +101,18 @@ TEST(AnimatedShot, PerformanceTrackIsResampledToTheShotRate) {
   expectPositionsNear(faceMesh(buildFrame(shot, 4), shot).mesh.positions, expected.positions, 1e-5f);
 }
 
+TEST(AnimatedShot, PerformanceTrackInJsonWithANameMap) {
+  const auto dir = writeShot("placeholder.json", "").parent_path();
+  std::ofstream(dir / "track.json") << R"({"fps": 12, "weights": {"JawOpen": [0, 0.6]}})";
+  const Shot shot = loadShot(writeShot(
+      "performance_json.json", faceShot(R"("performance": {"file": "track.json", "nameMap": {"JawOpen": "jawOpen"}})")));
+  const GltfAsset& gltf = *shot.assets[0].gltf;
+  // 12 fps track resampled to 24 fps: frame 2 is halfway between the two samples.
+  const TriangleMesh expected =
+      applyMorphTargets(gltf.primitives[facePrimitive(gltf)], weightsWith(gltf, {{"jawOpen", 0.3f}}));
+  expectPositionsNear(faceMesh(buildFrame(shot, 2), shot).mesh.positions, expected.positions, 1e-5f);
+}
+
 TEST(AnimatedShot, ShutterGivesMovingGeometryItsPositionsAtClose) {
   const std::string drop =
       R"("shapes": [{"type": "sphere", "radius": 0.01, "material": "water", "center": {"keys": [[1, [0, 0, 0]], [5, [0, -0.4, 0]]], "interpolation": "linear"}}])";

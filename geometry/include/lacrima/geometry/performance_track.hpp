@@ -29,6 +29,18 @@ struct PerformanceCsvOptions {
 PerformanceTrack readPerformanceCsv(const std::filesystem::path& path, const std::vector<std::string>& validNames,
                                     const PerformanceCsvOptions& options = {});
 
+// The same from JSON: {"fps": 30, "weights": {"jawOpen": [...], ...}} (sample i at i / fps;
+// options.sourceFps when "fps" is absent) or {"time": [seconds...], "weights": {...}}. Errors are
+// InputError "<file>: <JSON pointer>: ..." for syntax errors, unknown keys or blendshape names
+// (with the closest valid one), non-finite numbers, times not increasing, and channels of
+// different lengths.
+PerformanceTrack readPerformanceJson(const std::filesystem::path& path, const std::vector<std::string>& validNames,
+                                     const PerformanceCsvOptions& options = {});
+
+// readPerformanceJson for a .json file, readPerformanceCsv otherwise.
+PerformanceTrack readPerformanceTrack(const std::filesystem::path& path, const std::vector<std::string>& validNames,
+                                      const PerformanceCsvOptions& options = {});
+
 // The track at targetFps from its first time to its last, by linear interpolation between the
 // samples around each output time. Throws InputError for a non-positive or non-finite fps.
 PerformanceTrack resampleTrack(const PerformanceTrack& track, float targetFps);
