@@ -32,23 +32,91 @@ std::optional<size_t> indexOf(const std::vector<std::string>& names, const std::
   return size_t(it - names.begin());
 }
 
+std::vector<std::string> partNames(const GltfAsset& gltf) {
+  std::vector<std::string> parts;
+  for (const GltfPrimitive& p : gltf.primitives)
+    if (!p.part.empty() && std::find(parts.begin(), parts.end(), p.part) == parts.end()) parts.push_back(p.part);
+  return parts;
+}
+
+// A part name of the asset at `pointer`, or nullopt (reported with the closest part).
+std::optional<std::string> readPart(Checker& c, const Json& v, const std::string& pointer, const GltfAsset& gltf) {
+  const auto part = readString(c, v, pointer);
+  if (!part) return std::nullopt;
+  const std::vector<std::string> parts = partNames(gltf);
+  if (indexOf(parts, *part)) return part;
+  c.error(pointer, Anchor::Value, unknownName("part", *part, parts));
+  return std::nullopt;
+}
+
+// [{"name": "left", "fit": "M_ScleraLeft", "parts": ["M_ScleraLeft", "M_IrisLeft"]}, ...]
+std::vector<EyeballSpec> readEyes(Checker& c, const Json& v, const std::string& pointer, const GltfAsset& gltf) {
+  std::vector<EyeballSpec> eyes;
+  if (!v.is_array()) {
+    c.error(pointer, Anchor::Value, "expected an array of eyes {\"name\", \"fit\", \"parts\"}, found " + describeValue(v));
+    return eyes;
+  }
+  for (size_t i = 0; i < v.size(); ++i) {
+    ObjectReader o(c, v[i], childPointer(pointer, i), {"name", "fit", "parts"});
+    if (!o.ok()) continue;
+    EyeballSpec eye;
+    if (auto name = o.string("name", true)) eye.name = *name;
+    if (const Json* fit = o.find("fit")) {
+      if (auto part = readPart(c, *fit, o.at("fit"), gltf)) eye.spherePart = *part;
+    } else {
+      o.missing("fit", "the part whose vertices are fitted with a sphere to find the eye's centre, e.g. the sclera");
+    }
+    if (const Json* parts = o.find("parts")) {
+      if (!parts->is_array()) o.error("parts", "expected an array of part names, found " + describeValue(*parts));
+      else
+        for (size_t k = 0; k < parts->size(); ++k)
+          if (auto part = readPart(c, (*parts)[k], childPointer(o.at("parts"), k), gltf)) eye.parts.push_back(*part);
+    } else {
+      o.missing("parts", "the parts that rotate with the gaze");
+    }
+    eyes.push_back(std::move(eye));
+  }
+  return eyes;
+}
+
+// {"preset": "ict"} and/or the rig written out: "headPivot", "jawPivot", "jawWeights" (the
+// blendshape whose delta sizes weight the jaw) and "eyes". Members override the preset's.
 void readRig(ObjectReader& asset, const Json& v, ShotAsset& out) {
   Checker& c = asset.checker();
-  ObjectReader o(c, v, asset.at("rig"), {"preset", "headPivot", "jawPivot"});
+  ObjectReader o(c, v, asset.at("rig"), {"preset", "headPivot", "jawPivot", "jawWeights", "eyes"});
   if (!o.ok()) return;
-  const auto preset = o.string("preset", true);
-  if (!preset) return;
-  if (*preset != "ict") {
+  const size_t before = c.errorCount();
+  FaceRigConfig config;
+  const auto preset = o.string("preset");
+  if (preset && *preset != "ict") {
     o.error("preset", unknownName("rig preset", *preset, {"ict"}) + " (this version knows the ICT face rig 'ict')");
     return;
   }
+  if (!preset) {
+    if (!o.has("headPivot")) o.missing("headPivot", "a point: the head rotates about it (or give \"preset\")");
+    if (!o.has("jawPivot")) o.missing("jawPivot", "a point: the jaw hinge (or give \"preset\")");
+  }
+  if (const Json* w = o.find("jawWeights")) {
+    if (auto name = readString(c, *w, o.at("jawWeights"))) {
+      if (indexOf(out.gltf->targetNames, *name)) config.jawWeightTarget = *name;
+      else c.error(o.at("jawWeights"), Anchor::Value, unknownName("blendshape", *name, out.gltf->targetNames));
+    }
+  }
+  std::vector<EyeballSpec> eyes;
+  if (const Json* e = o.find("eyes")) eyes = readEyes(c, *e, o.at("eyes"), *out.gltf);
+  const auto headPivot = o.vec3("headPivot");
+  const auto jawPivot = o.vec3("jawPivot");
+  if (c.errorCount() != before) return;
   try {
-    FaceRigConfig config = ictFaceRigConfig(*out.gltf);
-    if (auto p = o.vec3("headPivot")) config.headPivot = *p;
-    if (auto p = o.vec3("jawPivot")) config.jawPivot = *p;
+    if (preset) config = ictFaceRigConfig(*out.gltf);
+    if (const Json* w = o.find("jawWeights")) config.jawWeightTarget = w->get<std::string>();
+    if (headPivot) config.headPivot = *headPivot;
+    if (jawPivot) config.jawPivot = *jawPivot;
+    if (o.has("eyes")) config.eyes = eyes;
     out.rig = std::make_shared<const FaceRig>(*out.gltf, std::move(config));
   } catch (const InputError& e) {
-    o.error("preset", fmt::format("cannot build the '{}' rig on asset '{}': {}", *preset, out.name, e.what()));
+    o.error(preset ? "preset" : "headPivot", fmt::format("cannot build the rig of asset '{}': {}", out.name, e.what()),
+            Anchor::Key);
   }
 }
 

@@ -89,6 +89,24 @@ TEST(AnimatedShot, RigJointsPoseTheFaceAsTheRigDoes) {
   expectPositionsNear(faceMesh(buildFrame(shot, 3), shot).mesh.positions, expected.positions, 1e-6f);
 }
 
+TEST(AnimatedShot, ARigWrittenOutInTheShotPosesLikeTheSameConfig) {
+  const Shot shot = loadShot(writeShot("custom_rig.json", faceShot(R"("rig": {"headPivot": [0, -0.1, 0.05],
+      "jawPivot": [0, -0.01, 0.02], "eyes": [{"name": "right", "fit": "M_ScleraRight", "parts": ["M_ScleraRight", "M_IrisRight"]}]},
+      "joints": {"head.rz": 5, "eye.right.ry": 10})")));
+  const GltfAsset& gltf = *shot.assets[0].gltf;
+  FaceRigConfig config;
+  config.headPivot = Vec3(0, -0.1f, 0.05f);
+  config.jawPivot = Vec3(0, -0.01f, 0.02f);
+  config.eyes = {{"right", "M_ScleraRight", {"M_ScleraRight", "M_IrisRight"}}};
+  const FaceRig rig(gltf, config);
+  FacePose pose;
+  pose.head.eulerDegrees = Vec3(0, 0, 5);
+  pose.eyeEulerDegrees = {Vec3(0, 10, 0)};
+  const Frame frame = buildFrame(shot, 1);
+  expectPositionsNear(faceMesh(frame, shot).mesh.positions, rig.evaluatePrimitive(facePrimitive(gltf), pose).positions,
+                      1e-6f);
+}
+
 TEST(AnimatedShot, PerformanceTrackIsResampledToTheShotRate) {
   const auto dir = writeShot("placeholder.json", "").parent_path();
   std::ofstream(dir / "track.csv") << "time,jawOpen,eyeBlink_L\n0,0,1\n1,0.6,0\n";
@@ -185,6 +203,11 @@ TEST(AnimatedShot, BadAnimationsGetExactMessages) {
   expectError("rig_preset.json", faceShot(R"("rig": {"preset": "ictt"})"),
               "/assets/0/rig/preset: unknown rig preset 'ictt'; did you mean 'ict'? (this version knows the ICT "
               "face rig 'ict')");
+  expectError("rig_pivots.json", faceShot(R"("rig": {"jawPivot": [0, 0, 0]})"),
+              "/assets/0/rig: missing required key 'headPivot' (a point: the head rotates about it (or give \"preset\"))");
+  expectError("rig_eye_part.json",
+              faceShot(R"("rig": {"preset": "ict", "eyes": [{"name": "l", "fit": "M_ScleraLeft", "parts": ["M_IrisLft"]}]})"),
+              "/assets/0/rig/eyes/0/parts/0: unknown part 'M_IrisLft'; did you mean 'M_IrisLeft'?");
   expectError("control_shape.json", faceShot(R"("controls": {"sad": {"blendshapes": {"browInnerUp": 1}}})"),
               "/assets/0/controls/sad/blendshapes/browInnerUp: unknown blendshape 'browInnerUp'; did you mean "
               "'browInnerUp_L'?");
