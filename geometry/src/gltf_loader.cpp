@@ -384,9 +384,17 @@ class SceneFlattener {
 
   void run() {
     rejectUnsupportedExtensions();
-    for (const tinygltf::Node& node : model_.nodes) asset_.nodeNames.push_back(node.name);
+    for (const tinygltf::Node& node : model_.nodes) {
+      asset_.nodeNames.push_back(node.name);
+      GltfNode out;
+      out.name = node.name;
+      out.mesh = node.mesh;
+      asset_.nodes.push_back(std::move(out));
+    }
+    visited_.assign(model_.nodes.size(), false);
+    warnedParents_.assign(model_.nodes.size(), false);
     std::vector<bool> onPath(model_.nodes.size(), false);
-    for (int root : sceneRoots()) visitNode(root, Affine3d::Identity(), onPath, "scene root");
+    for (int root : sceneRoots()) visitNode(root, -1, Affine3d::Identity(), onPath, "scene root");
     for (GltfPrimitive& p : asset_.primitives) p.targets.resize(asset_.targetNames.size());
     readLandmarks();
   }
@@ -453,17 +461,45 @@ class SceneFlattener {
     return t;  // T * R * S, as glTF specifies
   }
 
-  void visitNode(int index, const Affine3d& parent, std::vector<bool>& onPath, const std::string& referrer) {
+  // The rest pose of a node for animation playback (localTransform has checked its numbers).
+  void recordRestPose(const tinygltf::Node& node, GltfNode& out, const Affine3d& local) const {
+    out.matrix = local.cast<float>();
+    out.hasMatrix = !node.matrix.empty();
+    if (out.hasMatrix) return;
+    if (!node.translation.empty())
+      out.trs.translation = Vec3(float(node.translation[0]), float(node.translation[1]), float(node.translation[2]));
+    if (!node.rotation.empty())
+      out.trs.rotation = Eigen::Quaterniond(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2])
+                             .normalized()
+                             .cast<float>();
+    if (!node.scale.empty()) out.trs.scale = Vec3(float(node.scale[0]), float(node.scale[1]), float(node.scale[2]));
+  }
+
+  void visitNode(int index, int parentIndex, const Affine3d& parent, std::vector<bool>& onPath,
+                 const std::string& referrer) {
     if (index < 0 || size_t(index) >= model_.nodes.size())
       fail(fmt::format("{} refers to node {}, which does not exist ({} nodes)", referrer, index, model_.nodes.size()));
     if (onPath[size_t(index)]) fail(fmt::format("node {} is its own ancestor (cycle in the node hierarchy)", index));
     if (++visits_ > kMaxNodeVisits) fail("node hierarchy is too large (shared subtrees expand to over a million nodes)");
     const tinygltf::Node& node = model_.nodes[size_t(index)];
-    const Affine3d world = parent * localTransform(node, index);
+    const Affine3d local = localTransform(node, index);
+    const Affine3d world = parent * local;
+    GltfNode& record = asset_.nodes[size_t(index)];
+    if (!visited_[size_t(index)]) {
+      visited_[size_t(index)] = true;
+      record.parent = parentIndex;
+      recordRestPose(node, record, local);
+    } else if (record.parent != parentIndex && !warnedParents_[size_t(index)]) {
+      warnedParents_[size_t(index)] = true;
+      asset_.warnings.push_back(fmt::format("node {} ('{}') has more than one parent (not valid glTF); animations "
+                                            "move all its instances as the one under node {}",
+                                            index, node.name, record.parent));
+    }
     if (node.mesh >= 0) addMeshInstance(node, index, world);
     if (node.camera >= 0) addCamera(node, index, world);
     onPath[size_t(index)] = true;
-    for (int child : node.children) visitNode(child, world, onPath, fmt::format("node {} ('{}')", index, node.name));
+    for (int child : node.children)
+      visitNode(child, index, world, onPath, fmt::format("node {} ('{}')", index, node.name));
     onPath[size_t(index)] = false;
   }
 
@@ -567,9 +603,12 @@ class SceneFlattener {
         fail(fmt::format("mesh {} ('{}'): primitives have different numbers of morph targets", node.mesh, mesh.name));
     }
     const std::vector<int>& slots = targetSlots(node.mesh);
+    asset_.nodes[size_t(nodeIndex)].targetSlots = slots;
     firstPrimitiveOfNode_.try_emplace(nodeIndex, asset_.primitives.size());
-    for (size_t k = 0; k < mesh.primitives.size(); ++k)
+    for (size_t k = 0; k < mesh.primitives.size(); ++k) {
       asset_.primitives.push_back(flattenPrimitive(mesh, node.mesh, k, world, slots));
+      asset_.primitives.back().node = nodeIndex;
+    }
   }
 
   GltfPrimitive flattenPrimitive(const tinygltf::Mesh& mesh, int meshIndex, size_t k, const Affine3d& world,
@@ -594,7 +633,9 @@ class SceneFlattener {
     computeSmoothNormals(out.mesh, out.weldMap);
 
     const Mat3 linear = out.nodeTransform.linear();
-    out.targets.resize(slots.size());
+    // Asset-wide slots can exceed this mesh's target count (a later mesh adds new names); run()
+    // pads every primitive to the final targetNames.size() afterwards.
+    out.targets.resize(slots.empty() ? 0 : size_t(*std::max_element(slots.begin(), slots.end())) + 1);
     for (size_t t = 0; t < p.targets.size(); ++t)
       out.targets[size_t(slots[t])] = readMorphTarget(p.targets[t], out.mesh.vertexCount(), linear,
                                                       fmt::format("{} '{}', morph target {}", what, out.part, t));
@@ -715,6 +756,8 @@ class SceneFlattener {
   GltfAsset& asset_;
   AccessorReader reader_;
   size_t visits_ = 0;
+  std::vector<bool> visited_;  // per node: met while walking the default scene
+  std::vector<bool> warnedParents_;  // per node: the "more than one parent" warning was given
   std::unordered_map<std::string, int> targetIndex_;
   std::unordered_map<int, std::vector<int>> targetSlotsByMesh_;
   std::unordered_map<int, size_t> firstPrimitiveOfNode_;

@@ -248,6 +248,56 @@ void readPerformance(ObjectReader& asset, ShotAsset& out, const AssetAnimationCo
   out.performance = std::move(performance);
 }
 
+// "animation": {"name" or "index", "startFrame", "speed", "loop"}: one of the glTF file's animations.
+void readGltfAnimation(ObjectReader& asset, ShotAsset& out, const AssetAnimationContext& context) {
+  Checker& c = asset.checker();
+  ObjectReader o(c, *asset.find("animation"), asset.at("animation"), {"name", "index", "startFrame", "speed", "loop"});
+  if (!o.ok()) return;
+  const size_t before = c.errorCount();
+  ShotGltfAnimation playback;
+  playback.fps = context.fps;
+  playback.startFrame = context.frameStart;
+  if (auto x = o.number("startFrame", Range::any())) playback.startFrame = *x;
+  if (auto x = o.number("speed", Range::above(0))) playback.speed = *x;
+  if (auto x = o.boolean("loop")) playback.loop = *x;
+  const auto name = o.string("name");
+  const auto index = o.unsignedInteger("index");
+  const std::vector<GltfAnimation>& animations = out.gltf->animations;
+  std::vector<std::string> names;
+  for (const GltfAnimation& a : animations) names.push_back(a.name);
+  if (animations.empty()) {
+    asset.error("animation", fmt::format("asset '{}' has no glTF animations ({} defines none)", out.name,
+                                         out.file.filename().string()),
+                Anchor::Key);
+    return;
+  }
+  if (o.has("name") && o.has("index")) {
+    o.error("index", "give the animation's 'name' or its 'index', not both", Anchor::Key);
+    return;
+  }
+  if (name) {
+    const auto found = indexOf(names, *name);
+    if (!found) {
+      o.error("name", unknownName("glTF animation", *name, names));
+      return;
+    }
+    playback.index = *found;
+  } else if (index) {
+    if (*index >= animations.size()) {
+      o.error("index", fmt::format("animation index {} does not exist (asset '{}' has {} animation{})", *index, out.name,
+                                   animations.size(), animations.size() == 1 ? "" : "s"));
+      return;
+    }
+    playback.index = size_t(*index);
+  } else if (!o.has("name") && !o.has("index")) {
+    o.missing("name", "the glTF animation to play, or its 'index'");
+    return;
+  }
+  if (c.errorCount() != before) return;
+  playback.duration = animations[playback.index].duration();
+  out.gltfAnimation = playback;
+}
+
 }  // namespace
 
 void readAssetAnimation(ObjectReader& o, ShotAsset& asset, const AssetAnimationContext& context) {
@@ -262,6 +312,7 @@ void readAssetAnimation(ObjectReader& o, ShotAsset& asset, const AssetAnimationC
   }
   if (o.find("controls")) readControls(o, asset);
   if (o.find("performance")) readPerformance(o, asset, context);
+  if (o.find("animation")) readGltfAnimation(o, asset, context);
 }
 
 }  // namespace lacrima::shotfile

@@ -1,5 +1,6 @@
 #pragma once
-// The animation members of a shot asset: "rig", "joints", "controls" and "performance"
+// The animation members of a shot asset: "rig", "joints", "controls", "performance" and
+// "animation"
 // (docs/shot-format.md, "Animating a face").
 #include <filesystem>
 

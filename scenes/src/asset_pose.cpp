@@ -35,19 +35,29 @@ void addDrivenPose(const ShotAsset& asset, double frame, FacePose& pose) {
 
 }  // namespace
 
-FacePose assetPoseAt(const ShotAsset& asset, double frame) {
-  FacePose pose;
+AssetPose assetPoseAt(const ShotAsset& asset, double frame) {
+  AssetPose out;
+  FacePose& pose = out.face;
   pose.blendshapeWeights = asset.weights;
   for (const AssetChannel& c : asset.animatedBlendshapes) pose.blendshapeWeights[c.index] = c.value.at(frame);
   if (asset.controls) addDrivenPose(asset, frame, pose);
   if (asset.performance) asset.performance->addWeightsAt(frame, pose.blendshapeWeights);
+  if (asset.gltfAnimation) {
+    const ShotGltfAnimation& playback = *asset.gltfAnimation;
+    const GltfAnimationSample sample =
+        sampleGltfAnimation(*asset.gltf, asset.gltf->animations.at(playback.index), playback.secondsAt(frame));
+    for (size_t i = 0; i < sample.weights.size() && i < pose.blendshapeWeights.size(); ++i)
+      pose.blendshapeWeights[i] += sample.weights[i];
+    if (sample.anyPrimitiveMoves) out.primitiveMotion = sample.primitiveMotion;
+  }
   for (float& w : pose.blendshapeWeights) w = std::clamp(w, 0.0f, 1.0f);
   for (const AssetChannel& c : asset.joints) addJointChannel(pose, c.index, c.value.at(frame));
   if (asset.rig) pose.eyeEulerDegrees.resize(asset.rig->config().eyes.size(), Vec3::Zero());
-  return pose;
+  return out;
 }
 
-TriangleMesh posedPrimitive(const ShotAsset& asset, const FacePose& pose, size_t index) {
+TriangleMesh posedPrimitive(const ShotAsset& asset, const AssetPose& assetPose, size_t index) {
+  const FacePose& pose = assetPose.face;
   const GltfPrimitive& primitive = asset.gltf->primitives[index];
   TriangleMesh mesh;
   if (asset.rig) {
@@ -57,6 +67,9 @@ TriangleMesh posedPrimitive(const ShotAsset& asset, const FacePose& pose, size_t
     const bool morphed = std::any_of(w.begin(), w.end(), [](float x) { return x != 0.0f; });
     mesh = morphed ? applyMorphTargets(primitive, w) : primitive.mesh;
   }
+  if (index < assetPose.primitiveMotion.size() &&
+      assetPose.primitiveMotion[index].matrix() != Affine3::Identity().matrix())
+    transformMesh(mesh, assetPose.primitiveMotion[index]);
   transformMesh(mesh, asset.transform.matrix());
   mesh.name = asset.name + "/" + primitive.name;
   return mesh;

@@ -33,7 +33,7 @@ PosedAssets poseAssets(const Shot& shot, double frame, const PosedAssets* still)
   for (size_t a = 0; a < shot.assets.size(); ++a) {
     const ShotAsset& asset = shot.assets[a];
     if (still && !asset.animated()) continue;  // at shutter close only what moves is posed again
-    const FacePose pose = assetPoseAt(asset, frame);
+    const shotfile::AssetPose pose = assetPoseAt(asset, frame);
     for (size_t i = 0; i < asset.gltf->primitives.size(); ++i) posed[a].push_back(posedPrimitive(asset, pose, i));
   }
   return posed;

@@ -416,7 +416,7 @@ class ShotReader {
   void readAsset(const Json& v, const std::string& pointer) {
     ObjectReader o(c_, v, pointer,
                    {"name", "file", "transform", "materials", "blendshapes", "hide", "rig", "joints", "controls",
-                    "performance"});
+                    "performance", "animation"});
     if (!o.ok()) return;
     ShotAsset asset;
     const auto file = o.string("file", true);

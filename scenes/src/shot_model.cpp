@@ -2,6 +2,7 @@
 #include "lacrima/scenes/shot.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace lacrima {
 
@@ -19,9 +20,19 @@ std::vector<Material> Shot::frameMaterials() const {
 
 bool ShotAsset::animated() const {
   const auto keyed = [](const AssetChannel& c) { return c.value.animated(); };
-  return performance.has_value() || std::any_of(animatedBlendshapes.begin(), animatedBlendshapes.end(), keyed) ||
+  return performance.has_value() || gltfAnimation.has_value() || std::any_of(animatedBlendshapes.begin(), animatedBlendshapes.end(), keyed) ||
          std::any_of(joints.begin(), joints.end(), keyed) ||
          std::any_of(controlValues.begin(), controlValues.end(), keyed);
+}
+
+double ShotGltfAnimation::secondsAt(double frame) const {
+  const double t = speed * (frame - startFrame) / fps;
+  if (!(duration > 0.0)) return 0.0;
+  if (loop) {
+    const double wrapped = std::fmod(t, duration);
+    return wrapped < 0.0 ? wrapped + duration : wrapped;
+  }
+  return std::clamp(t, 0.0, duration);
 }
 
 void ShotPerformance::addWeightsAt(double frame, std::vector<float>& weights) const {

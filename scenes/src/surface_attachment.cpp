@@ -50,7 +50,7 @@ Vec3 pointOnTriangle(const TriangleMesh& mesh, uint32_t triangle, const Vec3& ba
 // The nearest surface point of the part's primitives to `target`.
 ShotShape::Attachment nearestOnPart(const Shot& shot, size_t assetIndex, const std::string& part, const Vec3& target) {
   const ShotAsset& asset = shot.assets[assetIndex];
-  const FacePose pose = assetPoseAt(asset, double(shot.frameStart));
+  const AssetPose pose = assetPoseAt(asset, double(shot.frameStart));
   ShotShape::Attachment best;
   best.asset = assetIndex;
   float bestDistance2 = std::numeric_limits<float>::infinity();

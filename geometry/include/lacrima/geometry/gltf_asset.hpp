@@ -40,6 +40,7 @@ struct GltfPrimitive {
   GltfMaterialInfo material;
   std::vector<SparseDelta> targets;  // one per morph target (asset target order); may be empty deltas
   Affine3 nodeTransform = Affine3::Identity();  // already applied to mesh; kept to transform deltas
+  int node = -1;  // index into GltfAsset::nodes of the node that instanced this primitive
   // findCoincidentVertices of the neutral mesh: keeps UV seams welded when morphs recompute normals.
   std::vector<uint32_t> weldMap;
 };
@@ -58,12 +59,31 @@ struct GltfCamera {
   float aspectRatio = 0.0f;  // 0 when unspecified
 };
 
+// One node of the file, as animation playback needs it (sampleGltfAnimation).
+struct GltfNode {
+  std::string name;  // "" if unnamed
+  // The node that lists this one among its children; -1 for roots and for nodes outside the
+  // default scene's tree. glTF allows one parent per node; should a file share a subtree
+  // anyway, the first parent met while walking the scene is kept (and a warning says so).
+  int parent = -1;
+  int mesh = -1;  // glTF mesh index, -1 for none
+  // The rest pose (the file's own transform). A node given by a matrix keeps it in `matrix` and
+  // identity TRS; for TRS nodes matrix == trs.matrix().
+  bool hasMatrix = false;
+  NodeTrs trs;
+  Affine3 matrix = Affine3::Identity();
+  // For a node with a mesh in the default scene: the asset-wide index (into
+  // GltfAsset::targetNames) of each morph target of its mesh, in the mesh's target order.
+  std::vector<int> targetSlots;
+};
+
 struct GltfAsset {
   std::filesystem::path path;
   std::vector<GltfPrimitive> primitives;
   std::vector<std::string> targetNames;  // morph target names (meshes[i].extras.targetNames)
   std::vector<GltfCamera> cameras;
   std::vector<std::string> nodeNames;
+  std::vector<GltfNode> nodes;         // every node of the file, in file order (nodeNames[i] == nodes[i].name)
   std::vector<Landmark> landmarks;     // nodes[0].extras.landmarks68 when present
   std::vector<GltfAnimation> animations;  // every animation of the file, in file order
   std::vector<std::string> warnings;   // things loaded with a caveat or skipped, and why
@@ -84,6 +104,27 @@ GltfAsset loadGltfAsset(const std::filesystem::path& path);
 // this primitive; otherwise the result is bitwise the neutral mesh. A non-finite weight throws
 // InputError.
 TriangleMesh applyMorphTargets(const GltfPrimitive& primitive, const std::vector<float>& weights);
+
+// An animation evaluated at one time, for a whole asset.
+struct GltfAnimationSample {
+  // Indexed like GltfAsset::targetNames. Only weights channels contribute: a target no channel
+  // drives stays 0 (mesh.weights / node.weights defaults are not applied). When several nodes'
+  // weights channels drive the same asset-wide target (the same name in several meshes), the
+  // channel listed last in the animation wins. ICT-style assets have one mesh.
+  std::vector<float> weights;
+  // Per primitive: animatedWorld * restWorld^-1 of its node (the rest world transform is what the
+  // loader already applied to the primitive), so that applying it to the flattened primitive
+  // gives the animated pose. Exactly the identity when no node on the primitive's path to the
+  // root is animated by a translation, rotation or scale channel.
+  std::vector<Affine3> primitiveMotion;
+  // True when some primitive's motion is not the identity.
+  bool anyPrimitiveMoves = false;
+};
+
+// `animation` (one of asset.animations) at `seconds` (held at the first / last key outside the
+// keys). A node given by a matrix that an animation targets anyway (glTF forbids it) starts from
+// identity TRS for the properties without a channel. Throws InputError for a non-finite time.
+GltfAnimationSample sampleGltfAnimation(const GltfAsset& asset, const GltfAnimation& animation, double seconds);
 
 // Human-readable summary for `lacrima info`: primitives with vertex/triangle counts,
 // materials, morph target names, cameras, bounding box, animations.

@@ -78,6 +78,19 @@ struct ShotPerformance {
   void addWeightsAt(double frame, std::vector<float>& weights) const;
 };
 
+// One of the asset's glTF animations played in the shot ("animation" member of an asset).
+struct ShotGltfAnimation {
+  size_t index = 0;         // into gltf->animations
+  double startFrame = 1.0;  // the shot frame at which the animation's time 0 plays
+  double speed = 1.0;       // > 0
+  bool loop = false;        // wrap instead of holding the last pose
+  double fps = 24.0;        // the shot's frame rate
+  double duration = 0.0;    // GltfAnimation::duration(), seconds
+
+  // speed * (frame - startFrame) / fps, clamped to [0, duration], or wrapped into it with loop.
+  double secondsAt(double frame) const;
+};
+
 struct ShotEnvironment {
   std::filesystem::path file;  // resolved
   float intensity = 1.0f;
@@ -107,6 +120,9 @@ struct ShotAsset {
   std::shared_ptr<const FaceControls> controls;  // null when the asset declares none
   std::vector<AssetChannel> controlValues;       // index into controls->controls()
   std::optional<ShotPerformance> performance;
+  // A glTF animation of the asset: its weights add to the other sources (then clamped), its
+  // node motion moves the primitives before the asset transform.
+  std::optional<ShotGltfAnimation> gltfAnimation;
   // True when the asset's shape changes over the shot's frames.
   bool animated() const;
   // Per primitive of gltf: index into the frame's material list (Shot::frameMaterials()),
