@@ -803,6 +803,13 @@ class SceneFlattener {
       for (SparseDelta& target : p.targets)
         for (size_t i = 0; i < target.vertices.size(); ++i)
           target.deltas[i] = (linear[target.vertices[i]] * target.deltas[i].cast<double>()).cast<float>();
+      // As transformMesh does for mirrored node transforms: a triangle whose corners are mostly
+      // mirrored by the rest skin gets its winding flipped back.
+      for (size_t t = 0; t + 2 < p.mesh.indices.size(); t += 3) {
+        int mirrored = 0;
+        for (size_t c = 0; c < 3; ++c) mirrored += linear[p.mesh.indices[t + c]].determinant() < 0.0 ? 1 : 0;
+        if (mirrored >= 2) std::swap(p.mesh.indices[t + 1], p.mesh.indices[t + 2]);
+      }
       p.weldMap = findCoincidentVertices(p.mesh);
       computeSmoothNormals(p.mesh, p.weldMap);
     }

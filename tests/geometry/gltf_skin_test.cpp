@@ -119,6 +119,37 @@ TEST(GltfSkin, AnimationWithoutJointChannelsLeavesTheSkinAlone) {
   EXPECT_THROW(applyGltfSkin(asset, asset.primitives[0], {}, mesh), std::invalid_argument) << "no joint matrices";
 }
 
+TEST(GltfSkin, NormalizedByteWeightsAndShortJointsAreRead) {
+  test::GltfBuilder b = test::skinnedStrip();
+  nlohmann::json& attributes = b.json()["meshes"][0]["primitives"][0]["attributes"];
+  attributes["JOINTS_0"] = b.addAccessorOf(std::vector<uint16_t>{0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0},
+                                           5123, "VEC4");
+  attributes["WEIGHTS_0"] = b.addAccessorOf(
+      std::vector<uint8_t>{255, 0, 0, 0, 255, 0, 0, 0, 100, 100, 0, 0, 128, 128, 0, 0, 255, 0, 0, 0, 255, 0, 0, 0}, 5121, "VEC4",
+      true);
+  const auto path = test::testOutputDir() / "skin_bytes.glb";
+  b.write(path);
+  const GltfAsset asset = loadGltfAsset(path);
+  const GltfPrimitive& p = asset.primitives.at(0);
+  EXPECT_EQ(p.skinJoints[3][1], 1);
+  EXPECT_NEAR(p.skinWeights[2][0], 0.5f, 1e-7f);
+  EXPECT_NEAR(p.skinWeights[3][1], 0.5f, 1e-7f);
+  expectPositions(p.mesh.positions, kRest, 1e-6f);
+}
+
+TEST(GltfSkin, MirroringRestSkinKeepsTheWindingAgreeingWithTheNormals) {
+  test::SkinnedStripOptions o;
+  o.mirrorX = true;
+  const GltfAsset asset = loadStrip(o);
+  const GltfPrimitive& p = asset.primitives.at(0);
+  // x is mirrored before the translations: vertex 1 (1, 0, 0) -> (-1, 0, 0) + (1, 1, 0).
+  expectPositions({p.mesh.positions[1]}, {Vec3(0, 1, 0)});
+  // A mirror keeps the +z normal of the strip (covector), so the winding must be flipped back.
+  EXPECT_LT((p.mesh.normals[0] - Vec3(0, 0, 1)).norm(), 1e-6f) << p.mesh.normals[0].transpose();
+  EXPECT_EQ(p.mesh.indices[1], 3u);
+  EXPECT_EQ(p.mesh.indices[2], 1u);
+}
+
 std::string loadError(const test::SkinnedStripOptions& options, const std::string& name) {
   const auto path = writeStrip(options, name);
   try {

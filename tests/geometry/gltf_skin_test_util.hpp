@@ -22,6 +22,7 @@ struct SkinnedStripOptions {
   std::vector<float> weights = {1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0};
   size_t inverseBindMatrices = 2;  // how many to write (the skin has 2 joints)
   bool withAnimation = true;
+  bool mirrorX = false;  // both inverse bind matrices also mirror x (scale (-1, 1, 1) applied first)
 };
 
 inline GltfBuilder skinnedStrip(const SkinnedStripOptions& o = {}) {
@@ -35,8 +36,9 @@ inline GltfBuilder skinnedStrip(const SkinnedStripOptions& o = {}) {
   primitive["attributes"]["JOINTS_0"] = b.addAccessorOf(o.joints, 5121, "VEC4");
   primitive["attributes"]["WEIGHTS_0"] = b.addAccessor(o.weights, "VEC4");
   // Column-major 4x4 translations.
-  const auto translation = [](float x, float y, float z) {
-    return std::vector<float>{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, x, y, z, 1};
+  const float sx = o.mirrorX ? -1.0f : 1.0f;
+  const auto translation = [sx](float x, float y, float z) {
+    return std::vector<float>{sx, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, x, y, z, 1};
   };
   std::vector<float> ibm = translation(0, 1, 0);
   const std::vector<float> knee = translation(0, -2, 0);
