@@ -5,6 +5,8 @@
 // Flattening: the default scene's node tree is walked, each mesh primitive becomes one
 // GltfPrimitive in asset space (world transform applied), its morph targets become sparse
 // deltas (transformed by the linear part), and smooth normals are computed welded by position.
+// Skinned primitives (spec 3.7.3) ignore their node: after the walk, bakeSkinnedRestPoses()
+// places them vertex by vertex in the skin's rest pose.
 // Animations are read as they are (node-local keys), validated against spec 3.11.
 #include <tiny_gltf.h>  // Debian's shared libtinygltf: never define TINYGLTF_IMPLEMENTATION here.
 
