@@ -5,6 +5,8 @@
 // Flattening: the default scene's node tree is walked, each mesh primitive becomes one
 // GltfPrimitive in asset space (world transform applied), its morph targets become sparse
 // deltas (transformed by the linear part), and smooth normals are computed welded by position.
+// Skinned primitives (spec 3.7.3) ignore their node: after the walk, bakeSkinnedRestPoses()
+// places them vertex by vertex in the skin's rest pose.
 // Animations are read as they are (node-local keys), validated against spec 3.11.
 #include <tiny_gltf.h>  // Debian's shared libtinygltf: never define TINYGLTF_IMPLEMENTATION here.
 
@@ -186,7 +188,8 @@ int componentCount(int type) {
     case TINYGLTF_TYPE_VEC2: return 2;
     case TINYGLTF_TYPE_VEC3: return 3;
     case TINYGLTF_TYPE_VEC4: return 4;
-    default: return 0;  // matrices: never a vertex attribute lacrima reads
+    case TINYGLTF_TYPE_MAT4: return 16;  // skin inverse bind matrices (FLOAT: no column padding)
+    default: return 0;  // MAT2 / MAT3: nothing lacrima reads
   }
 }
 
@@ -373,6 +376,19 @@ Affine3d toAffine(const Eigen::Matrix4d& m) {
   return a;
 }
 
+const char* accessorTypeName(int type) {
+  switch (type) {
+    case TINYGLTF_TYPE_SCALAR: return "SCALAR";
+    case TINYGLTF_TYPE_VEC2: return "VEC2";
+    case TINYGLTF_TYPE_VEC3: return "VEC3";
+    case TINYGLTF_TYPE_VEC4: return "VEC4";
+    case TINYGLTF_TYPE_MAT2: return "MAT2";
+    case TINYGLTF_TYPE_MAT3: return "MAT3";
+    case TINYGLTF_TYPE_MAT4: return "MAT4";
+    default: return "unknown";
+  }
+}
+
 // ------------------------------------------------------------------------------------------
 // Flattening the scene
 // ------------------------------------------------------------------------------------------
@@ -393,9 +409,12 @@ class SceneFlattener {
     }
     visited_.assign(model_.nodes.size(), false);
     warnedParents_.assign(model_.nodes.size(), false);
+    restWorld_.assign(model_.nodes.size(), Affine3d::Identity());
+    readSkins();
     std::vector<bool> onPath(model_.nodes.size(), false);
     for (int root : sceneRoots()) visitNode(root, -1, Affine3d::Identity(), onPath, "scene root");
     for (GltfPrimitive& p : asset_.primitives) p.targets.resize(asset_.targetNames.size());
+    bakeSkinnedRestPoses();
     readLandmarks();
   }
 
@@ -489,6 +508,7 @@ class SceneFlattener {
       visited_[size_t(index)] = true;
       record.parent = parentIndex;
       recordRestPose(node, record, local);
+      restWorld_[size_t(index)] = world;
     } else if (record.parent != parentIndex && !warnedParents_[size_t(index)]) {
       warnedParents_[size_t(index)] = true;
       asset_.warnings.push_back(fmt::format("node {} ('{}') has more than one parent (not valid glTF); animations "
@@ -594,7 +614,10 @@ class SceneFlattener {
     if (size_t(node.mesh) >= model_.meshes.size())
       fail(fmt::format("node {} ('{}') refers to mesh {}, which does not exist", nodeIndex, node.name, node.mesh));
     const tinygltf::Mesh& mesh = model_.meshes[size_t(node.mesh)];
-    if (std::abs(world.linear().determinant()) < 1e-30) {
+    if (node.skin >= 0 && size_t(node.skin) >= asset_.skins.size())
+      fail(fmt::format("node {} ('{}') refers to skin {}, which does not exist ({} skins)", nodeIndex, node.name, node.skin,
+                       asset_.skins.size()));
+    if (node.skin < 0 && std::abs(world.linear().determinant()) < 1e-30) {
       asset_.warnings.push_back(fmt::format("node {} ('{}') has a singular transform; its mesh is skipped", nodeIndex, node.name));
       return;
     }
@@ -606,13 +629,16 @@ class SceneFlattener {
     asset_.nodes[size_t(nodeIndex)].targetSlots = slots;
     firstPrimitiveOfNode_.try_emplace(nodeIndex, asset_.primitives.size());
     for (size_t k = 0; k < mesh.primitives.size(); ++k) {
-      asset_.primitives.push_back(flattenPrimitive(mesh, node.mesh, k, world, slots));
+      // Spec 3.7.3: a skinned mesh ignores its node's transform; bakeSkinnedRestPoses() places
+      // it once every joint's rest world transform is known.
+      asset_.primitives.push_back(flattenPrimitive(mesh, node.mesh, k, node.skin >= 0 ? Affine3d::Identity() : world,
+                                                   slots, node.skin));
       asset_.primitives.back().node = nodeIndex;
     }
   }
 
   GltfPrimitive flattenPrimitive(const tinygltf::Mesh& mesh, int meshIndex, size_t k, const Affine3d& world,
-                                 const std::vector<int>& slots) const {
+                                 const std::vector<int>& slots, int skin) {
     const tinygltf::Primitive& p = mesh.primitives[k];
     GltfPrimitive out;
     const std::string what = fmt::format("primitive {} of mesh {} ('{}')", k, meshIndex, mesh.name);
@@ -627,10 +653,16 @@ class SceneFlattener {
     out.nodeTransform = world.cast<float>();
 
     readVertices(p, out.mesh, what + " '" + out.part + "'");
-    transformMesh(out.mesh, out.nodeTransform);  // also flips the winding of mirrored instances
-    if (std::string defect = findMeshDefect(out.mesh); !defect.empty()) fail(fmt::format("{}: {}", what, defect));
-    out.weldMap = findCoincidentVertices(out.mesh);
-    computeSmoothNormals(out.mesh, out.weldMap);
+    if (skin >= 0) {
+      // Still in mesh space: defects are checked here, welding and normals after baking.
+      if (std::string defect = findMeshDefect(out.mesh); !defect.empty()) fail(fmt::format("{}: {}", what, defect));
+      readSkinAttributes(p, skin, out, what + " '" + out.part + "'");
+    } else {
+      transformMesh(out.mesh, out.nodeTransform);  // also flips the winding of mirrored instances
+      if (std::string defect = findMeshDefect(out.mesh); !defect.empty()) fail(fmt::format("{}: {}", what, defect));
+      out.weldMap = findCoincidentVertices(out.mesh);
+      computeSmoothNormals(out.mesh, out.weldMap);
+    }
 
     const Mat3 linear = out.nodeTransform.linear();
     // Asset-wide slots can exceed this mesh's target count (a later mesh adds new names); run()
@@ -640,6 +672,149 @@ class SceneFlattener {
       out.targets[size_t(slots[t])] = readMorphTarget(p.targets[t], out.mesh.vertexCount(), linear,
                                                       fmt::format("{} '{}', morph target {}", what, out.part, t));
     return out;
+  }
+
+  // ----------------------------------------------------------------------------------------
+  // Skins (spec 3.7.3)
+  // ----------------------------------------------------------------------------------------
+
+  // Every skin of the file: joints must be nodes, inverse bind matrices MAT4 FLOAT, one per
+  // joint, finite and invertible-looking (affine bottom row); identity when absent.
+  void readSkins() {
+    for (size_t s = 0; s < model_.skins.size(); ++s) {
+      const tinygltf::Skin& skin = model_.skins[s];
+      const std::string what = fmt::format("skin {} ('{}')", s, skin.name);
+      GltfSkin out;
+      out.name = skin.name;
+      if (skin.joints.empty()) fail(what + ": has no joints");
+      for (size_t j = 0; j < skin.joints.size(); ++j) {
+        const int node = skin.joints[j];
+        if (node < 0 || size_t(node) >= model_.nodes.size())
+          fail(fmt::format("{}: joint {} is node {}, which does not exist ({} nodes)", what, j, node, model_.nodes.size()));
+        out.joints.push_back(node);
+      }
+      out.inverseBindMatrices.assign(out.joints.size(), Affine3::Identity());
+      if (skin.inverseBindMatrices >= 0) {
+        const std::string ibmWhat = what + " inverseBindMatrices";
+        const tinygltf::Accessor& a = reader_.accessor(skin.inverseBindMatrices, ibmWhat);
+        if (a.type != TINYGLTF_TYPE_MAT4 || a.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT)
+          fail(fmt::format("{}: accessor {} is {} with componentType {}; expected MAT4 FLOAT (5126)", ibmWhat,
+                           skin.inverseBindMatrices, accessorTypeName(a.type), a.componentType));
+        if (a.count != out.joints.size())
+          fail(fmt::format("{}: accessor {} has {} matrices for {} joints", ibmWhat, skin.inverseBindMatrices, a.count,
+                           out.joints.size()));
+        const std::vector<double> m = reader_.readDense(skin.inverseBindMatrices, 16, false, ibmWhat);
+        for (size_t j = 0; j < out.joints.size(); ++j) {
+          const Eigen::Map<const Eigen::Matrix4d> matrix(&m[16 * j]);  // column-major, like Eigen
+          if (!matrix.allFinite()) fail(fmt::format("{}: matrix {} has a non-finite value", ibmWhat, j));
+          out.inverseBindMatrices[j] = toAffine(matrix).cast<float>();
+        }
+      }
+      asset_.skins.push_back(std::move(out));
+    }
+  }
+
+  // JOINTS_0 (VEC4 unsigned byte / short, each < the skin's joint count) and WEIGHTS_0 (VEC4
+  // FLOAT or normalized unsigned byte / short, non-negative, finite, not all zero; normalized to
+  // sum 1) of a primitive whose node has `skin`.
+  void readSkinAttributes(const tinygltf::Primitive& p, int skin, GltfPrimitive& out, const std::string& what) {
+    const size_t vertexCount = out.mesh.vertexCount();
+    const GltfSkin& s = asset_.skins[size_t(skin)];
+    const std::string skinWhat = fmt::format("skin {} ('{}')", skin, s.name);
+    auto joints = p.attributes.find("JOINTS_0");
+    auto weights = p.attributes.find("WEIGHTS_0");
+    if (joints == p.attributes.end() || weights == p.attributes.end())
+      fail(fmt::format("{}: its node has {} but the primitive has no {}", what, skinWhat,
+                       joints == p.attributes.end() ? "JOINTS_0" : "WEIGHTS_0"));
+    if (p.attributes.contains("JOINTS_1") || p.attributes.contains("WEIGHTS_1"))
+      asset_.warnings.push_back(fmt::format("{}: JOINTS_1 / WEIGHTS_1 ignored; only the first four joint influences "
+                                            "(JOINTS_0 / WEIGHTS_0) are used", what));
+
+    const std::string jointsWhat = what + " JOINTS_0";
+    const tinygltf::Accessor& ja = reader_.accessor(joints->second, jointsWhat);
+    if (ja.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE && ja.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT)
+      fail(fmt::format("{}: accessor {} has componentType {}; expected unsigned byte (5121) or unsigned short (5123)",
+                       jointsWhat, joints->second, ja.componentType));
+    const std::vector<double> j = reader_.readDense(joints->second, 4, true, jointsWhat);
+    if (j.size() / 4 != vertexCount)
+      fail(fmt::format("{}: {} elements for {} vertices", jointsWhat, j.size() / 4, vertexCount));
+
+    const std::string weightsWhat = what + " WEIGHTS_0";
+    const tinygltf::Accessor& wa = reader_.accessor(weights->second, weightsWhat);
+    const bool normalizedInteger = (wa.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+                                    wa.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT) && wa.normalized;
+    if (wa.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT && !normalizedInteger)
+      fail(fmt::format("{}: accessor {} has componentType {}{}; expected FLOAT or normalized unsigned byte / short",
+                       weightsWhat, weights->second, wa.componentType, wa.normalized ? "" : " without normalized"));
+    const std::vector<double> w = reader_.readDense(weights->second, 4, false, weightsWhat);
+    if (w.size() / 4 != vertexCount)
+      fail(fmt::format("{}: {} elements for {} vertices", weightsWhat, w.size() / 4, vertexCount));
+
+    out.skin = skin;
+    out.skinJoints.resize(vertexCount);
+    out.skinWeights.resize(vertexCount);
+    for (size_t v = 0; v < vertexCount; ++v) {
+      double sum = 0.0;
+      for (size_t c = 0; c < 4; ++c) {
+        const double joint = j[4 * v + c];
+        if (joint >= double(s.joints.size()))
+          fail(fmt::format("{}: vertex {} names joint {}, but {} has {} joints", jointsWhat, v, joint, skinWhat,
+                           s.joints.size()));
+        out.skinJoints[v][c] = uint16_t(joint);
+        const double weight = w[4 * v + c];
+        if (!std::isfinite(weight)) fail(fmt::format("{}: vertex {} has a non-finite weight", weightsWhat, v));
+        if (weight < 0.0) fail(fmt::format("{}: vertex {} has a negative weight {}", weightsWhat, v, weight));
+        sum += weight;
+      }
+      if (!(sum > 0.0)) fail(fmt::format("{}: vertex {} has all weights zero", weightsWhat, v));
+      for (size_t c = 0; c < 4; ++c) out.skinWeights[v][int(c)] = float(w[4 * v + c] / sum);
+    }
+  }
+
+  // After the scene walk, when every joint's rest world transform is known: each skinned
+  // primitive goes from mesh space to its rest pose in asset space, vertex by vertex, and its
+  // morph deltas follow the linear part of their vertex's skin matrix.
+  void bakeSkinnedRestPoses() {
+    std::vector<std::vector<Affine3d>> rest(asset_.skins.size());
+    for (GltfPrimitive& p : asset_.primitives) {
+      if (p.skin < 0) continue;
+      GltfSkin& skin = asset_.skins[size_t(p.skin)];
+      std::vector<Affine3d>& joints = rest[size_t(p.skin)];
+      if (joints.empty()) {
+        for (size_t j = 0; j < skin.joints.size(); ++j) {
+          const int node = skin.joints[j];
+          if (!visited_[size_t(node)])
+            fail(fmt::format("skin {} ('{}'): joint {} is node {} ('{}'), which is not in the default scene", p.skin,
+                             skin.name, j, node, model_.nodes[size_t(node)].name));
+          joints.push_back(restWorld_[size_t(node)] * skin.inverseBindMatrices[j].cast<double>());
+        }
+        skin.restJointMatrices.clear();
+        for (const Affine3d& m : joints) skin.restJointMatrices.push_back(m.cast<float>());
+      }
+      std::vector<Eigen::Matrix3d> linear(p.mesh.vertexCount());
+      for (size_t v = 0; v < p.mesh.vertexCount(); ++v) {
+        Eigen::Matrix<double, 3, 4> m = Eigen::Matrix<double, 3, 4>::Zero();
+        for (int c = 0; c < 4; ++c)
+          if (p.skinWeights[v][c] != 0.0f)
+            m += double(p.skinWeights[v][c]) * joints[p.skinJoints[v][size_t(c)]].matrix().topRows<3>();
+        linear[v] = m.leftCols<3>();
+        if (!(std::abs(linear[v].determinant()) > 1e-30))
+          fail(fmt::format("{}: vertex {} has a singular rest skin matrix (skin {} ('{}'))", p.name, v, p.skin, skin.name));
+        p.mesh.positions[v] = (linear[v] * p.mesh.positions[v].cast<double>() + m.col(3)).cast<float>();
+      }
+      for (SparseDelta& target : p.targets)
+        for (size_t i = 0; i < target.vertices.size(); ++i)
+          target.deltas[i] = (linear[target.vertices[i]] * target.deltas[i].cast<double>()).cast<float>();
+      // As transformMesh does for mirrored node transforms: a triangle whose corners are mostly
+      // mirrored by the rest skin gets its winding flipped back.
+      for (size_t t = 0; t + 2 < p.mesh.indices.size(); t += 3) {
+        int mirrored = 0;
+        for (size_t c = 0; c < 3; ++c) mirrored += linear[p.mesh.indices[t + c]].determinant() < 0.0 ? 1 : 0;
+        if (mirrored >= 2) std::swap(p.mesh.indices[t + 1], p.mesh.indices[t + 2]);
+      }
+      p.weldMap = findCoincidentVertices(p.mesh);
+      computeSmoothNormals(p.mesh, p.weldMap);
+    }
   }
 
   // Positions, uvs and indices in the file's space. Normals are always recomputed (welded,
@@ -758,6 +933,7 @@ class SceneFlattener {
   size_t visits_ = 0;
   std::vector<bool> visited_;  // per node: met while walking the default scene
   std::vector<bool> warnedParents_;  // per node: the "more than one parent" warning was given
+  std::vector<Affine3d> restWorld_;  // per node met in the walk: its rest world transform
   std::unordered_map<std::string, int> targetIndex_;
   std::unordered_map<int, std::vector<int>> targetSlotsByMesh_;
   std::unordered_map<int, size_t> firstPrimitiveOfNode_;
@@ -766,19 +942,6 @@ class SceneFlattener {
 // ------------------------------------------------------------------------------------------
 // Animations (spec 3.11)
 // ------------------------------------------------------------------------------------------
-
-const char* accessorTypeName(int type) {
-  switch (type) {
-    case TINYGLTF_TYPE_SCALAR: return "SCALAR";
-    case TINYGLTF_TYPE_VEC2: return "VEC2";
-    case TINYGLTF_TYPE_VEC3: return "VEC3";
-    case TINYGLTF_TYPE_VEC4: return "VEC4";
-    case TINYGLTF_TYPE_MAT2: return "MAT2";
-    case TINYGLTF_TYPE_MAT3: return "MAT3";
-    case TINYGLTF_TYPE_MAT4: return "MAT4";
-    default: return "unknown";
-  }
-}
 
 std::optional<GltfAnimationPath> parseAnimationPath(const std::string& path) {
   if (path == "translation") return GltfAnimationPath::Translation;
@@ -936,7 +1099,7 @@ class AnimationReader {
   // (unsigned) byte or short, decoded by decodeComponent.
   void checkOutputFormat(const tinygltf::Accessor& a, int index, GltfAnimationPath path, const std::string& what) const {
     const int components = outputComponentsFor(path);
-    if (componentCount(a.type) != components)  // matrices count 0 components and land here too
+    if (componentCount(a.type) != components)  // matrices land here too
       fail(fmt::format("{}: accessor {} is {}, but a {} channel needs {}", what, index, accessorTypeName(a.type),
                        gltfAnimationPathName(path), components == 1 ? "SCALAR" : components == 3 ? "VEC3" : "VEC4"));
     if (a.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT) return;

@@ -3,6 +3,7 @@
 // the loader already applied. See sampleGltfAnimation in gltf_asset.hpp.
 #include <cmath>
 #include <functional>
+#include <stdexcept>
 #include <vector>
 
 #include <fmt/format.h>
@@ -72,12 +73,57 @@ GltfAnimationSample sampleGltfAnimation(const GltfAsset& asset, const GltfAnimat
 
   for (size_t p = 0; p < asset.primitives.size(); ++p) {
     const int node = asset.primitives[p].node;
+    if (asset.primitives[p].skin >= 0) continue;  // spec 3.7.3: the skin alone places it
     if (resolve(node, 0) != State::Moving) continue;
     const Affine3d motion = animatedWorld[size_t(node)] * restWorld[size_t(node)].inverse();
     out.primitiveMotion[p] = motion.cast<float>();
     out.anyPrimitiveMoves = true;
   }
+
+  out.skinJointMatrices.resize(asset.skins.size());
+  for (size_t s = 0; s < asset.skins.size(); ++s) {
+    const GltfSkin& skin = asset.skins[s];
+    bool moves = false;
+    for (int joint : skin.joints) moves |= resolve(joint, 0) == State::Moving;
+    if (!moves) continue;
+    std::vector<Affine3>& matrices = out.skinJointMatrices[s];
+    for (size_t j = 0; j < skin.joints.size(); ++j)
+      matrices.push_back((animatedWorld[size_t(skin.joints[j])] * skin.inverseBindMatrices[j].cast<double>()).cast<float>());
+    out.anySkinMoves = true;
+  }
   return out;
+}
+
+void applyGltfSkin(const GltfAsset& asset, const GltfPrimitive& primitive, const std::vector<Affine3>& jointMatrices,
+                   TriangleMesh& mesh) {
+  if (primitive.skin < 0 || size_t(primitive.skin) >= asset.skins.size())
+    throw std::invalid_argument(fmt::format("applyGltfSkin: primitive '{}' has no skin", primitive.name));
+  const GltfSkin& skin = asset.skins[size_t(primitive.skin)];
+  const size_t vertexCount = mesh.vertexCount();
+  if (jointMatrices.size() != skin.joints.size() || skin.restJointMatrices.size() != skin.joints.size() ||
+      primitive.skinJoints.size() != vertexCount || primitive.skinWeights.size() != vertexCount)
+    throw std::invalid_argument(fmt::format("applyGltfSkin: primitive '{}': {} joint matrices for {} joints, {} / {} "
+                                            "skinned vertices for {}", primitive.name, jointMatrices.size(),
+                                            skin.joints.size(), primitive.skinJoints.size(),
+                                            primitive.skinWeights.size(), vertexCount));
+  using Mat34d = Eigen::Matrix<double, 3, 4>;
+  for (size_t v = 0; v < vertexCount; ++v) {
+    Mat34d posed = Mat34d::Zero(), rest = Mat34d::Zero();
+    for (int c = 0; c < 4; ++c) {
+      const float w = primitive.skinWeights[v][c];
+      if (w == 0.0f) continue;
+      const size_t k = primitive.skinJoints[v][size_t(c)];
+      if (k >= skin.joints.size())
+        throw std::invalid_argument(fmt::format("applyGltfSkin: primitive '{}' vertex {} names joint {}", primitive.name, v, k));
+      posed += double(w) * jointMatrices[k].matrix().topRows<3>().cast<double>();
+      rest += double(w) * skin.restJointMatrices[k].matrix().topRows<3>().cast<double>();
+    }
+    // x = S(v) S_rest(v)^-1 x_rest, with x_rest the (morphed) rest-pose position.
+    const Vec3d local = rest.leftCols<3>().inverse() * (mesh.positions[v].cast<double>() - rest.col(3));
+    mesh.positions[v] = (posed.leftCols<3>() * local + posed.col(3)).cast<float>();
+  }
+  if (primitive.weldMap.size() == vertexCount) computeSmoothNormals(mesh, primitive.weldMap);
+  else computeSmoothNormals(mesh, findCoincidentVertices(primitive.mesh));
 }
 
 }  // namespace lacrima

@@ -49,6 +49,7 @@ AssetPose assetPoseAt(const ShotAsset& asset, double frame) {
     for (size_t i = 0; i < sample.weights.size() && i < pose.blendshapeWeights.size(); ++i)
       pose.blendshapeWeights[i] += sample.weights[i];
     if (sample.anyPrimitiveMoves) out.primitiveMotion = sample.primitiveMotion;
+    if (sample.anySkinMoves) out.skinJointMatrices = sample.skinJointMatrices;
   }
   for (float& w : pose.blendshapeWeights) w = std::clamp(w, 0.0f, 1.0f);
   for (const AssetChannel& c : asset.joints) addJointChannel(pose, c.index, c.value.at(frame));
@@ -67,6 +68,9 @@ TriangleMesh posedPrimitive(const ShotAsset& asset, const AssetPose& assetPose, 
     const bool morphed = std::any_of(w.begin(), w.end(), [](float x) { return x != 0.0f; });
     mesh = morphed ? applyMorphTargets(primitive, w) : primitive.mesh;
   }
+  if (primitive.skin >= 0 && size_t(primitive.skin) < assetPose.skinJointMatrices.size() &&
+      !assetPose.skinJointMatrices[size_t(primitive.skin)].empty())
+    applyGltfSkin(*asset.gltf, primitive, assetPose.skinJointMatrices[size_t(primitive.skin)], mesh);
   if (index < assetPose.primitiveMotion.size() &&
       assetPose.primitiveMotion[index].matrix() != Affine3::Identity().matrix())
     transformMesh(mesh, assetPose.primitiveMotion[index]);

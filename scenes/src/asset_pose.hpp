@@ -13,6 +13,9 @@ struct AssetPose {
   // Per primitive, the motion of its glTF node relative to the rest pose (ShotAsset::gltfAnimation);
   // empty when no node moves.
   std::vector<Affine3> primitiveMotion;
+  // Per glTF skin, its animated joint matrices (GltfAnimationSample::skinJointMatrices); empty
+  // when no skin moves. Skinned primitives are posed by these instead of primitiveMotion.
+  std::vector<std::vector<Affine3>> skinJointMatrices;
 };
 
 // The pose at `frame`: weights from all sources (static and keyed blendshapes, controls,
@@ -21,7 +24,8 @@ struct AssetPose {
 AssetPose assetPoseAt(const ShotAsset& asset, double frame);
 
 // Primitive `index` of the asset in `pose`, in world space: morphed (or rigged), moved by its
-// node's animation, then the asset transform. Without animation this is bitwise what the static
+// node's animation (a skinned primitive: skinned by its joints' animation), then the asset
+// transform. Without animation this is bitwise what the static
 // path produced: the neutral mesh, or the morphed one when a static weight is non-zero.
 TriangleMesh posedPrimitive(const ShotAsset& asset, const AssetPose& pose, size_t index);
 

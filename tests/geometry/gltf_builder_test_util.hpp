@@ -19,14 +19,21 @@ class GltfBuilder {
   nlohmann::json& json() { return json_; }
 
   // Float values as a new accessor (own bufferView); returns its index.
-  int addAccessor(const std::vector<float>& values, const std::string& type) {
+  int addAccessor(const std::vector<float>& values, const std::string& type) { return addAccessorOf(values, 5126, type); }
+
+  // Values of any component type (uint8_t 5121, uint16_t 5123, float 5126, ...) as a new
+  // accessor (own bufferView, tightly packed); type SCALAR, VEC2-4 or MAT4. Returns its index.
+  template <typename T>
+  int addAccessorOf(const std::vector<T>& values, int componentType, const std::string& type, bool normalized = false) {
     const size_t offset = appendValues(bin_, values);
-    json_["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", values.size() * 4}});
-    const size_t components = type == "SCALAR" ? 1 : type == "VEC2" ? 2 : type == "VEC3" ? 3 : 4;
-    json_["accessors"].push_back({{"bufferView", json_["bufferViews"].size() - 1},
-                                  {"componentType", 5126},
-                                  {"count", values.size() / components},
-                                  {"type", type}});
+    json_["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", values.size() * sizeof(T)}});
+    const size_t components = type == "SCALAR" ? 1 : type == "VEC2" ? 2 : type == "VEC3" ? 3 : type == "MAT4" ? 16 : 4;
+    nlohmann::json accessor = {{"bufferView", json_["bufferViews"].size() - 1},
+                               {"componentType", componentType},
+                               {"count", values.size() / components},
+                               {"type", type}};
+    if (normalized) accessor["normalized"] = true;
+    json_["accessors"].push_back(accessor);
     return int(json_["accessors"].size()) - 1;
   }
 

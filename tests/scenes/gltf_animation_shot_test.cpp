@@ -9,6 +9,7 @@
 #include <string>
 
 #include "geometry/gltf_builder_test_util.hpp"
+#include "geometry/gltf_skin_test_util.hpp"
 #include "shot_test_support.hpp"
 
 namespace lacrima {
@@ -123,6 +124,33 @@ TEST(GltfAnimationShot, WithoutAnAnimationMemberTheAssetIsStill) {
   EXPECT_FALSE(shot.assets[0].gltfAnimation.has_value());
   EXPECT_FALSE(shot.assets[0].animated());
   expectPositionsNear(triMesh(buildFrame(shot, 5)).mesh.positions, expectedTriangle(0, 0), 0.0f);
+}
+
+// The skinned strip of gltf_skin_test_util.hpp (asset "tri" here, so triMesh finds it), at z - 1.
+TEST(GltfAnimationShot, SkinnedAnimationPlaysThroughBuildFrame) {
+  test::GltfBuilder b = test::skinnedStrip();
+  const auto glb = shotDir() / "skinned.glb";
+  b.write(glb);
+  const auto shifted = [](std::vector<Vec3> points) {
+    for (Vec3& p : points) p.z() -= 1.0f;
+    return points;
+  };
+  const std::vector<Vec3> rest = {Vec3(1, 1, 0), Vec3(2, 1, 0), Vec3(1, 2.5f, 0), Vec3(2, 2.5f, 0), Vec3(1, 4, 0), Vec3(2, 4, 0)};
+  // Without an animation: the baked rest pose, exactly.
+  const Shot still = loadShot(writeShot("skin_still.json", animatedShot(glb, "")));
+  expectPositionsNear(triMesh(buildFrame(still, 5)).mesh.positions, shifted(rest), 0.0f);
+
+  // "bend": frame 1 = 0 s is the rest pose; frame 5 = 1 s has the knee turned 90 degrees
+  // (see gltf_skin_test.cpp for the hand computation); the strip node's own slide is ignored.
+  const Shot bend = loadShot(writeShot("skin_bend.json", animatedShot(glb, R"("animation": {"name": "bend"})")));
+  expectPositionsNear(triMesh(buildFrame(bend, 1)).mesh.positions, shifted(rest), 1e-6f);
+  expectPositionsNear(triMesh(buildFrame(bend, 5)).mesh.positions,
+                      shifted({Vec3(1, 1, 0), Vec3(2, 1, 0), Vec3(1, 2.5f, 0), Vec3(1.5f, 3, 0), Vec3(-1, 2, 0), Vec3(-1, 3, 0)}));
+
+  // "lift": the morph target moves vertex 4 to where vertex 5 is before skinning, then the knee turns.
+  const Shot lift = loadShot(writeShot("skin_lift.json", animatedShot(glb, R"("animation": {"name": "lift"})")));
+  const std::vector<Vec3> lifted = triMesh(buildFrame(lift, 5)).mesh.positions;
+  expectPositionsNear({lifted[4], lifted[5]}, shifted({Vec3(-1, 3, 0), Vec3(-1, 3, 0)}));
 }
 
 std::string firstLineOf(const std::string& s) { return s.substr(0, s.find('\n')); }

@@ -1,6 +1,8 @@
 #pragma once
 // A glTF 2.0 asset flattened for rendering: one entry per mesh primitive, in asset space
 // (node transforms already applied), with its sparse morph targets (blendshapes).
+#include <array>
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -39,8 +41,18 @@ struct GltfPrimitive {
   TriangleMesh mesh;       // neutral shape, asset space, smooth welded normals computed
   GltfMaterialInfo material;
   std::vector<SparseDelta> targets;  // one per morph target (asset target order); may be empty deltas
-  Affine3 nodeTransform = Affine3::Identity();  // already applied to mesh; kept to transform deltas
+  // Already applied to mesh; kept to transform deltas. Identity for skinned primitives, whose
+  // node transform glTF ignores (their rest pose comes from the skin, see below).
+  Affine3 nodeTransform = Affine3::Identity();
   int node = -1;  // index into GltfAsset::nodes of the node that instanced this primitive
+  // Linear blend skinning (spec 3.7.3), when the node has a skin: index into GltfAsset::skins,
+  // else -1. Per vertex, JOINTS_0 (indices into that skin's joints) and WEIGHTS_0 (normalized to
+  // sum 1). mesh and targets are already in the skin's rest pose: mesh vertex = S_rest(v) v with
+  // S_rest(v) = sum_k w_k GltfSkin::restJointMatrices[joint_k], and each delta transformed by
+  // the linear part of its vertex's S_rest. JOINTS_1 / WEIGHTS_1 are not read.
+  int skin = -1;
+  std::vector<std::array<uint16_t, 4>> skinJoints;
+  std::vector<Vec4> skinWeights;
   // findCoincidentVertices of the neutral mesh: keeps UV seams welded when morphs recompute normals.
   std::vector<uint32_t> weldMap;
 };
@@ -77,6 +89,16 @@ struct GltfNode {
   std::vector<int> targetSlots;
 };
 
+// A glTF skin (spec 3.7.3): its joints and their inverse bind matrices.
+struct GltfSkin {
+  std::string name;  // "" if unnamed
+  std::vector<int> joints;  // node indices (into GltfAsset::nodes)
+  std::vector<Affine3> inverseBindMatrices;  // one per joint; identity when the file has none
+  // Per joint: restWorld(joint) * inverseBindMatrix, the joint matrices of the rest pose (the
+  // default scene's node transforms) that the loader baked into the skinned primitives.
+  std::vector<Affine3> restJointMatrices;
+};
+
 struct GltfAsset {
   std::filesystem::path path;
   std::vector<GltfPrimitive> primitives;
@@ -86,6 +108,7 @@ struct GltfAsset {
   std::vector<GltfNode> nodes;         // every node of the file, in file order (nodeNames[i] == nodes[i].name)
   std::vector<Landmark> landmarks;     // nodes[0].extras.landmarks68 when present
   std::vector<GltfAnimation> animations;  // every animation of the file, in file order
+  std::vector<GltfSkin> skins;            // every skin of the file, in file order
   std::vector<std::string> warnings;   // things loaded with a caveat or skipped, and why
 
   // Index of a morph target by exact name, or -1.
@@ -94,6 +117,8 @@ struct GltfAsset {
 
 // Loads a .glb or .gltf file. Throws InputError naming the file for missing, truncated or
 // corrupt files, unsupported primitive modes, or accessors that point outside their buffers, and
+// naming the skin or primitive for skins that break spec 3.7.3 (joint indices, inverse bind
+// matrix counts and values, JOINTS_0 / WEIGHTS_0 formats, all-zero or negative weights), and
 // naming the animation and channel for animations that break spec 3.11 (accessor types and
 // counts, key times, node / sampler indices, target paths, interpolations).
 GltfAsset loadGltfAsset(const std::filesystem::path& path);
@@ -119,12 +144,28 @@ struct GltfAnimationSample {
   std::vector<Affine3> primitiveMotion;
   // True when some primitive's motion is not the identity.
   bool anyPrimitiveMoves = false;
+  // Per skin (indexed like GltfAsset::skins): the joint matrices J_k = animatedWorld(joint_k) *
+  // inverseBindMatrix_k, or empty when no joint of the skin (nor any of their ancestors) is
+  // animated by a TRS channel. Skinned primitives get no primitiveMotion (identity): glTF
+  // ignores their node's transform; they move only through these (applyGltfSkin).
+  std::vector<std::vector<Affine3>> skinJointMatrices;
+  // True when some skin's skinJointMatrices is not empty.
+  bool anySkinMoves = false;
 };
 
 // `animation` (one of asset.animations) at `seconds` (held at the first / last key outside the
 // keys). A node given by a matrix that an animation targets anyway (glTF forbids it) starts from
 // identity TRS for the properties without a channel. Throws InputError for a non-finite time.
 GltfAnimationSample sampleGltfAnimation(const GltfAsset& asset, const GltfAnimation& animation, double seconds);
+
+// Poses a skinned primitive: `mesh` holds its (possibly morphed) rest-pose positions in asset
+// space, n + delta; each vertex becomes S(v) S_rest(v)^-1 (n + delta) with S(v) = sum_k w_k
+// jointMatrices[joint_k] (morph first, then skin, as glTF orders them), and normals are
+// recomputed (welded by primitive.weldMap). jointMatrices is one GltfAnimationSample::
+// skinJointMatrices entry for primitive.skin. Throws std::invalid_argument when the primitive is
+// not skinned or the sizes disagree.
+void applyGltfSkin(const GltfAsset& asset, const GltfPrimitive& primitive, const std::vector<Affine3>& jointMatrices,
+                   TriangleMesh& mesh);
 
 // Human-readable summary for `lacrima info`: primitives with vertex/triangle counts,
 // materials, morph target names, cameras, bounding box, animations.
