@@ -3,6 +3,7 @@
 #include <string>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "lacrima/geometry/gltf_asset.hpp"
 
@@ -98,6 +99,24 @@ std::string describeAnimations(const GltfAsset& asset) {
   return out;
 }
 
+// One line per skin: its joints by node name, and how many primitives it deforms.
+std::string describeSkins(const GltfAsset& asset) {
+  std::string out = fmt::format("skins: {}\n", asset.skins.size());
+  for (size_t s = 0; s < asset.skins.size(); ++s) {
+    const GltfSkin& skin = asset.skins[s];
+    std::vector<std::string> joints;
+    for (const int j : skin.joints) {
+      const std::string& name = asset.nodes[size_t(j)].name;
+      joints.push_back(name.empty() ? fmt::format("node {}", j) : name);
+    }
+    const auto deformed = std::count_if(asset.primitives.begin(), asset.primitives.end(),
+                                        [&](const GltfPrimitive& p) { return p.skin == int(s); });
+    out += fmt::format("  {}: {}, {} joints ({}), {} primitives\n", s, skin.name.empty() ? "(unnamed)" : skin.name,
+                       skin.joints.size(), fmt::join(joints, ", "), deformed);
+  }
+  return out;
+}
+
 }  // namespace
 
 std::string describeGltfAsset(const GltfAsset& asset) {
@@ -109,6 +128,7 @@ std::string describeGltfAsset(const GltfAsset& asset) {
   out += describeBounds(asset);
   out += fmt::format("landmarks: {}\n", asset.landmarks.size());
   out += describeAnimations(asset);
+  out += describeSkins(asset);
   if (!asset.warnings.empty()) {
     out += fmt::format("warnings: {}\n", asset.warnings.size());
     for (const std::string& w : asset.warnings) out += "  " + w + "\n";

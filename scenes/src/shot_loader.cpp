@@ -764,8 +764,8 @@ class ShotReader {
     const bool rectangle = *type == "rectangle";
     ObjectReader o(c_, v, pointer,
                    rectangle ? std::vector<std::string>{"type", "center", "u", "v", "size", "normal", "lookAt", "up",
-                                                        "radiance", "power", "twoSided"}
-                             : std::vector<std::string>{"type", "center", "radius", "radiance", "power"});
+                                                        "radiance", "power", "twoSided", "intensity"}
+                             : std::vector<std::string>{"type", "center", "radius", "radiance", "power", "intensity"});
     const size_t before = c_.errorCount();
     AreaLight light;
     light.shape = rectangle ? AreaLight::Shape::Rectangle : AreaLight::Shape::Sphere;
@@ -805,9 +805,14 @@ class ShotReader {
     } else if (o.ok()) {
       o.missing("radiance", "[r, g, b] in W/(m^2 sr); or 'power' in watts");
     }
+    // A multiplier of the radiance, keyed to dim or flicker a light over the shot.
+    AnimatedFloat intensity{1.0f, nullptr};
+    if (const Json* i = o.find("intensity"))
+      if (auto x = readAnimatedNumber(c_, *i, o.at("intensity"), Range::atLeast(0))) intensity = *x;
     if (c_.errorCount() == before) {
       shot_.lights.push_back(light);
       shot_.lightCenterCurves.push_back(animatedCenter->curve);
+      shot_.lightIntensities.push_back(intensity);
     }
   }
 

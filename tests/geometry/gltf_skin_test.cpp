@@ -32,6 +32,13 @@ void expectPositions(const std::vector<Vec3>& actual, const std::vector<Vec3>& e
 
 const std::vector<Vec3> kRest = {Vec3(1, 1, 0), Vec3(2, 1, 0), Vec3(1, 2.5f, 0), Vec3(2, 2.5f, 0), Vec3(1, 4, 0), Vec3(2, 4, 0)};
 
+TEST(GltfSkin, InfoListsTheSkinWithItsJoints) {
+  const std::string info = describeGltfAsset(loadStrip());
+  const std::string line = info.substr(info.find("skins: 1"));
+  EXPECT_NE(line.find("0: legs, 2 joints ("), std::string::npos) << info;
+  EXPECT_NE(line.find("), 1 primitives"), std::string::npos) << info;
+}
+
 TEST(GltfSkin, LoaderReadsTheSkinAndBakesTheRestPoseIgnoringTheMeshNode) {
   const GltfAsset asset = loadStrip();
   ASSERT_EQ(asset.skins.size(), 1u);

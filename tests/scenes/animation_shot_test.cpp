@@ -177,6 +177,16 @@ TEST(AnimatedShot, KeyedCameraIsPlacedAtEveryFrameAndBlursWithAShutter) {
   EXPECT_TRUE(frame.camera.cameraToWorldAtClose->translation().isApprox(Vec3(0.3f, 0, 0.5f), 1e-6f));
 }
 
+TEST(AnimatedShot, KeyedLightMovesAndDims) {
+  const Shot shot = loadShot(writeShot("light.json", faceShot("", R"("lights": [{"type": "sphere", "radius": 0.1,
+      "radiance": [2, 2, 2], "center": {"keys": [[1, [0, 1, 0]], [5, [0, 1, 4]]], "interpolation": "linear"},
+      "intensity": {"keys": [[1, 1], [5, 0]], "interpolation": "linear"}}])")));
+  const Frame frame = buildFrame(shot, 4);
+  ASSERT_EQ(frame.lights.size(), 1u);
+  EXPECT_TRUE(frame.lights[0].center.isApprox(Vec3(0, 1, 3), 1e-6f));
+  EXPECT_NEAR(frame.lights[0].radiance[0], 0.5f, 1e-6f);
+}
+
 std::string firstLineOf(const std::string& s) { return s.substr(0, s.find('\n')); }
 
 // Each bad animation gives one located message; `pointerAndMessage` is what follows "file:line:col: ".

@@ -182,6 +182,7 @@ struct Shot {
   std::vector<Material> assetMaterials;  // glTF materials mapped automatically (unbound ones)
   std::vector<AreaLight> lights;         // radiance already derived from power where given
   std::vector<std::shared_ptr<const Vec3Curve>> lightCenterCurves;  // per light; null when still
+  std::vector<AnimatedFloat> lightIntensities;  // per light: multiplies its radiance (default 1)
   std::vector<ShotAsset> assets;
   std::vector<ShotShape> shapes;
 
