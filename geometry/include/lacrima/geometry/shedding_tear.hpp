@@ -1,0 +1,118 @@
+#pragma once
+// The shedding tear of seed 004 section 4.2 (a tear that runs down the skin), as a closed,
+// outward-oriented, watertight triangle mesh lying on a skin mesh.
+//
+// Surface coordinates
+// -------------------
+// Everything the tear needs from the skin is stored as SurfacePoints (a triangle of the skin and
+// barycentric weights), not as positions. The tear is built once on a rest skin (the strip: where
+// its vertices are and how thick it is there) and then placed on any mesh with the same topology
+// (a deformed, bent or scaled skin): each vertex follows its skin triangle exactly.
+//
+// Construction (seed 004 section 4.2)
+// -----------------------------------
+// * Step 1 (base surface): the tear path is a polyline of SurfacePoints. It is sampled every
+//   sampleSpacing of (rest) arc length; at each sample, acrossSamples points are spread over the
+//   width across the path in the skin's tangent plane and projected back to the nearest point of
+//   the skin. The result is a rows x acrossSamples grid of SurfacePoints, finer than the face mesh
+//   (the paper's "linear subdivision" of the extracted area).
+// * Step 2 (top surface and walls): every grid point gets a thickness; the top surface is the base
+//   offset along the skin triangle's geometric normal by it. The across profile is a parabola,
+//     thickness = maxThickness * g(a) * (1 - (2 v / W(a))^2),   v in [-W(a)/2, W(a)/2],
+//   thickest in the middle and zero at both edges, where top and base share their vertices (the
+//   tear meets the skin with a lens-shaped cross-section, so no side walls are needed along the
+//   path). The two ends of the strip are closed by lens-shaped caps. The base does not lie on the
+//   skin but baseOffset above it along the same normal, so the water never coincides with the skin
+//   surface (no z-fighting, and rays leaving the skin enter the water cleanly).
+// * Step 3 (tear head): over the last headLength of the grown path (x from 0 to 1), the thickness
+//   factor g rises smoothly from 1 to 1 + headBulge over x in [0, 1/2] (smoothstep), then both g and
+//   the width factor W(a)/width close like a quarter ellipse, sqrt(1 - (2x - 1)^2), floored at
+//   tipFraction so the leading cap stays a small non-degenerate lens: a bulging, rounded head.
+//   Elsewhere g = 1 and W = width.
+// * Step 4 (noise): each interior grid point is raised with probability noiseDensity by a random
+//   bump in [noiseAmplitude / 2, noiseAmplitude] (a hash of seed and grid index, so the same seed
+//   gives bitwise the same tear, and a grid point keeps its bump while the tear grows). The bump
+//   field is smoothed by moving least squares (smoothHeightField, seed 004 eqs. 8-14, in (arc
+//   length, across) coordinates, epsilon = smoothingEpsilon), clamped at zero, and multiplied by
+//   the across parabola so the edges stay on the skin. Noise only raises: the top never goes
+//   below the un-noised top.
+// * Step 5 (growth): only the path up to arc length h = start + speed * t (clamped to the path's
+//   length) is built; grid rows sit at fixed arc lengths 0, sampleSpacing, 2 sampleSpacing, ...
+//   plus one row at h, so a longer tear contains the rows of a shorter one. With h < minimum
+//   length (sampleSpacing / 4) the tear is empty (no vertices).
+//
+// Limits: the thickness is in absolute units and does not stretch with the skin. Only the
+// vertices are guaranteed above the skin (by baseOffset); a tear triangle spanning a convex crease
+// of the skin mesh can dip below the crease by about (sample spacing) x (crease angle) / 4, which a
+// strip finer than the face mesh and baseOffset keep small. Sampling is brute force over the skin's
+// triangles (fine for the extracted area around a tear, slow for a whole face).
+#include <cstdint>
+#include <vector>
+
+#include "lacrima/geometry/math.hpp"
+#include "lacrima/geometry/mesh.hpp"
+
+namespace lacrima {
+
+// A point on a triangle mesh: triangle index and barycentric weights of its three corners
+// (non-negative, summing to 1). Its position follows any deformation of the mesh.
+struct SurfacePoint {
+  uint32_t triangle = 0;
+  Vec3 barycentric = Vec3(1.0f, 0.0f, 0.0f);
+};
+
+// Position of a SurfacePoint on `mesh`. Throws InputError for a triangle out of range or
+// barycentric weights that are not finite, negative (below -1e-4) or do not sum to 1 (within 1e-3).
+Vec3 surfacePosition(const TriangleMesh& mesh, const SurfacePoint& point);
+
+// Unit geometric normal of a triangle (counter-clockwise winding). Throws InputError for a
+// degenerate (zero-area) triangle or one out of range.
+Vec3 triangleNormal(const TriangleMesh& mesh, uint32_t triangle);
+
+// The nearest point of the mesh to p (brute force over all triangles; ties keep the lowest
+// triangle index). Throws InputError for an empty mesh.
+SurfacePoint closestSurfacePoint(const TriangleMesh& mesh, const Vec3& p);
+
+struct SheddingTearParams {
+  float width = 0.004f;         // metres across the path
+  float thickness = 0.0008f;    // metres, in the middle of the strip (before head and noise)
+  float baseOffset = 2e-5f;     // metres between skin and the tear's base surface (> 0)
+  float sampleSpacing = 0.0005f;  // metres of arc length between grid rows
+  int acrossSamples = 9;        // grid columns across the path (>= 3; both edges included)
+  float start = 0.01f;          // s in h = s + c t (metres)
+  float speed = 0.01f;          // c in h = s + c t (metres per second)
+  float headLength = 0.003f;    // metres of the grown path shaped as the head (0: no head)
+  float headBulge = 0.5f;       // extra thickness factor of the head (>= 0)
+  float tipFraction = 0.2f;     // width and thickness factor kept at the leading cap, in (0, 1]
+  float noiseDensity = 0.0f;    // probability that an interior grid point gets a bump, [0, 1]
+  float noiseAmplitude = 0.0003f;  // metres, largest bump before smoothing (>= 0)
+  float smoothingEpsilon = 0.0005f;  // MLS epsilon in metres (> 0)
+  int smoothingDegree = 2;      // MLS polynomial degree
+  uint64_t seed = 1;
+};
+
+// The tear's grid in surface coordinates: rows along the path, columns across it (row-major).
+struct SheddingTearStrip {
+  int rows = 0;
+  int columns = 0;
+  std::vector<SurfacePoint> points;  // rows * columns
+  std::vector<Vec2> coordinates;     // (arc length, across offset) on the rest skin, metres
+  std::vector<float> thickness;      // top height above the base, metres (0 at both edges)
+  float length = 0.0f;               // grown arc length h actually built (0 for an empty tear)
+};
+
+// Builds the strip on the rest skin for time t (steps 1, 3, 4 and 5 above). The path must have at
+// least two points. Throws InputError for invalid parameters or path points, or a path running
+// along the skin normal (no tangent direction).
+SheddingTearStrip buildSheddingTearStrip(const TriangleMesh& restSkin, const std::vector<SurfacePoint>& path,
+                                         const SheddingTearParams& params, float t);
+
+// Places a strip on `skin` (the rest skin or any mesh of the same topology) as a closed,
+// outward-oriented mesh with smooth normals (step 2 above). An empty strip gives an empty mesh.
+TriangleMesh sheddingTearMesh(const TriangleMesh& skin, const SheddingTearStrip& strip, float baseOffset);
+
+// Both steps on one skin.
+TriangleMesh buildSheddingTear(const TriangleMesh& skin, const std::vector<SurfacePoint>& path,
+                               const SheddingTearParams& params, float t);
+
+}  // namespace lacrima

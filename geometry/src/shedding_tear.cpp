@@ -1,0 +1,301 @@
+// Shedding tear, seed 004 section 4.2 steps 1-5 (see shedding_tear.hpp for the construction).
+#include "lacrima/geometry/shedding_tear.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "lacrima/geometry/error.hpp"
+#include "lacrima/geometry/moving_least_squares.hpp"
+
+namespace lacrima {
+namespace {
+
+constexpr const char* kWhat = "shedding tear";
+
+void triangleCorners(const TriangleMesh& mesh, uint32_t triangle, Vec3& a, Vec3& b, Vec3& c) {
+  if (size_t(triangle) >= mesh.triangleCount())
+    throw InputError(fmt::format("{}: triangle {} is out of range (the skin has {} triangles)", kWhat, triangle,
+                                 mesh.triangleCount()));
+  const uint32_t* idx = &mesh.indices[size_t(triangle) * 3];
+  for (int k = 0; k < 3; ++k)
+    if (idx[k] >= mesh.positions.size())
+      throw InputError(fmt::format("{}: triangle {} has vertex index {} out of range", kWhat, triangle, idx[k]));
+  a = mesh.positions[idx[0]];
+  b = mesh.positions[idx[1]];
+  c = mesh.positions[idx[2]];
+}
+
+// Closest point on triangle abc to p as barycentric weights (Ericson, Real-Time Collision
+// Detection, 5.1.5).
+Vec3 closestBarycentric(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 ab = b - a, ac = c - a, ap = p - a;
+  const float d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if (d1 <= 0.0f && d2 <= 0.0f) return Vec3(1, 0, 0);
+  const Vec3 bp = p - b;
+  const float d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if (d3 >= 0.0f && d4 <= d3) return Vec3(0, 1, 0);
+  const float vc = d1 * d4 - d3 * d2;
+  if (vc <= 0.0f && d1 >= 0.0f && d3 <= 0.0f) {
+    const float v = d1 / (d1 - d3);
+    return Vec3(1 - v, v, 0);
+  }
+  const Vec3 cp = p - c;
+  const float d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (d6 >= 0.0f && d5 <= d6) return Vec3(0, 0, 1);
+  const float vb = d5 * d2 - d1 * d6;
+  if (vb <= 0.0f && d2 >= 0.0f && d6 <= 0.0f) {
+    const float w = d2 / (d2 - d6);
+    return Vec3(1 - w, 0, w);
+  }
+  const float va = d3 * d6 - d5 * d4;
+  if (va <= 0.0f && (d4 - d3) >= 0.0f && (d5 - d6) >= 0.0f) {
+    const float w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+    return Vec3(0, 1 - w, w);
+  }
+  const float sum = va + vb + vc;
+  if (!(sum > 0.0f)) return Vec3(1, 0, 0);  // degenerate triangle: its first corner
+  const float v = vb / sum, w = vc / sum;
+  return Vec3(1 - v - w, v, w);
+}
+
+uint64_t splitmix64(uint64_t x) {
+  x += 0x9e3779b97f4a7c15ull;
+  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
+  x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
+  return x ^ (x >> 31);
+}
+
+float uniformFromHash(uint64_t h) { return float(h >> 40) * (1.0f / 16777216.0f); }
+
+float smoothstep01(float x) {
+  x = std::clamp(x, 0.0f, 1.0f);
+  return x * x * (3.0f - 2.0f * x);
+}
+
+void validate(const SheddingTearParams& p) {
+  auto bad = [](const char* field, float value, const char* rule) {
+    throw InputError(fmt::format("{}: {} = {} is invalid; it must be {}", kWhat, field, value, rule));
+  };
+  if (!(p.width > 0.0f) || !std::isfinite(p.width)) bad("width", p.width, "finite and > 0");
+  if (!(p.thickness > 0.0f) || !std::isfinite(p.thickness)) bad("thickness", p.thickness, "finite and > 0");
+  if (!(p.baseOffset > 0.0f) || !std::isfinite(p.baseOffset)) bad("baseOffset", p.baseOffset, "finite and > 0");
+  if (!(p.sampleSpacing > 0.0f) || !std::isfinite(p.sampleSpacing))
+    bad("sampleSpacing", p.sampleSpacing, "finite and > 0");
+  if (p.acrossSamples < 3 || p.acrossSamples > 1000) bad("acrossSamples", float(p.acrossSamples), "in 3..1000");
+  if (!std::isfinite(p.start)) bad("start", p.start, "finite");
+  if (!std::isfinite(p.speed)) bad("speed", p.speed, "finite");
+  if (!(p.headLength >= 0.0f) || !std::isfinite(p.headLength)) bad("headLength", p.headLength, "finite and >= 0");
+  if (!(p.headBulge >= 0.0f) || !std::isfinite(p.headBulge)) bad("headBulge", p.headBulge, "finite and >= 0");
+  if (!(p.tipFraction > 0.0f && p.tipFraction <= 1.0f)) bad("tipFraction", p.tipFraction, "in (0, 1]");
+  if (!(p.noiseDensity >= 0.0f && p.noiseDensity <= 1.0f)) bad("noiseDensity", p.noiseDensity, "in [0, 1]");
+  if (!(p.noiseAmplitude >= 0.0f) || !std::isfinite(p.noiseAmplitude))
+    bad("noiseAmplitude", p.noiseAmplitude, "finite and >= 0");
+  if (!(p.smoothingEpsilon > 0.0f) || !std::isfinite(p.smoothingEpsilon))
+    bad("smoothingEpsilon", p.smoothingEpsilon, "finite and > 0");
+}
+
+}  // namespace
+
+Vec3 surfacePosition(const TriangleMesh& mesh, const SurfacePoint& point) {
+  Vec3 a, b, c;
+  triangleCorners(mesh, point.triangle, a, b, c);
+  const Vec3& w = point.barycentric;
+  if (!w.allFinite() || w.minCoeff() < -1e-4f || std::abs(w.sum() - 1.0f) > 1e-3f)
+    throw InputError(fmt::format("{}: barycentric weights ({}, {}, {}) on triangle {} must be >= 0 and sum to 1",
+                                 kWhat, w.x(), w.y(), w.z(), point.triangle));
+  return w.x() * a + w.y() * b + w.z() * c;
+}
+
+Vec3 triangleNormal(const TriangleMesh& mesh, uint32_t triangle) {
+  Vec3 a, b, c;
+  triangleCorners(mesh, triangle, a, b, c);
+  const Vec3 n = (b - a).cross(c - a);
+  const float len = n.norm();
+  if (!(len > 0.0f) || !std::isfinite(len))
+    throw InputError(fmt::format("{}: skin triangle {} has no area, so no normal to lay the tear along", kWhat,
+                                 triangle));
+  return n / len;
+}
+
+SurfacePoint closestSurfacePoint(const TriangleMesh& mesh, const Vec3& p) {
+  if (mesh.triangleCount() == 0) throw InputError(fmt::format("{}: the skin mesh has no triangles", kWhat));
+  SurfacePoint best;
+  float bestDistance = std::numeric_limits<float>::infinity();
+  for (uint32_t t = 0; t < uint32_t(mesh.triangleCount()); ++t) {
+    Vec3 a, b, c;
+    triangleCorners(mesh, t, a, b, c);
+    const Vec3 w = closestBarycentric(p, a, b, c);
+    const float d = (w.x() * a + w.y() * b + w.z() * c - p).squaredNorm();
+    if (d < bestDistance) {
+      bestDistance = d;
+      best = SurfacePoint{t, w};
+    }
+  }
+  return best;
+}
+
+SheddingTearStrip buildSheddingTearStrip(const TriangleMesh& restSkin, const std::vector<SurfacePoint>& path,
+                                         const SheddingTearParams& params, float t) {
+  validate(params);
+  if (!std::isfinite(t)) throw InputError(fmt::format("{}: time {} is not finite", kWhat, t));
+  if (path.size() < 2)
+    throw InputError(fmt::format("{}: the path has {} points; give at least two", kWhat, path.size()));
+
+  // Step 1: the path on the rest skin, as a polyline with cumulative arc length.
+  std::vector<Vec3> control(path.size());
+  std::vector<float> arc(path.size(), 0.0f);
+  for (size_t i = 0; i < path.size(); ++i) {
+    control[i] = surfacePosition(restSkin, path[i]);
+    if (i > 0) arc[i] = arc[i - 1] + (control[i] - control[i - 1]).norm();
+  }
+  const float pathLength = arc.back();
+
+  // Step 5: h = s + c t, the grown part of the path.
+  SheddingTearStrip strip;
+  strip.columns = params.acrossSamples;
+  const float h = std::clamp(params.start + params.speed * t, 0.0f, pathLength);
+  if (!(h >= 0.25f * params.sampleSpacing)) return strip;
+  std::vector<float> rowArc;
+  for (int i = 0; float(i) * params.sampleSpacing < h; ++i) rowArc.push_back(float(i) * params.sampleSpacing);
+  if (h - rowArc.back() < 0.25f * params.sampleSpacing && rowArc.size() > 1) rowArc.back() = h;
+  else rowArc.push_back(h);
+  strip.rows = int(rowArc.size());
+  strip.length = h;
+
+  const int columns = strip.columns;
+  const float headLength = std::min(params.headLength, h);
+  size_t segment = 0;
+  for (int i = 0; i < strip.rows; ++i) {
+    const float a = rowArc[size_t(i)];
+    while (segment + 2 < path.size() && arc[segment + 1] < a) ++segment;
+    const float segmentLength = arc[segment + 1] - arc[segment];
+    const float f = segmentLength > 0.0f ? std::clamp((a - arc[segment]) / segmentLength, 0.0f, 1.0f) : 0.0f;
+    const Vec3 onPath = control[segment] + f * (control[segment + 1] - control[segment]);
+    const SurfacePoint centre = closestSurfacePoint(restSkin, onPath);
+    const Vec3 centrePos = surfacePosition(restSkin, centre);
+    const Vec3 n = triangleNormal(restSkin, centre.triangle);
+    const Vec3 d = control[segment + 1] - control[segment];
+    Vec3 tangent = d - n * n.dot(d);
+    if (!(tangent.norm() > 1e-6f * std::max(d.norm(), 1e-30f)))
+      throw InputError(fmt::format("{}: the path near arc length {} runs along the skin normal; it must run over "
+                                   "the skin",
+                                   kWhat, a));
+    tangent.normalize();
+    const Vec3 across = n.cross(tangent);  // (tangent, across, n) is right-handed
+
+    // Step 3: the head over the last headLength of the grown path.
+    float g = 1.0f, widthFactor = 1.0f;
+    if (headLength > 0.0f && a > h - headLength) {
+      const float x = std::clamp((a - (h - headLength)) / headLength, 0.0f, 1.0f);
+      g = 1.0f + params.headBulge * smoothstep01(2.0f * x);
+      if (x > 0.5f) {
+        const float e = 2.0f * x - 1.0f;
+        const float close = std::max(params.tipFraction, std::sqrt(std::max(0.0f, 1.0f - e * e)));
+        g *= close;
+        widthFactor = close;
+      }
+    }
+    const float w = params.width * widthFactor;
+    for (int j = 0; j < columns; ++j) {
+      const float s = -0.5f + float(j) / float(columns - 1);  // -1/2 .. 1/2 across
+      const float v = s * w;
+      const SurfacePoint sp = (j == (columns - 1) / 2 && columns % 2 == 1)
+                                  ? centre
+                                  : closestSurfacePoint(restSkin, centrePos + across * v);
+      strip.points.push_back(sp);
+      strip.coordinates.emplace_back(a, v);
+      const float q = (j == 0 || j == columns - 1) ? 0.0f : std::max(0.0f, 1.0f - 4.0f * s * s);
+      strip.thickness.push_back(params.thickness * g * q);
+    }
+  }
+
+  // Step 4: upward-only noise, smoothed by MLS (seed 004 eqs. 8-14), never below the plain top.
+  if (params.noiseDensity > 0.0f && params.noiseAmplitude > 0.0f) {
+    std::vector<float> bumps(strip.points.size(), 0.0f);
+    bool any = false;
+    for (int i = 0; i < strip.rows; ++i)
+      for (int j = 1; j + 1 < columns; ++j) {
+        const uint64_t key = splitmix64(splitmix64(params.seed) ^ (uint64_t(uint32_t(i)) << 20) ^ uint64_t(j));
+        if (uniformFromHash(key) < params.noiseDensity) {
+          bumps[size_t(i * columns + j)] = params.noiseAmplitude * (0.5f + 0.5f * uniformFromHash(splitmix64(key)));
+          any = true;
+        }
+      }
+    const int m = MovingLeastSquares::basisSize(2, params.smoothingDegree);
+    if (any && strip.rows >= 2 && int(bumps.size()) >= m) {
+      const std::vector<float> smooth =
+          smoothHeightField(strip.coordinates, bumps, params.smoothingDegree, double(params.smoothingEpsilon));
+      for (int i = 0; i < strip.rows; ++i)
+        for (int j = 1; j + 1 < columns; ++j) {
+          const float s = -0.5f + float(j) / float(columns - 1);
+          const size_t k = size_t(i * columns + j);
+          strip.thickness[k] += std::max(0.0f, smooth[k]) * std::max(0.0f, 1.0f - 4.0f * s * s);
+        }
+    }
+  }
+  return strip;
+}
+
+TriangleMesh sheddingTearMesh(const TriangleMesh& skin, const SheddingTearStrip& strip, float baseOffset) {
+  TriangleMesh mesh;
+  mesh.name = "shedding tear";
+  if (strip.rows == 0) return mesh;
+  const int rows = strip.rows, columns = strip.columns;
+  if (rows < 2 || columns < 3 || strip.points.size() != size_t(rows * columns) ||
+      strip.thickness.size() != strip.points.size())
+    throw InputError(fmt::format("{}: inconsistent strip ({} x {} grid, {} points, {} thicknesses)", kWhat, rows,
+                                 columns, strip.points.size(), strip.thickness.size()));
+  if (!(baseOffset > 0.0f) || !std::isfinite(baseOffset))
+    throw InputError(fmt::format("{}: baseOffset = {} must be finite and > 0", kWhat, baseOffset));
+
+  // Step 2: base grid (rows x columns), then the top's interior columns; the edge columns are shared.
+  const uint32_t topStart = uint32_t(rows * columns);
+  mesh.positions.resize(size_t(rows * columns + rows * (columns - 2)));
+  for (int i = 0; i < rows; ++i)
+    for (int j = 0; j < columns; ++j) {
+      const size_t k = size_t(i * columns + j);
+      const SurfacePoint& sp = strip.points[k];
+      const Vec3 p = surfacePosition(skin, sp);
+      const Vec3 n = triangleNormal(skin, sp.triangle);
+      mesh.positions[k] = p + n * baseOffset;
+      if (j > 0 && j + 1 < columns)
+        mesh.positions[topStart + size_t(i * (columns - 2) + j - 1)] = p + n * (baseOffset + strip.thickness[k]);
+    }
+  auto base = [&](int i, int j) { return uint32_t(i * columns + j); };
+  auto top = [&](int i, int j) {
+    return (j == 0 || j == columns - 1) ? base(i, j) : topStart + uint32_t(i * (columns - 2) + j - 1);
+  };
+  auto tri = [&](uint32_t a, uint32_t b, uint32_t c) {
+    if (a == b || b == c || a == c) return;
+    mesh.indices.insert(mesh.indices.end(), {a, b, c});
+  };
+  for (int i = 0; i + 1 < rows; ++i)
+    for (int j = 0; j + 1 < columns; ++j) {
+      // Base faces the skin (-n): (tangent, across) winding reversed.
+      tri(base(i, j), base(i, j + 1), base(i + 1, j));
+      tri(base(i + 1, j), base(i, j + 1), base(i + 1, j + 1));
+      // Top faces away from the skin (+n).
+      tri(top(i, j), top(i + 1, j), top(i, j + 1));
+      tri(top(i + 1, j), top(i + 1, j + 1), top(i, j + 1));
+    }
+  // Lens-shaped caps: the start faces -tangent, the leading end +tangent.
+  for (int j = 0; j + 1 < columns; ++j) {
+    tri(base(0, j), top(0, j), base(0, j + 1));
+    tri(base(0, j + 1), top(0, j), top(0, j + 1));
+    const int e = rows - 1;
+    tri(base(e, j), base(e, j + 1), top(e, j));
+    tri(base(e, j + 1), top(e, j + 1), top(e, j));
+  }
+  computeSmoothNormals(mesh, false);
+  return mesh;
+}
+
+TriangleMesh buildSheddingTear(const TriangleMesh& skin, const std::vector<SurfacePoint>& path,
+                               const SheddingTearParams& params, float t) {
+  return sheddingTearMesh(skin, buildSheddingTearStrip(skin, path, params, t), params.baseOffset);
+}
+
+}  // namespace lacrima
