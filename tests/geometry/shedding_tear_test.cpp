@@ -143,6 +143,29 @@ TEST(SheddingTear, BaseHoversAndEdgesMeetTheSkin) {
   EXPECT_LT(signedVolume(tear), 2.0 * body);
 }
 
+// Seed 004 section 4.2 step 3: the head is thicker than the body and its leading cap is narrowed
+// to tipFraction of the width.
+TEST(SheddingTear, RoundedHeadAtTheLeadingEnd) {
+  const TriangleMesh rest = flatSkin();
+  const SheddingTearParams params;
+  const SheddingTearStrip strip = buildSheddingTearStrip(rest, tearPath(rest), params, 1.0f);
+  const int c = strip.columns, mid = c / 2;
+  auto at = [&](int i, int j) { return surfacePosition(rest, strip.points[size_t(i * c + j)]); };
+  const int last = strip.rows - 1;
+  EXPECT_NEAR((at(last, 0) - at(last, c - 1)).norm(), params.tipFraction * params.width, 1e-5f);
+  EXPECT_NEAR((at(0, 0) - at(0, c - 1)).norm(), params.width, 1e-5f);
+  int thickest = 0;
+  for (int i = 0; i < strip.rows; ++i)
+    if (strip.thickness[size_t(i * c + mid)] > strip.thickness[size_t(thickest * c + mid)]) thickest = i;
+  EXPECT_GT(strip.coordinates[size_t(thickest * c)].x(), strip.length - params.headLength);
+  EXPECT_LT(strip.coordinates[size_t(thickest * c)].x(), strip.length);
+  EXPECT_NEAR(strip.thickness[size_t(thickest * c + mid)], params.thickness * (1 + params.headBulge),
+              0.05f * params.thickness);
+  EXPECT_FLOAT_EQ(strip.thickness[size_t(mid)], params.thickness);  // the body at the start
+  EXPECT_NEAR(strip.thickness[size_t(last * c + mid)],
+              params.thickness * (1 + params.headBulge) * params.tipFraction, 1e-7f);
+}
+
 TEST(SheddingTear, GrowsMonotonically) {
   const TriangleMesh rest = flatSkin();
   const std::vector<SurfacePoint> path = tearPath(rest);

@@ -46,6 +46,10 @@
 // of the skin mesh can dip below the crease by about (sample spacing) x (crease angle) / 4, which a
 // strip finer than the face mesh and baseOffset keep small. Sampling is brute force over the skin's
 // triangles (fine for the extracted area around a tear, slow for a whole face).
+// The across direction follows the path's polyline segments, so a path turning more sharply than a
+// radius of width / 2 makes neighbouring rows cross (give smooth, finely spaced paths). The step 4
+// MLS fit uses every grid point for every evaluation (its weight has no compact support), so its
+// cost grows with the square of the number of grid points.
 #include <cstdint>
 #include <vector>
 
