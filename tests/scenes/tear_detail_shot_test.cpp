@@ -126,6 +126,53 @@ TEST(DetailShot, DetailDisplacesOnlyInsideItsRegionAndFrameRange) {
   EXPECT_NE(faceMesh(buildFrame(shot, 2), shot).mesh.positions, faceMesh(buildFrame(shot, 3), shot).mesh.positions);
 }
 
+TEST(DetailShot, MovedVerticesLieInsideTheEllipseOfTheSkinFrame) {
+  const Shot shot = loadShot(writeShot("detail_frame.json", faceShot(detail("1"))));
+  const MeshInstance rest = faceMesh(buildFrame(shot, 1), shot);
+  const Frame frame = buildFrame(shot, 3);
+  const MeshInstance& face = faceMesh(frame, shot);
+  // The local frame as documented: interpolated skin normal at the snapped centre, x = +x projected.
+  const ShotSurfacePoint& sp = shot.details[0].surfacePoint;
+  const uint32_t* tri = &rest.mesh.indices[3 * size_t(sp.triangle)];
+  ASSERT_EQ(rest.mesh.normals.size(), rest.mesh.positions.size());
+  const Vec3 normal = (sp.barycentric.x() * rest.mesh.normals[tri[0]] + sp.barycentric.y() * rest.mesh.normals[tri[1]] +
+                       sp.barycentric.z() * rest.mesh.normals[tri[2]]).normalized();
+  const Vec3 tx = (Vec3(Vec3::UnitX()) - normal.x() * normal).normalized();
+  const Vec3 ty = normal.cross(tx);
+  size_t moved = 0, innerStill = 0;
+  for (size_t i = 0; i < rest.mesh.positions.size(); ++i) {
+    const Vec3 d = rest.mesh.positions[i] - sp.reference;
+    const float rho = std::hypot(d.dot(tx) / 0.01f, d.dot(ty) / 0.008f);
+    const bool near = std::abs(d.dot(normal)) <= 0.01f;
+    if (face.mesh.positions[i] != rest.mesh.positions[i]) {
+      ++moved;
+      EXPECT_LT(rho, 1.0f + 1e-4f) << "vertex " << i;
+      EXPECT_TRUE(near) << "vertex " << i;
+      // Along the skin normal of the vertex.
+      const Vec3 step = face.mesh.positions[i] - rest.mesh.positions[i];
+      EXPECT_GT(std::abs(step.normalized().dot(rest.mesh.normals[i])), 0.999f) << "vertex " << i;
+    } else if (rho < 0.4f && near) {
+      ++innerStill;  // possible only where the pattern height is exactly 0
+    }
+  }
+  // Normals change only on triangles with a moved vertex.
+  std::vector<bool> touched(rest.mesh.positions.size(), false);
+  for (size_t t = 0; t < rest.mesh.triangleCount(); ++t) {
+    const uint32_t* v = &rest.mesh.indices[3 * t];
+    bool any = false;
+    for (int k = 0; k < 3; ++k) any = any || face.mesh.positions[v[k]] != rest.mesh.positions[v[k]];
+    if (any)
+      for (int k = 0; k < 3; ++k) touched[v[k]] = true;
+  }
+  for (size_t i = 0; i < touched.size(); ++i) {
+    if (!touched[i]) {
+      ASSERT_EQ(face.mesh.normals[i], rest.mesh.normals[i]) << "vertex " << i;
+    }
+  }
+  EXPECT_GT(moved, 10u);
+  EXPECT_LE(innerStill, moved / 20) << "nearly every vertex of the inner region moves";
+}
+
 TEST(DetailShot, KeyedAmplitudeScalesTheDisplacementAndZeroLeavesTheFace) {
   const Shot shot = loadShot(writeShot(
       "detail_keys.json", faceShot(detail(R"({"keys": [[2, 0], [4, 2]], "interpolation": "linear"})"))));
