@@ -7,6 +7,8 @@
 #include <algorithm>
 
 #include "asset_pose.hpp"
+#include "lacrima/geometry/detail_patterns.hpp"
+#include "lacrima/geometry/dripping_tear.hpp"
 #include "lacrima/geometry/shapes.hpp"
 #include "lacrima/scenes/shot.hpp"
 #include "shot_geometry.hpp"
@@ -99,6 +101,97 @@ void addShape(const ShotShape& shape, const ShutterTimes& shutter, const PosedAs
   frame.meshes.push_back(std::move(mesh));
 }
 
+// The dripping tear's mesh at a (fractional) frame, placed in the world.
+TriangleMesh tearMesh(const Shot& shot, const ShotTear& tear, double frame) {
+  TriangleMesh mesh = makeDrippingTear(tear.params, float(tear.secondsAt(frame, shot.fps)), tear.rings, tear.segments);
+  placeDrippingTear(mesh, tear.origin, tear.gravity);
+  return mesh;
+}
+
+void addTear(const Shot& shot, const ShotTear& tear, int frameNumber, const ShutterTimes& shutter, Frame& frame) {
+  if (frameNumber < tear.startFrame) return;  // the drop has not started yet
+  MeshInstance instance(tearMesh(shot, tear, shutter.open), tear.materialId);
+  instance.mesh.name = "tear";
+  if (shutter.blurred()) {
+    TriangleMesh atClose = tearMesh(shot, tear, shutter.close);
+    if (atClose.positions != instance.mesh.positions) {
+      instance.positionsAtClose = std::move(atClose.positions);
+      instance.normalsAtClose = std::move(atClose.normals);
+    }
+  }
+  frame.meshes.push_back(std::move(instance));
+}
+
+// The detail's displacement of the part's posed primitives at a (fractional) frame, in place.
+// The local frame comes from the posed skin at the detail's surface point: its centre there,
+// the normal the interpolated skin normal, tangent x the projection of the detail's tangent
+// (world +x by default; +y, then +z when that is along the normal).
+void applyDetail(const Shot& shot, const ShotDetail& detail, double frame, std::vector<TriangleMesh>& posed) {
+  const float amplitude = detail.amplitude.at(frame);
+  if (!(amplitude > 0.0f) || detail.scale == 0.0f) return;
+  const Vec3 center = shotfile::attachedPoint(posed, detail.surfacePoint);
+  const Vec3 normal = shotfile::attachedNormal(posed, detail.surfacePoint);
+  Vec3 tangentX = Vec3::Zero();
+  for (const Vec3& candidate : {detail.tangent.value_or(Vec3(Vec3::UnitX())), Vec3(Vec3::UnitY()), Vec3(Vec3::UnitZ())}) {
+    const Vec3 projected = candidate.normalized() - candidate.normalized().dot(normal) * normal;
+    if (projected.norm() > 1e-3f) {
+      tangentX = projected.normalized();
+      break;
+    }
+  }
+  DetailRegion region;
+  region.center = center;
+  region.tangentX = tangentX;
+  region.tangentY = normal.cross(tangentX).normalized();
+  region.semiAxisA = detail.semiAxisA;
+  region.semiAxisB = detail.semiAxisB;
+  region.innerRadius = detail.innerRadius;
+  // Keeps surfaces far off the skin plane (the other side of a head, the mouth's inside) out.
+  region.maxNormalDistance = std::max(detail.semiAxisA, detail.semiAxisB);
+  DetailPatternApplication application;
+  application.patterns = detail.patterns;
+  application.time = float((frame - detail.startFrame) / shot.fps);
+  application.heightScale = detail.scale * amplitude;
+  application.coordinateScale = detail.coordinateScale;
+  application.selection = detail.selection;
+  const ShotAsset& asset = shot.assets[detail.asset];
+  for (size_t i = 0; i < posed.size(); ++i) {
+    if (asset.gltf->primitives[i].part != detail.part) continue;
+    TriangleMesh& mesh = posed[i];
+    TriangleMesh before = mesh;
+    if (before.normals.size() != before.positions.size()) computeSmoothNormals(before);
+    if (applyDetailPattern(mesh, before.normals, region, application) == 0) continue;
+    // New normals only around the moved vertices, so the rest of the skin keeps its normals bitwise.
+    TriangleMesh renormalised = mesh;
+    computeSmoothNormals(renormalised);
+    if (mesh.normals.size() != mesh.positions.size()) {
+      mesh.normals = std::move(renormalised.normals);
+      continue;
+    }
+    for (size_t t = 0; t < mesh.triangleCount(); ++t) {
+      const uint32_t* v = &mesh.indices[3 * t];
+      if (mesh.positions[v[0]] == before.positions[v[0]] && mesh.positions[v[1]] == before.positions[v[1]] &&
+          mesh.positions[v[2]] == before.positions[v[2]])
+        continue;
+      for (int k = 0; k < 3; ++k) mesh.normals[v[k]] = renormalised.normals[v[k]];
+    }
+  }
+}
+
+// Applies the shot's details active at this frame to the posed assets (at shutter open and close).
+void applyDetails(const Shot& shot, int frameNumber, const ShutterTimes& shutter, PosedAssets& open,
+                  std::optional<PosedAssets>& close) {
+  for (const ShotDetail& detail : shot.details) {
+    if (!detail.activeAt(frameNumber) || open[detail.asset].empty()) continue;
+    if (close) {
+      // A still asset is not posed again at close; its detail may move, so it gets its own copy.
+      if ((*close)[detail.asset].empty()) (*close)[detail.asset] = open[detail.asset];
+      applyDetail(shot, detail, shutter.close, (*close)[detail.asset]);
+    }
+    applyDetail(shot, detail, shutter.open, open[detail.asset]);
+  }
+}
+
 // The renderer camera at a time: keyed look-at cameras are placed again, the rest as loaded.
 Camera cameraAt(const ShotCamera& shotCamera, double frame) {
   Camera camera = shotCamera.camera;
@@ -122,12 +215,14 @@ Frame buildFrame(const Shot& shot, int frameNumber) {
 
   Frame frame;
   frame.materials = shot.frameMaterials();
-  const PosedAssets open = poseAssets(shot, shutter.open, nullptr);
-  const std::optional<PosedAssets> close =
+  PosedAssets open = poseAssets(shot, shutter.open, nullptr);
+  std::optional<PosedAssets> close =
       shutter.blurred() ? std::optional<PosedAssets>(poseAssets(shot, shutter.close, &open)) : std::nullopt;
+  applyDetails(shot, frameNumber, shutter, open, close);
   const PosedAssets* closePtr = close ? &*close : nullptr;
   for (size_t a = 0; a < shot.assets.size(); ++a) addAssetMeshes(shot, a, open, closePtr, frame);
   for (const ShotShape& shape : shot.shapes) addShape(shape, shutter, open, closePtr, frame);
+  for (const ShotTear& tear : shot.tears) addTear(shot, tear, frameNumber, shutter, frame);
 
   frame.lights = shot.lights;
   for (size_t i = 0; i < frame.lights.size() && i < shot.lightCenterCurves.size(); ++i)

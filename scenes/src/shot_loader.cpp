@@ -15,6 +15,7 @@
 #include "shot_geometry.hpp"
 #include "animation_reader.hpp"
 #include "asset_animation_reader.hpp"
+#include "asset_pose.hpp"
 #include "suggest.hpp"
 #include "surface_attachment.hpp"
 
@@ -27,10 +28,13 @@ using namespace shotfile;
 
 const std::vector<std::string> kRootKeys = {"version",   "frames", "output",      "colorConfig",
                                             "render",    "camera", "environment", "background",
-                                            "materials", "lights", "assets",      "shapes"};
+                                            "materials", "lights", "assets",      "shapes",
+                                            "tears",     "details"};
 const std::vector<std::string> kMaterialTypes = {"diffuse", "skin", "water", "rough_dielectric"};
 const std::vector<std::string> kLightTypes = {"rectangle", "sphere"};
 const std::vector<std::string> kShapeTypes = {"sphere", "ellipsoid", "rectangle"};
+const std::vector<std::string> kTearTypes = {"dripping"};
+const std::vector<std::string> kDetailPatterns = {"forehead", "eyeCorner", "cheek", "frown", "dimple", "eyePouch"};
 
 constexpr int kSupportedVersion = 1;
 
@@ -129,6 +133,10 @@ class ShotReader {
       readArray(*v, "/lights", "lights", [&](const Json& e, const std::string& p) { readLight(e, p); });
     if (const Json* v = o.find("shapes"))
       readArray(*v, "/shapes", "shapes", [&](const Json& e, const std::string& p) { readShape(e, p); });
+    if (const Json* v = o.find("tears"))
+      readArray(*v, "/tears", "tears", [&](const Json& e, const std::string& p) { readTear(e, p); });
+    if (const Json* v = o.find("details"))
+      readArray(*v, "/details", "details", [&](const Json& e, const std::string& p) { readDetail(e, p); });
   }
 
  private:
@@ -382,33 +390,43 @@ class ShotReader {
     shot_.shutter = std::make_pair(*open, *close);
   }
 
-  // {"asset": name, "part": part name}: the shape follows that part's surface.
-  void readAttachment(const Json& v, const std::string& pointer, ShotShape& shape) {
-    ObjectReader o(c_, v, pointer, {"asset", "part"});
+  // The required "asset" and "part" members of o: the index of the asset, or nullopt (reported).
+  std::optional<size_t> readAssetPart(ObjectReader& o, std::string& partOut) {
     const auto assetName = o.string("asset", true);
     const auto part = o.string("part", true);
-    if (!assetName || !part) return;
+    if (!assetName || !part) return std::nullopt;
     std::vector<std::string> assetNames;
-    const ShotAsset* asset = nullptr;
-    for (const ShotAsset& a : shot_.assets) {
-      assetNames.push_back(a.name);
-      if (a.name == *assetName) asset = &a;
+    std::optional<size_t> index;
+    for (size_t a = 0; a < shot_.assets.size(); ++a) {
+      assetNames.push_back(shot_.assets[a].name);
+      if (shot_.assets[a].name == *assetName) index = a;
     }
-    if (!asset) {
+    if (!index) {
       o.error("asset", fmt::format("undefined asset '{}'{}", *assetName,
                                    suggestionOrList(*assetName, assetNames, "assets", "the shot has no assets")));
-      return;
+      return std::nullopt;
     }
-    if (!asset->gltf) return;  // its loading error is reported
+    const ShotAsset& asset = shot_.assets[*index];
+    if (!asset.gltf) return std::nullopt;  // its loading error is reported
     std::vector<std::string> parts;
-    for (const GltfPrimitive& p : asset->gltf->primitives) appendUnique(parts, p.part);
+    for (const GltfPrimitive& p : asset.gltf->primitives) appendUnique(parts, p.part);
     if (std::find(parts.begin(), parts.end(), *part) == parts.end()) {
       o.error("part", fmt::format("asset '{}' has no part '{}'{}", *assetName, *part,
                                   suggestionOrList(*part, parts, "its parts", "it has no primitives")));
-      return;
+      return std::nullopt;
     }
-    shape.attachAsset = *assetName;
-    shape.attachPart = *part;
+    partOut = *part;
+    return index;
+  }
+
+  // {"asset": name, "part": part name}: the shape follows that part's surface.
+  void readAttachment(const Json& v, const std::string& pointer, ShotShape& shape) {
+    ObjectReader o(c_, v, pointer, {"asset", "part"});
+    std::string part;
+    if (const auto index = readAssetPart(o, part)) {
+      shape.attachAsset = shot_.assets[*index].name;
+      shape.attachPart = part;
+    }
   }
 
   // ---- assets ------------------------------------------------------------------------------
@@ -861,6 +879,145 @@ class ShotReader {
     }
     if (c_.errorCount() == before) shot_.shapes.push_back(shape);
   }
+
+  // ---- tears and details -------------------------------------------------------------------
+
+  // A required shot-material member; false when missing or undefined (reported).
+  bool readMaterialMember(ObjectReader& o, std::string& name, uint32_t& id) {
+    const Json* m = o.find("material");
+    if (!m) {
+      o.missing("material", "the name of a material in 'materials'");
+      return false;
+    }
+    const int found = materialReference(*m, o.at("material"));
+    if (found < 0) return false;
+    name = m->get<std::string>();
+    id = uint32_t(found);
+    return true;
+  }
+
+  void readTear(const Json& v, const std::string& pointer) {
+    const auto type = readType(v, pointer, kTearTypes, "tear");
+    if (!type) return;
+    ObjectReader o(c_, v, pointer,
+                   {"type", "asset", "part", "start", "startFrame", "alpha", "beta", "lambda", "headAngle", "minTime",
+                    "gravity", "material", "rings", "segments"});
+    if (!o.ok()) return;
+    const size_t before = c_.errorCount();
+    ShotTear tear;
+    const auto asset = readAssetPart(o, tear.part);
+    if (asset) tear.asset = *asset;
+    if (auto x = o.vec3("start", true)) tear.start = *x;
+    if (auto x = o.number("startFrame", Range::any(), true)) tear.startFrame = *x;
+    if (auto x = o.number("alpha", Range::above(0), true)) tear.params.alpha = float(*x);
+    if (auto x = o.number("beta", Range::above(0), true)) tear.params.beta = float(*x);
+    if (auto x = o.number("lambda", Range::any(), true)) tear.params.lambda = float(*x);
+    if (auto x = o.number("headAngle", Range::openClosed(0, 1.5))) tear.params.headAngle = float(*x);
+    if (auto x = o.number("minTime", Range::above(0))) tear.params.minTime = float(*x);
+    if (auto x = o.vec3("gravity")) {
+      if (*x == Vec3::Zero())
+        o.error("gravity", "the gravity direction must not be zero");
+      else
+        tear.gravity = *x;
+    }
+    if (auto x = o.integer("rings", Range::closed(2, 1024))) tear.rings = int(*x);
+    if (auto x = o.integer("segments", Range::closed(3, 1024))) tear.segments = int(*x);
+    readMaterialMember(o, tear.material, tear.materialId);
+    if (c_.errorCount() == before && asset) shot_.tears.push_back(tear);
+  }
+
+  // One basic pattern: {"pattern": name, "alpha", "beta", "gamma"} (the object itself for a
+  // single pattern, so it may hold other keys; those are checked by the caller's reader).
+  std::optional<BasicDetailPattern> readPattern(ObjectReader& o) {
+    const Json* name = o.find("pattern");
+    if (!name) {
+      o.missing("pattern", "one of " + quotedList(kDetailPatterns));
+      return std::nullopt;
+    }
+    const auto text = readString(c_, *name, o.at("pattern"));
+    if (!text) return std::nullopt;
+    BasicDetailPattern pattern;
+    const auto it = std::find(kDetailPatterns.begin(), kDetailPatterns.end(), *text);
+    if (it == kDetailPatterns.end()) {
+      const std::string suggestion = didYouMean(*text, kDetailPatterns);
+      o.error("pattern", suggestion.empty() ? fmt::format("unknown detail pattern '{}' (expected one of {})", *text,
+                                                          quotedList(kDetailPatterns))
+                                            : fmt::format("unknown detail pattern '{}'{}", *text, suggestion));
+      return std::nullopt;
+    }
+    static constexpr DetailPatternKind kinds[] = {DetailPatternKind::ForeheadWrinkles, DetailPatternKind::EyeCornerWrinkles,
+                                                  DetailPatternKind::CheekWrinkles,    DetailPatternKind::Frown,
+                                                  DetailPatternKind::Dimple,           DetailPatternKind::EyePouch};
+    pattern.kind = kinds[it - kDetailPatterns.begin()];
+    if (auto x = o.number("alpha", Range::any())) pattern.alpha = float(*x);
+    if (auto x = o.number("beta", Range::any())) pattern.beta = float(*x);
+    if (auto x = o.number("gamma", Range::any())) pattern.gamma = float(*x);
+    return pattern;
+  }
+
+  void readDetail(const Json& v, const std::string& pointer) {
+    const std::vector<std::string> regionKeys = {"asset",     "part",     "center",        "tangent",
+                                                 "extent",    "innerRadius", "scale",      "coordinateScale",
+                                                 "startFrame", "endFrame", "amplitude",    "validFraction",
+                                                 "seed"};
+    const bool sum = v.is_object() && v.contains("patterns");
+    std::vector<std::string> keys = regionKeys;
+    if (sum)
+      keys.push_back("patterns");
+    else
+      keys.insert(keys.end(), {"pattern", "alpha", "beta", "gamma"});
+    ObjectReader o(c_, v, pointer, keys);
+    if (!o.ok()) return;
+    const size_t before = c_.errorCount();
+    ShotDetail detail;
+    if (sum) {
+      const Json& list = *o.find("patterns");
+      if (!list.is_array() || list.empty()) {
+        o.error("patterns", "expected a non-empty array of patterns {\"pattern\": name, \"alpha\", \"beta\", "
+                            "\"gamma\"}, found " + describeValue(list));
+      } else {
+        for (size_t i = 0; i < list.size(); ++i) {
+          ObjectReader p(c_, list[i], childPointer(o.at("patterns"), i), {"pattern", "alpha", "beta", "gamma"});
+          if (!p.ok()) continue;
+          if (auto pattern = readPattern(p)) detail.patterns.push_back(*pattern);
+        }
+      }
+    } else if (auto pattern = readPattern(o)) {
+      detail.patterns.push_back(*pattern);
+    }
+    const auto asset = readAssetPart(o, detail.part);
+    if (asset) detail.asset = *asset;
+    if (auto x = o.vec3("center", true)) detail.center = *x;
+    if (auto x = o.vec3("tangent")) {
+      if (*x == Vec3::Zero())
+        o.error("tangent", "the tangent direction must not be zero");
+      else
+        detail.tangent = *x;
+    }
+    if (const Json* e = o.find("extent")) {
+      if (auto x = readVec2(c_, *e, o.at("extent"), Range::above(0), "[a, b]")) {
+        detail.semiAxisA = x->x();
+        detail.semiAxisB = x->y();
+      }
+    } else {
+      o.missing("extent", "[a, b], the semi-axes of the region's ellipse in metres");
+    }
+    if (auto x = o.number("innerRadius", {0, 1, false, true})) detail.innerRadius = float(*x);
+    if (auto x = o.number("scale", Range::any(), true)) detail.scale = float(*x);
+    if (auto x = o.number("coordinateScale", Range::above(0))) detail.coordinateScale = float(*x);
+    const auto startFrame = o.number("startFrame", Range::any(), true);
+    const auto endFrame = o.number("endFrame", Range::any(), true);
+    if (startFrame) detail.startFrame = *startFrame;
+    if (endFrame) detail.endFrame = *endFrame;
+    if (startFrame && endFrame && *endFrame < *startFrame)
+      o.error("endFrame", fmt::format("the detail must end at or after its start: endFrame {} < startFrame {}",
+                                      *endFrame, *startFrame));
+    if (const Json* a = o.find("amplitude"))
+      if (auto x = readAnimatedNumber(c_, *a, o.at("amplitude"), Range::atLeast(0))) detail.amplitude = *x;
+    if (auto x = o.number("validFraction", Range::closed(0, 1))) detail.selection.fraction = float(*x);
+    if (auto x = o.unsignedInteger("seed")) detail.selection.seed = *x;
+    if (c_.errorCount() == before && asset) shot_.details.push_back(detail);
+  }
 };
 
 std::optional<std::string> readTextFile(const fs::path& path, std::string& error) {
@@ -910,6 +1067,7 @@ Shot loadShot(const std::filesystem::path& path) {
   ShotReader(checker, shot).read(*json);
   if (checker.errorCount() > 0) throw ShotError(checker.diagnostics());
   resolveAttachments(shot);
+  resolveTearsAndDetails(shot);
   return shot;
 }
 

@@ -48,9 +48,12 @@ Vec3 pointOnTriangle(const TriangleMesh& mesh, uint32_t triangle, const Vec3& ba
 }
 
 // The nearest surface point of the part's primitives to `target`.
-ShotShape::Attachment nearestOnPart(const Shot& shot, size_t assetIndex, const std::string& part, const Vec3& target) {
+}  // namespace
+
+ShotShape::Attachment nearestSurfacePoint(const Shot& shot, size_t assetIndex, const std::string& part,
+                                          const Vec3& target, double frame) {
   const ShotAsset& asset = shot.assets[assetIndex];
-  const AssetPose pose = assetPoseAt(asset, double(shot.frameStart));
+  const AssetPose pose = assetPoseAt(asset, frame);
   ShotShape::Attachment best;
   best.asset = assetIndex;
   float bestDistance2 = std::numeric_limits<float>::infinity();
@@ -74,6 +77,12 @@ ShotShape::Attachment nearestOnPart(const Shot& shot, size_t assetIndex, const s
   return best;
 }
 
+namespace {
+
+ShotShape::Attachment nearestOnPart(const Shot& shot, size_t assetIndex, const std::string& part, const Vec3& target) {
+  return nearestSurfacePoint(shot, assetIndex, part, target, double(shot.frameStart));
+}
+
 }  // namespace
 
 void resolveAttachments(Shot& shot) {
@@ -85,6 +94,33 @@ void resolveAttachments(Shot& shot) {
       shape.attachment = nearestOnPart(shot, a, shape.attachPart, center);
     }
   }
+}
+
+void resolveTearsAndDetails(Shot& shot) {
+  for (ShotTear& tear : shot.tears) {
+    if (!shot.assets[tear.asset].gltf) continue;
+    tear.surfacePoint = nearestSurfacePoint(shot, tear.asset, tear.part, tear.start, double(shot.frameStart));
+    // The skin point follows the face until the drop starts, then the drop leaves from there.
+    const ShotAsset& asset = shot.assets[tear.asset];
+    const AssetPose pose = assetPoseAt(asset, tear.startFrame);
+    const TriangleMesh mesh = posedPrimitive(asset, pose, tear.surfacePoint.primitive);
+    tear.origin = pointOnTriangle(mesh, tear.surfacePoint.triangle, tear.surfacePoint.barycentric);
+  }
+  for (ShotDetail& detail : shot.details)
+    if (shot.assets[detail.asset].gltf)
+      detail.surfacePoint = nearestSurfacePoint(shot, detail.asset, detail.part, detail.center, double(shot.frameStart));
+}
+
+Vec3 attachedNormal(const std::vector<TriangleMesh>& posedPrimitives, const ShotShape::Attachment& attachment) {
+  const TriangleMesh& mesh = posedPrimitives[attachment.primitive];
+  const uint32_t* t = &mesh.indices[3 * size_t(attachment.triangle)];
+  const Vec3 geometric = (mesh.positions[t[1]] - mesh.positions[t[0]]).cross(mesh.positions[t[2]] - mesh.positions[t[0]]);
+  if (mesh.normals.size() == mesh.positions.size()) {
+    const Vec3 n = attachment.barycentric.x() * mesh.normals[t[0]] + attachment.barycentric.y() * mesh.normals[t[1]] +
+                   attachment.barycentric.z() * mesh.normals[t[2]];
+    if (n.squaredNorm() > 1e-12f) return n.normalized();
+  }
+  return geometric.squaredNorm() > 0.0f ? geometric.normalized() : Vec3(Vec3::UnitZ());
 }
 
 Vec3 attachedPoint(const std::vector<TriangleMesh>& posedPrimitives, const ShotShape::Attachment& attachment) {

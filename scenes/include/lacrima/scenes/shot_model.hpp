@@ -10,6 +10,8 @@
 #include <utility>
 #include <vector>
 
+#include "lacrima/geometry/detail_patterns.hpp"
+#include "lacrima/geometry/dripping_tear.hpp"
 #include "lacrima/geometry/face_controls.hpp"
 #include "lacrima/geometry/face_rig.hpp"
 #include "lacrima/geometry/gltf_asset.hpp"
@@ -156,6 +158,52 @@ struct ShotShape {
   std::string attachAsset, attachPart;  // as written (resolved into attachment after the assets)
 };
 
+// A point on an asset's surface (triangle and barycentric coordinates of a posed primitive).
+using ShotSurfacePoint = ShotShape::Attachment;
+
+// A dripping tear (seed 004 section 4.1, eq. 7; docs/shot-format.md "tears"): from startFrame on,
+// a drop mesh at t = (frame - startFrame) / fps seconds leaves the skin point `origin` along
+// `gravity`. Before startFrame there is no drop.
+struct ShotTear {
+  size_t asset = 0;       // index into Shot::assets
+  std::string part;       // the part the start point is snapped to
+  Vec3 start = Vec3::Zero();  // as written
+  double startFrame = 1.0;
+  DrippingTearParams params;
+  Vec3 gravity = Vec3(0, -1, 0);  // non-zero; normalised by placeDrippingTear
+  int rings = 32, segments = 48;
+  std::string material;
+  uint32_t materialId = 0;
+  // Resolved by loadShot: the nearest surface point of the part to `start` at the shot's first
+  // frame, and where that skin point is at startFrame (the drop leaves from there).
+  ShotSurfacePoint surfacePoint;
+  Vec3 origin = Vec3::Zero();
+
+  // Seconds since the drop started at a (fractional) frame.
+  double secondsAt(double frame, double fps) const { return (frame - startFrame) / fps; }
+};
+
+// Animated skin detail (seed 004 section 3; docs/shot-format.md "details"): a sum of basic
+// patterns displaced onto the part's posed primitives in an ellipse around a skin point, at
+// frames startFrame..endFrame.
+struct ShotDetail {
+  std::vector<BasicDetailPattern> patterns;
+  size_t asset = 0;
+  std::string part;
+  Vec3 center = Vec3::Zero();           // as written; snapped to the surface at the first frame
+  std::optional<Vec3> tangent;          // world direction projected to tangent x (default +x)
+  float semiAxisA = 0.01f, semiAxisB = 0.01f;  // metres
+  float innerRadius = 0.5f;
+  float scale = 0.001f;                 // metres of displacement per unit of pattern height
+  float coordinateScale = 1.0f;         // pattern units per metre in the tangent plane
+  double startFrame = 1.0, endFrame = 1.0;
+  AnimatedFloat amplitude{1.0f, nullptr};  // multiplies scale; >= 0
+  ValidVertexSelection selection;
+  ShotSurfacePoint surfacePoint;        // resolved by loadShot
+
+  bool activeAt(int frame) const { return frame >= startFrame && frame <= endFrame; }
+};
+
 struct Shot {
   std::filesystem::path path;  // the shot file, as given to loadShot
   int version = 1;
@@ -185,6 +233,8 @@ struct Shot {
   std::vector<AnimatedFloat> lightIntensities;  // per light: multiplies its radiance (default 1)
   std::vector<ShotAsset> assets;
   std::vector<ShotShape> shapes;
+  std::vector<ShotTear> tears;
+  std::vector<ShotDetail> details;
 
   // Things that load but deserve a look (glTF loader caveats, environment texels that were
   // NaN/Inf/negative and set to 0). Each message starts with "warning: ". The tool prints them.
