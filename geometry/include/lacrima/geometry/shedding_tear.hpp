@@ -55,27 +55,9 @@
 
 #include "lacrima/geometry/math.hpp"
 #include "lacrima/geometry/mesh.hpp"
+#include "lacrima/geometry/surface_point.hpp"
 
 namespace lacrima {
-
-// A point on a triangle mesh: triangle index and barycentric weights of its three corners
-// (non-negative, summing to 1). Its position follows any deformation of the mesh.
-struct SurfacePoint {
-  uint32_t triangle = 0;
-  Vec3 barycentric = Vec3(1.0f, 0.0f, 0.0f);
-};
-
-// Position of a SurfacePoint on `mesh`. Throws InputError for a triangle out of range or
-// barycentric weights that are not finite, negative (below -1e-4) or do not sum to 1 (within 1e-3).
-Vec3 surfacePosition(const TriangleMesh& mesh, const SurfacePoint& point);
-
-// Unit geometric normal of a triangle (counter-clockwise winding). Throws InputError for a
-// degenerate (zero-area) triangle or one out of range.
-Vec3 triangleNormal(const TriangleMesh& mesh, uint32_t triangle);
-
-// The nearest point of the mesh to p (brute force over all triangles; ties keep the lowest
-// triangle index). Throws InputError for an empty mesh.
-SurfacePoint closestSurfacePoint(const TriangleMesh& mesh, const Vec3& p);
 
 struct SheddingTearParams {
   float width = 0.004f;         // metres across the path
