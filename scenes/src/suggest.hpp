@@ -6,12 +6,9 @@
 
 namespace lacrima::shotfile {
 
-// Levenshtein edit distance (insertions, deletions, substitutions each cost 1).
-size_t editDistance(std::string_view a, std::string_view b);
-
-// The candidate closest to `name`: an exact match ignoring case first, otherwise the smallest
-// edit distance (case-insensitive, ties to the earliest candidate) when it is at most
-// max(2, length/3); "" when nothing is close enough.
+// lacrima::closestName (geometry/name_suggestion.hpp: case-insensitive edit distance, case
+// differences breaking ties) when it is within max(2, length/3) edits; "" when nothing is close
+// enough to be a likely typo.
 std::string closestName(std::string_view name, const std::vector<std::string>& candidates);
 
 // "; did you mean 'x'?" or "" when there is no close candidate.
