@@ -9,22 +9,16 @@
 #include <string>
 #include <vector>
 
-#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+
+#include "support/test_directory.hpp"
 
 namespace lacrima::test {
 
 inline std::filesystem::path faceAssetPath() { return LACRIMA_SOURCE_DIR "/scenes/assets/ict-face/ict_face.glb"; }
 
-// One directory per test: ctest runs tests as parallel processes, and two tests writing the same
-// file name would read each other's half-written files.
-inline std::filesystem::path testOutputDir() {
-  const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const std::string testName = info ? std::string(info->test_suite_name()) + "." + info->name() : "no_test";
-  std::filesystem::path dir = std::filesystem::path(LACRIMA_TEST_OUTPUT_DIR) / "geometry" / testName;
-  std::filesystem::create_directories(dir);
-  return dir;
-}
+// The running test's own output directory (see support/test_directory.hpp).
+inline std::filesystem::path testOutputDir() { return testDirectory("geometry"); }
 
 inline std::vector<unsigned char> readBytes(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);

@@ -12,6 +12,8 @@ namespace lacrima {
 namespace {
 
 using test::shotErrorOf;
+using test::expectSingleError;
+using test::firstLineOf;
 using test::writeShot;
 
 const std::string kFace = LACRIMA_SOURCE_DIR "/scenes/assets/ict-face/ict_face.glb";
@@ -187,43 +189,33 @@ TEST(AnimatedShot, KeyedLightMovesAndDims) {
   EXPECT_NEAR(frame.lights[0].radiance[0], 0.5f, 1e-6f);
 }
 
-std::string firstLineOf(const std::string& s) { return s.substr(0, s.find('\n')); }
-
-// Each bad animation gives one located message; `pointerAndMessage` is what follows "file:line:col: ".
-void expectError(const std::string& name, const std::string& text, const std::string& pointerAndMessage) {
-  const auto path = writeShot(name, text);
-  std::vector<Diagnostic> diagnostics;
-  shotErrorOf(path, &diagnostics);
-  ASSERT_EQ(diagnostics.size(), 1u) << shotErrorOf(path);
-  EXPECT_EQ(diagnostics[0].jsonPath + ": " + firstLineOf(diagnostics[0].message), pointerAndMessage);
-}
 
 TEST(AnimatedShot, BadAnimationsGetExactMessages) {
-  expectError("keys_order.json", faceShot(R"("blendshapes": {"jawOpen": {"keys": [[1, 0], [1, 1]]}})"),
+  expectSingleError("keys_order.json", faceShot(R"("blendshapes": {"jawOpen": {"keys": [[1, 0], [1, 1]]}})"),
               "/assets/0/blendshapes/jawOpen/keys/1/0: key frames must increase: frame 1 is not after the previous "
               "key's frame 1");
-  expectError("interpolation.json", faceShot(R"("blendshapes": {"jawOpen": {"keys": [[1, 0]], "interpolation": "lineer"}})"),
+  expectSingleError("interpolation.json", faceShot(R"("blendshapes": {"jawOpen": {"keys": [[1, 0]], "interpolation": "lineer"}})"),
               "/assets/0/blendshapes/jawOpen/interpolation: unknown interpolation 'lineer'; did you mean 'linear'?");
-  expectError("weight_range.json", faceShot(R"("blendshapes": {"jawOpen": {"keys": [[1, 0], [2, 1.5]]}})"),
+  expectSingleError("weight_range.json", faceShot(R"("blendshapes": {"jawOpen": {"keys": [[1, 0], [2, 1.5]]}})"),
               "/assets/0/blendshapes/jawOpen/keys/1/1: expected a number in [0, 1], found 1.5");
-  expectError("joints_without_rig.json", faceShot(R"("joints": {"head.ry": 3})"),
+  expectSingleError("joints_without_rig.json", faceShot(R"("joints": {"head.ry": 3})"),
               "/assets/0/joints: joints need a 'rig' on the asset (for example \"rig\": {\"preset\": \"ict\"})");
-  expectError("joint_name.json", faceShot(R"("rig": {"preset": "ict"}, "joints": {"head.ryy": 3})"),
+  expectSingleError("joint_name.json", faceShot(R"("rig": {"preset": "ict"}, "joints": {"head.ryy": 3})"),
               "/assets/0/joints/head.ryy: unknown joint channel 'head.ryy'; did you mean 'head.ry'?");
-  expectError("rig_preset.json", faceShot(R"("rig": {"preset": "ictt"})"),
+  expectSingleError("rig_preset.json", faceShot(R"("rig": {"preset": "ictt"})"),
               "/assets/0/rig/preset: unknown rig preset 'ictt'; did you mean 'ict'? (this version knows the ICT "
               "face rig 'ict')");
-  expectError("rig_pivots.json", faceShot(R"("rig": {"jawPivot": [0, 0, 0]})"),
+  expectSingleError("rig_pivots.json", faceShot(R"("rig": {"jawPivot": [0, 0, 0]})"),
               "/assets/0/rig: missing required key 'headPivot' (a point: the head rotates about it (or give \"preset\"))");
-  expectError("rig_eye_part.json",
+  expectSingleError("rig_eye_part.json",
               faceShot(R"("rig": {"preset": "ict", "eyes": [{"name": "l", "fit": "M_ScleraLeft", "parts": ["M_IrisLft"]}]})"),
               "/assets/0/rig/eyes/0/parts/0: unknown part 'M_IrisLft'; did you mean 'M_IrisLeft'?");
-  expectError("control_shape.json", faceShot(R"("controls": {"sad": {"blendshapes": {"browInnerUp": 1}}})"),
+  expectSingleError("control_shape.json", faceShot(R"("controls": {"sad": {"blendshapes": {"browInnerUp": 1}}})"),
               "/assets/0/controls/sad/blendshapes/browInnerUp: unknown blendshape 'browInnerUp'; did you mean "
               "'browInnerUp_L'?");
-  expectError("shutter.json", faceShot("", "", R"(, "shutter": {"open": 0.25, "close": -0.25})"),
+  expectSingleError("shutter.json", faceShot("", "", R"(, "shutter": {"open": 0.25, "close": -0.25})"),
               "/camera/shutter/close: the shutter must close after it opens: close -0.25 < open 0.25");
-  expectError("attach.json",
+  expectSingleError("attach.json",
               faceShot("", R"("shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 0.01, "material": "water", "attach": {"asset": "face", "part": "M_Fcae"}}])"),
               "/shapes/0/attach/part: asset 'face' has no part 'M_Fcae'; did you mean 'M_Face'?");
 }

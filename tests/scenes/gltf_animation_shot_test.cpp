@@ -16,6 +16,8 @@ namespace lacrima {
 namespace {
 
 using test::shotErrorOf;
+using test::expectSingleError;
+using test::firstLineOf;
 using test::writeShot;
 
 std::filesystem::path writeAnimatedGlb(const std::filesystem::path& dir, bool withAnimations = true) {
@@ -153,31 +155,22 @@ TEST(GltfAnimationShot, SkinnedAnimationPlaysThroughBuildFrame) {
   expectPositionsNear({lifted[4], lifted[5]}, shifted({Vec3(-1, 3, 0), Vec3(-1, 3, 0)}));
 }
 
-std::string firstLineOf(const std::string& s) { return s.substr(0, s.find('\n')); }
-
-void expectError(const std::string& name, const std::string& text, const std::string& pointerAndMessage) {
-  const auto path = writeShot(name, text);
-  std::vector<Diagnostic> diagnostics;
-  shotErrorOf(path, &diagnostics);
-  ASSERT_EQ(diagnostics.size(), 1u) << shotErrorOf(path);
-  EXPECT_EQ(diagnostics[0].jsonPath + ": " + firstLineOf(diagnostics[0].message), pointerAndMessage);
-}
 
 TEST(GltfAnimationShot, BadAnimationMembersGetExactMessages) {
   const auto dir = shotDir();
   const auto glb = writeAnimatedGlb(dir);
-  expectError("name.json", animatedShot(glb, R"("animation": {"name": "wve"})"),
+  expectSingleError("name.json", animatedShot(glb, R"("animation": {"name": "wve"})"),
               "/assets/0/animation/name: unknown glTF animation 'wve'; did you mean 'wave'?");
-  expectError("index.json", animatedShot(glb, R"("animation": {"index": 2})"),
+  expectSingleError("index.json", animatedShot(glb, R"("animation": {"index": 2})"),
               "/assets/0/animation/index: animation index 2 does not exist (asset 'tri' has 2 animations)");
-  expectError("speed.json", animatedShot(glb, R"("animation": {"name": "wave", "speed": 0})"),
+  expectSingleError("speed.json", animatedShot(glb, R"("animation": {"name": "wave", "speed": 0})"),
               "/assets/0/animation/speed: expected a number > 0, found 0");
-  expectError("both.json", animatedShot(glb, R"("animation": {"name": "wave", "index": 0})"),
+  expectSingleError("both.json", animatedShot(glb, R"("animation": {"name": "wave", "index": 0})"),
               "/assets/0/animation/index: give the animation's 'name' or its 'index', not both");
-  expectError("neither.json", animatedShot(glb, R"("animation": {"loop": true})"),
+  expectSingleError("neither.json", animatedShot(glb, R"("animation": {"loop": true})"),
               "/assets/0/animation: missing required key 'name' (the glTF animation to play, or its 'index')");
   const auto still = writeAnimatedGlb(dir, false);
-  expectError("none.json", animatedShot(still, R"("animation": {"name": "wave"})"),
+  expectSingleError("none.json", animatedShot(still, R"("animation": {"name": "wave"})"),
               "/assets/0/animation: asset 'tri' has no glTF animations (static.glb defines none)");
 }
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "lacrima/scenes/shot.hpp"
+#include "support/test_directory.hpp"
 
 namespace lacrima::test {
 
@@ -15,13 +16,9 @@ inline std::filesystem::path sourcePath(const std::string& relative) {
   return std::filesystem::path(LACRIMA_SOURCE_DIR) / relative;
 }
 
-// Writes a shot file under the test's own output directory (ctest runs tests as parallel
-// processes; a shared directory would let them overwrite each other's files) and returns its path.
+// Writes a shot file under the test's own output directory and returns its path.
 inline std::filesystem::path writeShot(const std::string& name, const std::string& text) {
-  const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const std::string testName = info ? std::string(info->test_suite_name()) + "." + info->name() : "no_test";
-  const std::filesystem::path dir = std::filesystem::path(LACRIMA_TEST_OUTPUT_DIR) / "shots" / testName;
-  std::filesystem::create_directories(dir);
+  const std::filesystem::path dir = testDirectory("shots");
   const std::filesystem::path path = dir / name;
   std::ofstream(path, std::ios::binary) << text;
   return path;
@@ -49,6 +46,18 @@ inline std::string shotErrorOf(const std::filesystem::path& path, std::vector<Di
   }
   ADD_FAILURE() << path << ": loaded without error";
   return "";
+}
+
+inline std::string firstLineOf(const std::string& s) { return s.substr(0, s.find('\n')); }
+
+// A shot that must fail with exactly one problem; `pointerAndMessage` is its JSON pointer and
+// the first line of its message ("/assets/0/joints/x: unknown joint channel ...").
+inline void expectSingleError(const std::string& name, const std::string& text, const std::string& pointerAndMessage) {
+  const auto path = writeShot(name, text);
+  std::vector<Diagnostic> diagnostics;
+  shotErrorOf(path, &diagnostics);
+  ASSERT_EQ(diagnostics.size(), 1u) << shotErrorOf(path);
+  EXPECT_EQ(diagnostics[0].jsonPath + ": " + firstLineOf(diagnostics[0].message), pointerAndMessage);
 }
 
 }  // namespace lacrima::test

@@ -10,6 +10,8 @@ namespace lacrima {
 namespace {
 
 using test::shotErrorOf;
+using test::expectSingleError;
+using test::firstLineOf;
 using test::writeShot;
 
 const std::string kFace = LACRIMA_SOURCE_DIR "/scenes/assets/ict-face/ict_face.glb";
@@ -198,15 +200,6 @@ TEST(DetailShot, SumOfPatternsAndAShutterBlurTheStillFace) {
   EXPECT_TRUE(faceMesh(frame, shot).moves()) << "the detail animates within the shutter";
 }
 
-std::string firstLineOf(const std::string& s) { return s.substr(0, s.find('\n')); }
-
-void expectError(const std::string& name, const std::string& text, const std::string& pointerAndMessage) {
-  const auto path = writeShot(name, text);
-  std::vector<Diagnostic> diagnostics;
-  shotErrorOf(path, &diagnostics);
-  ASSERT_EQ(diagnostics.size(), 1u) << shotErrorOf(path);
-  EXPECT_EQ(diagnostics[0].jsonPath + ": " + firstLineOf(diagnostics[0].message), pointerAndMessage);
-}
 
 std::string tearWith(const std::string& from, const std::string& to) {
   std::string s = kTear;
@@ -221,42 +214,42 @@ std::string detailWith(const std::string& from, const std::string& to) {
 }
 
 TEST(TearShot, BadTearsGetExactMessages) {
-  expectError("type.json", tearWith(R"("dripping")", R"("driping")"),
+  expectSingleError("type.json", tearWith(R"("dripping")", R"("driping")"),
               "/tears/0/type: unknown tear type 'driping'; did you mean 'dripping'?");
-  expectError("asset.json", tearWith(R"("asset": "face")", R"("asset": "fcae")"),
+  expectSingleError("asset.json", tearWith(R"("asset": "face")", R"("asset": "fcae")"),
               "/tears/0/asset: undefined asset 'fcae'; did you mean 'face'?");
-  expectError("part.json", tearWith(R"("M_Face")", R"("M_Fcae")"),
+  expectSingleError("part.json", tearWith(R"("M_Face")", R"("M_Fcae")"),
               "/tears/0/part: asset 'face' has no part 'M_Fcae'; did you mean 'M_Face'?");
-  expectError("material.json", tearWith(R"("material": "water")", R"("material": "watr")"),
+  expectSingleError("material.json", tearWith(R"("material": "water")", R"("material": "watr")"),
               "/tears/0/material: undefined material 'watr'; did you mean 'water'?");
-  expectError("alpha.json", tearWith(R"("alpha": 0.0005)", R"("alpha": 0)"),
+  expectSingleError("alpha.json", tearWith(R"("alpha": 0.0005)", R"("alpha": 0)"),
               "/tears/0/alpha: expected a number > 0, found 0");
-  expectError("beta.json", tearWith(R"("beta": 0.004)", R"("beta": -1)"),
+  expectSingleError("beta.json", tearWith(R"("beta": 0.004)", R"("beta": -1)"),
               "/tears/0/beta: expected a number > 0, found -1");
-  expectError("gravity.json", tearWith(R"("rings": 12)", R"("gravity": [0, 0, 0], "rings": 12)"),
+  expectSingleError("gravity.json", tearWith(R"("rings": 12)", R"("gravity": [0, 0, 0], "rings": 12)"),
               "/tears/0/gravity: the gravity direction must not be zero");
-  expectError("key.json", tearWith(R"("lambda")", R"("lamda")"),
+  expectSingleError("key.json", tearWith(R"("lambda")", R"("lamda")"),
               "/tears/0/lamda: unknown key 'lamda'; did you mean 'lambda'?");
-  expectError("segments.json", tearWith(R"("segments": 16)", R"("segments": 2)"),
+  expectSingleError("segments.json", tearWith(R"("segments": 16)", R"("segments": 2)"),
               "/tears/0/segments: expected an integer in [3, 1024], found 2");
 }
 
 TEST(DetailShot, BadDetailsGetExactMessages) {
-  expectError("pattern.json", detailWith(R"("cheek")", R"("cheeck")"),
+  expectSingleError("pattern.json", detailWith(R"("cheek")", R"("cheeck")"),
               "/details/0/pattern: unknown detail pattern 'cheeck'; did you mean 'cheek'?");
-  expectError("part.json", detailWith(R"("M_Face")", R"("M_Fac")"),
+  expectSingleError("part.json", detailWith(R"("M_Face")", R"("M_Fac")"),
               "/details/0/part: asset 'face' has no part 'M_Fac'; did you mean 'M_Face'?");
-  expectError("extent.json", detailWith("[0.01, 0.008]", "[0.01, 0]"),
+  expectSingleError("extent.json", detailWith("[0.01, 0.008]", "[0.01, 0]"),
               "/details/0/extent/1: expected a number > 0, found 0");
-  expectError("inner.json", detailWith(R"("innerRadius": 0.4)", R"("innerRadius": 1)"),
+  expectSingleError("inner.json", detailWith(R"("innerRadius": 0.4)", R"("innerRadius": 1)"),
               "/details/0/innerRadius: expected a number in [0, 1), found 1");
-  expectError("frames.json", detailWith(R"("endFrame": 4)", R"("endFrame": 1)"),
+  expectSingleError("frames.json", detailWith(R"("endFrame": 4)", R"("endFrame": 1)"),
               "/details/0/endFrame: the detail must end at or after its start: endFrame 1 < startFrame 2");
-  expectError("amplitude.json", detailWith(R"("amplitude": 1)", R"("amplitude": -1)"),
+  expectSingleError("amplitude.json", detailWith(R"("amplitude": 1)", R"("amplitude": -1)"),
               "/details/0/amplitude: expected a number >= 0, found -1");
-  expectError("fraction.json", detailWith(R"("amplitude": 1)", R"("amplitude": 1, "validFraction": 2)"),
+  expectSingleError("fraction.json", detailWith(R"("amplitude": 1)", R"("amplitude": 1, "validFraction": 2)"),
               "/details/0/validFraction: expected a number in [0, 1], found 2");
-  expectError("key.json", detailWith(R"("beta": 2)", R"("bta": 2)"),
+  expectSingleError("key.json", detailWith(R"("beta": 2)", R"("bta": 2)"),
               "/details/0/bta: unknown key 'bta'; did you mean 'beta'?");
 }
 

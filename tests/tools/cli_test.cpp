@@ -15,6 +15,7 @@
 #include "lacrima/renderer/camera.hpp"
 #include "lacrima/scenes/shot.hpp"
 #include "support/run_command.hpp"
+#include "support/test_directory.hpp"
 
 namespace lacrima {
 namespace {
@@ -55,16 +56,7 @@ test::CommandResult lacrimaStderr(const std::vector<std::string>& args) {
 }
 
 // An empty directory of its own for the running test, under LACRIMA_TEST_OUTPUT_DIR.
-fs::path freshDir() {
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  std::string name = std::string(info->test_suite_name()) + "." + info->name();
-  for (char& c : name)
-    if (c == '/') c = '_';
-  const fs::path dir = fs::path(LACRIMA_TEST_OUTPUT_DIR) / "cli" / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path freshDir() { return test::testDirectory("cli", /*fresh=*/true); }
 
 // Every file below dir (recursively), relative to it.
 std::set<std::string> filesIn(const fs::path& dir) {

@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "support/run_command.hpp"
+#include "support/test_directory.hpp"
 
 namespace lacrima {
 namespace {
@@ -45,16 +46,7 @@ std::string commandLine(const std::vector<std::string>& args) {
 test::CommandResult lacrima(const std::vector<std::string>& args) { return test::runCommand(commandLine(args)); }
 
 // An empty directory of its own for the running test, under LACRIMA_TEST_OUTPUT_DIR.
-fs::path freshDir() {
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  std::string name = std::string(info->test_suite_name()) + "." + info->name();
-  for (char& c : name)
-    if (c == '/') c = '_';
-  const fs::path dir = fs::path(LACRIMA_TEST_OUTPUT_DIR) / "sequence" / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path freshDir() { return test::testDirectory("sequence", /*fresh=*/true); }
 
 std::vector<std::string> splitLines(const std::string& text) {
   std::vector<std::string> lines;
