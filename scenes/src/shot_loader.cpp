@@ -12,6 +12,7 @@
 #include "json_source.hpp"
 #include "lacrima/scenes/shot.hpp"
 #include "shot_checker.hpp"
+#include "surface_anchor.hpp"
 #include "shot_geometry.hpp"
 #include "animation_reader.hpp"
 #include "asset_animation_reader.hpp"
@@ -882,6 +883,17 @@ class ShotReader {
 
   // ---- tears and details -------------------------------------------------------------------
 
+  // A required surface anchor member (see surface_anchor.hpp).
+  void readAnchor(ObjectReader& o, const std::string& key, size_t asset, const std::string& part,
+                  ShotSurfaceAnchor& anchor) {
+    const Json* v = o.find(key);
+    if (!v) {
+      o.missing(key, "a point [x, y, z] near the skin, {\"landmark\": i}, {\"vertex\": i} or {\"uv\": [u, v]}");
+      return;
+    }
+    if (auto x = readSurfaceAnchor(c_, *v, o.at(key), shot_.assets[asset], part)) anchor = *x;
+  }
+
   // A required shot-material member; false when missing or undefined (reported).
   bool readMaterialMember(ObjectReader& o, std::string& name, uint32_t& id) {
     const Json* m = o.find("material");
@@ -907,7 +919,7 @@ class ShotReader {
     ShotTear tear;
     const auto asset = readAssetPart(o, tear.part);
     if (asset) tear.asset = *asset;
-    if (auto x = o.vec3("start", true)) tear.start = *x;
+    if (asset) readAnchor(o, "start", *asset, tear.part, tear.start);
     if (auto x = o.number("startFrame", Range::any(), true)) tear.startFrame = *x;
     if (auto x = o.number("alpha", Range::above(0), true)) tear.params.alpha = float(*x);
     if (auto x = o.number("beta", Range::above(0), true)) tear.params.beta = float(*x);
@@ -987,7 +999,7 @@ class ShotReader {
     }
     const auto asset = readAssetPart(o, detail.part);
     if (asset) detail.asset = *asset;
-    if (auto x = o.vec3("center", true)) detail.center = *x;
+    if (asset) readAnchor(o, "center", *asset, detail.part, detail.center);
     if (auto x = o.vec3("tangent")) {
       if (*x == Vec3::Zero())
         o.error("tangent", "the tangent direction must not be zero");
