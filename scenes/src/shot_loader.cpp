@@ -17,6 +17,7 @@
 #include "animation_reader.hpp"
 #include "asset_animation_reader.hpp"
 #include "asset_pose.hpp"
+#include "detail_refinement.hpp"
 #include "suggest.hpp"
 #include "surface_attachment.hpp"
 
@@ -36,6 +37,9 @@ const std::vector<std::string> kLightTypes = {"rectangle", "sphere"};
 const std::vector<std::string> kShapeTypes = {"sphere", "ellipsoid", "rectangle"};
 const std::vector<std::string> kTearTypes = {"dripping"};
 const std::vector<std::string> kDetailPatterns = {"forehead", "eyeCorner", "cheek", "frown", "dimple", "eyePouch"};
+const std::vector<std::string> kSubdivisionSchemes = {"loop", "linear"};
+// Each level quadruples the region's triangles: 4 levels turn one triangle into 256.
+constexpr int kMaxSubdivisionLevels = 4;
 
 constexpr int kSupportedVersion = 1;
 
@@ -967,11 +971,28 @@ class ShotReader {
     return pattern;
   }
 
+  // {"levels": 0..4, "scheme": "loop" | "linear"}: the skin refined under the detail.
+  void readSubdivision(const Json& v, const std::string& pointer, ShotDetail& detail) {
+    ObjectReader o(c_, v, pointer, {"levels", "scheme"});
+    if (!o.ok()) return;
+    if (auto x = o.integer("levels", Range::closed(0, kMaxSubdivisionLevels), true)) detail.subdivisionLevels = int(*x);
+    const auto scheme = o.string("scheme");
+    if (!scheme) return;
+    const auto it = std::find(kSubdivisionSchemes.begin(), kSubdivisionSchemes.end(), *scheme);
+    if (it == kSubdivisionSchemes.end()) {
+      const std::string suggestion = didYouMean(*scheme, kSubdivisionSchemes);
+      o.error("scheme", fmt::format("unknown subdivision scheme '{}'{}", *scheme,
+                                    suggestion.empty() ? " (expected 'loop' or 'linear')" : suggestion));
+      return;
+    }
+    detail.subdivisionScheme = it == kSubdivisionSchemes.begin() ? RefinementScheme::Loop : RefinementScheme::Linear;
+  }
+
   void readDetail(const Json& v, const std::string& pointer) {
     const std::vector<std::string> regionKeys = {"asset",     "part",     "center",        "tangent",
                                                  "extent",    "innerRadius", "scale",      "coordinateScale",
                                                  "startFrame", "endFrame", "amplitude",    "validFraction",
-                                                 "seed"};
+                                                 "seed",      "subdivision"};
     const bool sum = v.is_object() && v.contains("patterns");
     std::vector<std::string> keys = regionKeys;
     if (sum)
@@ -1028,6 +1049,7 @@ class ShotReader {
       if (auto x = readAnimatedNumber(c_, *a, o.at("amplitude"), Range::atLeast(0))) detail.amplitude = *x;
     if (auto x = o.number("validFraction", Range::closed(0, 1))) detail.selection.fraction = float(*x);
     if (auto x = o.unsignedInteger("seed")) detail.selection.seed = *x;
+    if (const Json* s = o.find("subdivision")) readSubdivision(*s, o.at("subdivision"), detail);
     if (c_.errorCount() == before && asset) shot_.details.push_back(detail);
   }
 };
@@ -1078,6 +1100,8 @@ Shot loadShot(const std::filesystem::path& path) {
   }
   ShotReader(checker, shot).read(*json);
   if (checker.errorCount() > 0) throw ShotError(checker.diagnostics());
+  // Before any surface point is found: they index the refined triangles.
+  refineDetailRegions(shot);
   resolveAttachments(shot);
   resolveTearsAndDetails(shot);
   return shot;

@@ -16,6 +16,7 @@
 #include "lacrima/geometry/face_rig.hpp"
 #include "lacrima/geometry/gltf_asset.hpp"
 #include "lacrima/geometry/math.hpp"
+#include "lacrima/geometry/region_refinement.hpp"
 #include "lacrima/materials/material.hpp"
 #include "lacrima/renderer/environment.hpp"
 #include "lacrima/renderer/frame.hpp"
@@ -211,6 +212,10 @@ struct ShotDetail {
   double startFrame = 1.0, endFrame = 1.0;
   AnimatedFloat amplitude{1.0f, nullptr};  // multiplies scale; >= 0
   ValidVertexSelection selection;
+  // "subdivision": the part's mesh is refined this many levels around the region at load, before
+  // anything is displaced (0: not refined).
+  int subdivisionLevels = 0;
+  RefinementScheme subdivisionScheme = RefinementScheme::Loop;
   ShotSurfacePoint surfacePoint;        // resolved by loadShot
 
   bool activeAt(int frame) const { return frame >= startFrame && frame <= endFrame; }
