@@ -51,9 +51,34 @@ std::optional<SkinPoint> snapToPart(const std::vector<TriangleMesh>& world, cons
   return best;
 }
 
+// The detail's centre on the neutral part: a written point snapped to it, or the landmark, vertex
+// or uv point of the anchor (checked when read).
+std::optional<SkinPoint> anchorOnNeutralPart(const std::vector<TriangleMesh>& world, const GltfAsset& gltf,
+                                             const std::string& part, const ShotSurfaceAnchor& anchor) {
+  if (anchor.kind == ShotSurfaceAnchor::Kind::Point) return snapToPart(world, anchor.point);
+  std::optional<size_t> primitive;
+  for (size_t i = 0; i < gltf.primitives.size() && !primitive; ++i)
+    if (gltf.primitives[i].part == part) primitive = i;
+  std::optional<SurfacePoint> point;
+  if (anchor.kind == ShotSurfaceAnchor::Kind::Landmark) {
+    const Landmark& landmark = gltf.landmarks.at(anchor.index);
+    primitive = size_t(landmark.primitive);
+    point = vertexSurfacePoint(world[*primitive], landmark.vertex);
+  } else if (primitive) {
+    point = anchor.kind == ShotSurfaceAnchor::Kind::Vertex ? vertexSurfacePoint(world[*primitive], anchor.index)
+                                                            : surfacePointAtUv(world[*primitive], anchor.uv);
+  }
+  if (!point) return std::nullopt;
+  ShotSurfacePoint attachment;
+  attachment.primitive = *primitive;
+  attachment.triangle = point->triangle;
+  attachment.barycentric = point->barycentric;
+  return SkinPoint{surfacePosition(world[*primitive], *point), attachedNormal(world, attachment)};
+}
+
 void refineAroundDetail(const ShotAsset& asset, const ShotDetail& detail, GltfAsset& gltf) {
   const std::vector<TriangleMesh> world = neutralPartInWorld(asset, gltf, detail.part);
-  const std::optional<SkinPoint> skin = snapToPart(world, detail.center);
+  const std::optional<SkinPoint> skin = anchorOnNeutralPart(world, gltf, detail.part, detail.center);
   if (!skin) return;
   const float maxExtent = std::max(detail.semiAxisA, detail.semiAxisB);
   for (size_t i = 0; i < gltf.primitives.size(); ++i) {

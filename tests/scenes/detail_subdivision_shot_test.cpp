@@ -120,6 +120,33 @@ TEST(DetailSubdivisionShot, RefinesTheRegionAndLeavesTheRestOfTheFaceAsItWas) {
   }
 }
 
+TEST(DetailSubdivisionShot, LandmarkAnchoredDetailRefinesAroundTheLandmark) {
+  // Landmark 40 (the subject's right lower lid) instead of a point: the region is refined there,
+  // and the cheek, 3 cm below, is not.
+  std::string text = subdivisionShot(R"({"levels": 1, "scheme": "linear"})");
+  const std::string point = "[-0.0345, -0.0018, 0.0995]";
+  text.replace(text.find(point), point.size(), R"({"landmark": 40})");
+  const Shot plain = loadShot(writeShot("plain.json", subdivisionShot("")));
+  const Shot refined = loadShot(writeShot("landmark.json", text));
+  const GltfAsset& gltf = *refined.assets[0].gltf;
+  const Landmark& lid = gltf.landmarks.at(40);
+  const Vec3 lidPosition = gltf.primitives[size_t(lid.primitive)].mesh.positions[lid.vertex];
+  EXPECT_EQ(lidPosition, neutralFace(plain).positions[lid.vertex]) << "linear refinement keeps original vertices";
+  auto countNear = [](const TriangleMesh& m, const Vec3& p, float radius) {
+    size_t n = 0;
+    for (size_t t = 0; t < m.triangleCount(); ++t)
+      for (int k = 0; k < 3; ++k)
+        if ((m.positions[m.indices[3 * t + k]] - p).norm() < radius) {
+          ++n;
+          break;
+        }
+    return n;
+  };
+  EXPECT_GT(countNear(neutralFace(refined), lidPosition, 0.005f), 3 * countNear(neutralFace(plain), lidPosition, 0.005f));
+  EXPECT_EQ(countNear(neutralFace(refined), kCheek, 0.005f), countNear(neutralFace(plain), kCheek, 0.005f));
+  EXPECT_EQ(refined.details[0].surfacePoint.reference, lidPosition) << "the anchor resolves on the refined face";
+}
+
 TEST(DetailSubdivisionShot, RefinedFaceIsValidOpensNoEdgeAndShowsMoreOfTheDetail) {
   const Shot plain = loadShot(writeShot("plain.json", subdivisionShot("")));
   const Shot refined = loadShot(writeShot("loop3.json", subdivisionShot(R"({"levels": 3, "scheme": "loop"})")));
