@@ -153,6 +153,7 @@ void applyDetail(const Shot& shot, const ShotDetail& detail, double frame, std::
   application.time = float((frame - detail.startFrame) / shot.fps);
   application.heightScale = detail.scale * amplitude;
   application.coordinateScale = detail.coordinateScale;
+  application.patternOrigin = detail.patternOrigin;
   application.selection = detail.selection;
   const ShotAsset& asset = shot.assets[detail.asset];
   for (size_t i = 0; i < posed.size(); ++i) {

@@ -992,7 +992,7 @@ class ShotReader {
     const std::vector<std::string> regionKeys = {"asset",     "part",     "center",        "tangent",
                                                  "extent",    "innerRadius", "scale",      "coordinateScale",
                                                  "startFrame", "endFrame", "amplitude",    "validFraction",
-                                                 "seed",      "subdivision"};
+                                                 "seed",      "subdivision", "patternOrigin"};
     const bool sum = v.is_object() && v.contains("patterns");
     std::vector<std::string> keys = regionKeys;
     if (sum)
@@ -1038,6 +1038,8 @@ class ShotReader {
     if (auto x = o.number("innerRadius", {0, 1, false, true})) detail.innerRadius = float(*x);
     if (auto x = o.number("scale", Range::any(), true)) detail.scale = float(*x);
     if (auto x = o.number("coordinateScale", Range::above(0))) detail.coordinateScale = float(*x);
+    if (const Json* origin = o.find("patternOrigin"))
+      if (auto x = readVec2(c_, *origin, o.at("patternOrigin"), Range::any(), "[x, y]")) detail.patternOrigin = *x;
     const auto startFrame = o.number("startFrame", Range::any(), true);
     const auto endFrame = o.number("endFrame", Range::any(), true);
     if (startFrame) detail.startFrame = *startFrame;

@@ -213,6 +213,25 @@ std::string detailWith(const std::string& from, const std::string& to) {
   return faceShot(s);
 }
 
+TEST(DetailShot, PatternOriginMovesThePatternWithinTheSameRegion) {
+  const Shot centred = loadShot(writeShot("detail_centred.json", faceShot(detail("1"))));
+  const Shot shifted = loadShot(writeShot("detail_shifted.json", detailWith(R"("amplitude": 1)",
+                                                                       R"("amplitude": 1, "patternOrigin": [0.002, -0.003])")));
+  EXPECT_EQ(shifted.details[0].patternOrigin, Vec2(0.002f, -0.003f));
+  const auto rest = faceMesh(buildFrame(centred, 1), centred).mesh.positions;
+  const auto a = faceMesh(buildFrame(centred, 3), centred).mesh.positions;
+  const auto b = faceMesh(buildFrame(shifted, 3), shifted).mesh.positions;
+  size_t moved = 0, differ = 0;
+  for (size_t i = 0; i < rest.size(); ++i) {
+    // Same damping, so the same vertices move (or stay) in both; the heights differ.
+    EXPECT_EQ(a[i] == rest[i], b[i] == rest[i]) << i;
+    moved += a[i] != rest[i] ? 1 : 0;
+    differ += a[i] != b[i] ? 1 : 0;
+  }
+  EXPECT_GT(moved, 10u);
+  EXPECT_EQ(differ, moved) << "every displaced vertex has another height";
+}
+
 TEST(TearShot, BadTearsGetExactMessages) {
   expectSingleError("type.json", tearWith(R"("dripping")", R"("driping")"),
               "/tears/0/type: unknown tear type 'driping'; did you mean 'dripping'?");
@@ -249,6 +268,8 @@ TEST(DetailShot, BadDetailsGetExactMessages) {
               "/details/0/amplitude: expected a number >= 0, found -1");
   expectSingleError("fraction.json", detailWith(R"("amplitude": 1)", R"("amplitude": 1, "validFraction": 2)"),
               "/details/0/validFraction: expected a number in [0, 1], found 2");
+  expectSingleError("origin.json", detailWith(R"("amplitude": 1)", R"("amplitude": 1, "patternOrigin": [0.01])"),
+              "/details/0/patternOrigin: expected [x, y] (an array of 2 numbers), found an array of 1 element");
   expectSingleError("key.json", detailWith(R"("beta": 2)", R"("bta": 2)"),
               "/details/0/bta: unknown key 'bta'; did you mean 'beta'?");
 }

@@ -209,6 +209,7 @@ struct ShotDetail {
   float innerRadius = 0.5f;
   float scale = 0.001f;                 // metres of displacement per unit of pattern height
   float coordinateScale = 1.0f;         // pattern units per metre in the tangent plane
+  Vec2 patternOrigin = Vec2::Zero();    // the pattern's origin in the local (x, y), metres
   double startFrame = 1.0, endFrame = 1.0;
   AnimatedFloat amplitude{1.0f, nullptr};  // multiplies scale; >= 0
   ValidVertexSelection selection;
