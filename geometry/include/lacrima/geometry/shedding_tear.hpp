@@ -73,7 +73,7 @@ struct SheddingTearParams {
   float noiseDensity = 0.0f;    // probability that an interior grid point gets a bump, [0, 1]
   float noiseAmplitude = 0.0003f;  // metres, largest bump before smoothing (>= 0)
   float smoothingEpsilon = 0.0005f;  // MLS epsilon in metres (> 0)
-  int smoothingDegree = 2;      // MLS polynomial degree
+  int smoothingDegree = 2;      // MLS polynomial degree, 0..15 (lower while the tear has <= degree rows)
   uint64_t seed = 1;
 };
 
