@@ -8,6 +8,7 @@
 
 #include "lacrima/geometry/shedding_tear.hpp"
 #include "lacrima/geometry/surface_point.hpp"
+#include "geometry/gltf_builder_test_util.hpp"
 #include "shot_test_support.hpp"
 
 namespace lacrima {
@@ -252,8 +253,47 @@ TEST(SheddingTearShot, BadTearsGetExactMessages) {
   bad("off_skin.json", "[-0.0345, -0.0018, 0.0995]", "[-0.0345, -0.0018, 0.1495]",
       "/tears/0/path/1: path point 1 is 0.0344 m from the skin of part 'M_Face' (its nearest skin point at the first "
       "frame is [-0.0094, 0.0014, 0.1262]); path points must lie within 0.01 m of it");
+  bad("grid.json", R"("sampleSpacing": 0.001)", R"("sampleSpacing": 0.000001)",
+      "/tears/0: the path (0.0201 m long) with sampleSpacing 1e-06 and acrossSamples 5 makes about 100456 grid "
+      "points; at most 50000 (use a larger sampleSpacing or fewer acrossSamples)");
   bad("same.json", "[-0.0345, -0.0018, 0.0995]", "[-0.0345, 0.004, 0.0985]",
       "/tears/0/path/1: path point 1 snaps to the same skin point as path point 0; give distinct points");
+}
+
+// Two 2 cm squares side by side in z = 0, meshes "A" (x in [0, 2 cm]) and "B" (x in [2, 4 cm]),
+// both of part "skin".
+std::filesystem::path writeTwoSquaresGlb() {
+  test::GltfBuilder b;
+  for (const float x0 : {0.0f, 0.02f}) {
+    const float x1 = x0 + 0.02f;
+    b.addMesh(x0 == 0.0f ? "A" : "B", {x0, 0, 0, x1, 0, 0, x1, 0.02f, 0, x0, 0, 0, x1, 0.02f, 0, x0, 0.02f, 0}, {}, {});
+    b.json()["meshes"].back()["primitives"][0]["extras"] = {{"part", "skin"}};
+  }
+  b.json()["scenes"] = {{{"nodes", {0, 1}}}};
+  b.json()["nodes"] = {{{"name", "a"}, {"mesh", 0}}, {{"name", "b"}, {"mesh", 1}}};
+  const auto path = writeShot("placeholder.json", "").parent_path() / "two_squares.glb";
+  b.write(path);
+  return path;
+}
+
+TEST(SheddingTearShot, PathMustStayOnOnePrimitive) {
+  const std::string shot = "{\"version\": 1, \"frames\": {\"start\": 1, \"end\": 1}, \"output\": \"o.exr\","
+      " \"render\": {\"width\": 8, \"height\": 8, \"spp\": 1},"
+      " \"camera\": {\"position\": [0, 0, 1], \"lookAt\": [0, 0, 0], \"fov\": 30},"
+      " \"materials\": {\"water\": {\"type\": \"water\"}},"
+      " \"assets\": [{\"name\": \"squares\", \"file\": \"" + writeTwoSquaresGlb().string() + "\"}],"
+      " \"tears\": [{\"type\": \"shedding\", \"asset\": \"squares\", \"part\": \"skin\", \"startFrame\": 1,"
+      " \"material\": \"water\", \"path\": PATH}]}";
+  const auto with = [&](const std::string& path) {
+    std::string s = shot;
+    s.replace(s.find("PATH"), 4, path);
+    return s;
+  };
+  const Shot ok = loadShot(writeShot("one_square.json", with("[[0.005, 0.018, 0.001], [0.006, 0.002, 0.001]]")));
+  EXPECT_EQ(ok.assets[0].gltf->primitives[ok.sheddingTears[0].primitive].name, "A/skin");
+  expectSingleError("two_squares.json", with("[[0.01, 0.018, 0.001], [0.03, 0.002, 0.001]]"),
+                    "/tears/0/path/1: path point 1 snaps to primitive 'B/skin' of part 'skin' but path point 0 to "
+                    "'A/skin'; a shedding tear runs over one primitive");
 }
 
 }  // namespace
