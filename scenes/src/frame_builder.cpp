@@ -1,7 +1,8 @@
 // buildFrame: a checked Shot at one frame number -> the renderer's Frame, through the geometry
-// stage: assets posed by their rig, keyframes and performance tracks, shapes (keyed or attached
-// to the skin), lights and camera, each at shutter open and, when the shot has a shutter and it
-// moves, at shutter close (motion blur). Nothing is read from disk here.
+// stage: assets posed by their rig, keyframes and performance tracks, details displacing the
+// posed skin, shapes (keyed or attached to the skin), dripping tears and shedding tears (on the
+// posed, detailed skin), lights and camera, each at shutter open and, when the shot has a shutter
+// and it moves, at shutter close (motion blur). Nothing is read from disk here.
 #include <fmt/format.h>
 
 #include <algorithm>
