@@ -149,6 +149,8 @@ size_t applyDetailPattern(TriangleMesh& mesh, std::span<const Vec3> normals, con
   if (!(application.selection.fraction >= 0.0f && application.selection.fraction <= 1.0f))
     throw InputError(fmt::format("detail pattern: valid vertex fraction must be in [0, 1] (got {})",
                                  application.selection.fraction));
+  if (!std::isfinite(application.patternOrigin.x()) || !std::isfinite(application.patternOrigin.y()))
+    throw InputError("detail pattern: patternOrigin must be finite");
   if (!std::isfinite(application.heightScale) || !std::isfinite(application.coordinateScale) ||
       !std::isfinite(application.time))
     throw InputError(fmt::format("detail pattern: heightScale ({}), coordinateScale ({}) and time ({}) must be finite",
@@ -171,8 +173,10 @@ size_t applyDetailPattern(TriangleMesh& mesh, std::span<const Vec3> normals, con
     if (!finite3(n)) continue;
     const double length = n.cast<double>().norm();
     if (!(length > 0.0) || !std::isfinite(length)) continue;
-    const float height = detailPatternHeight(application.patterns, application.coordinateScale * x,
-                                             application.coordinateScale * y, application.time);
+    const float height = detailPatternHeight(application.patterns,
+                                             application.coordinateScale * (x - application.patternOrigin.x()),
+                                             application.coordinateScale * (y - application.patternOrigin.y()),
+                                             application.time);
     const double amount = double(application.heightScale) * double(damping) * double(height);
     if (amount == 0.0) continue;
     const Eigen::Vector3d moved3 = p.cast<double>() + n.cast<double>() * (amount / length);

@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -98,6 +99,37 @@ SurfacePoint closestSurfacePoint(const TriangleMesh& mesh, const Vec3& p) {
     }
   }
   return best;
+}
+
+std::optional<SurfacePoint> vertexSurfacePoint(const TriangleMesh& mesh, uint32_t vertex) {
+  for (size_t i = 0; i < mesh.indices.size(); ++i)
+    if (mesh.indices[i] == vertex) {
+      Vec3 barycentric = Vec3::Zero();
+      barycentric[Eigen::Index(i % 3)] = 1.0f;
+      return SurfacePoint{uint32_t(i / 3), barycentric};
+    }
+  return std::nullopt;
+}
+
+std::optional<SurfacePoint> surfacePointAtUv(const TriangleMesh& mesh, const Vec2& uv) {
+  if (mesh.uvs.size() != mesh.positions.size()) return std::nullopt;
+  constexpr double kTolerance = 1e-5;
+  for (size_t t = 0; t < mesh.triangleCount(); ++t) {
+    const uint32_t* idx = &mesh.indices[3 * t];
+    const Eigen::Vector2d a = mesh.uvs[idx[0]].cast<double>(), b = mesh.uvs[idx[1]].cast<double>(),
+                          c = mesh.uvs[idx[2]].cast<double>(), p = uv.cast<double>();
+    const Eigen::Vector2d ab = b - a, ac = c - a, ap = p - a;
+    const double area2 = ab.x() * ac.y() - ab.y() * ac.x();  // twice the signed uv area
+    if (std::abs(area2) < 1e-14) continue;
+    const double v = (ap.x() * ac.y() - ap.y() * ac.x()) / area2;
+    const double w = (ab.x() * ap.y() - ab.y() * ap.x()) / area2;
+    const double u = 1.0 - v - w;
+    if (u < -kTolerance || v < -kTolerance || w < -kTolerance) continue;
+    Eigen::Vector3d weights(std::max(u, 0.0), std::max(v, 0.0), std::max(w, 0.0));
+    weights /= weights.sum();
+    return SurfacePoint{uint32_t(t), weights.cast<float>()};
+  }
+  return std::nullopt;
 }
 
 }  // namespace lacrima

@@ -12,10 +12,12 @@
 #include "json_source.hpp"
 #include "lacrima/scenes/shot.hpp"
 #include "shot_checker.hpp"
+#include "surface_anchor.hpp"
 #include "shot_geometry.hpp"
 #include "animation_reader.hpp"
 #include "asset_animation_reader.hpp"
 #include "asset_pose.hpp"
+#include "detail_refinement.hpp"
 #include "suggest.hpp"
 #include "shedding_tear_resolve.hpp"
 #include "surface_attachment.hpp"
@@ -36,6 +38,9 @@ const std::vector<std::string> kLightTypes = {"rectangle", "sphere"};
 const std::vector<std::string> kShapeTypes = {"sphere", "ellipsoid", "rectangle"};
 const std::vector<std::string> kTearTypes = {"dripping", "shedding"};
 const std::vector<std::string> kDetailPatterns = {"forehead", "eyeCorner", "cheek", "frown", "dimple", "eyePouch"};
+const std::vector<std::string> kSubdivisionSchemes = {"loop", "linear"};
+// Each level quadruples the region's triangles: 4 levels turn one triangle into 256.
+constexpr int kMaxSubdivisionLevels = 4;
 
 constexpr int kSupportedVersion = 1;
 
@@ -883,6 +888,17 @@ class ShotReader {
 
   // ---- tears and details -------------------------------------------------------------------
 
+  // A required surface anchor member (see surface_anchor.hpp).
+  void readAnchor(ObjectReader& o, const std::string& key, size_t asset, const std::string& part,
+                  ShotSurfaceAnchor& anchor) {
+    const Json* v = o.find(key);
+    if (!v) {
+      o.missing(key, "a point [x, y, z] near the skin, {\"landmark\": i}, {\"vertex\": i} or {\"uv\": [u, v]}");
+      return;
+    }
+    if (auto x = readSurfaceAnchor(c_, *v, o.at(key), shot_.assets[asset], part)) anchor = *x;
+  }
+
   // A required shot-material member; false when missing or undefined (reported).
   bool readMaterialMember(ObjectReader& o, std::string& name, uint32_t& id) {
     const Json* m = o.find("material");
@@ -912,7 +928,7 @@ class ShotReader {
     ShotTear tear;
     const auto asset = readAssetPart(o, tear.part);
     if (asset) tear.asset = *asset;
-    if (auto x = o.vec3("start", true)) tear.start = *x;
+    if (asset) readAnchor(o, "start", *asset, tear.part, tear.start);
     if (auto x = o.number("startFrame", Range::any(), true)) tear.startFrame = *x;
     if (auto x = o.number("alpha", Range::above(0), true)) tear.params.alpha = float(*x);
     if (auto x = o.number("beta", Range::above(0), true)) tear.params.beta = float(*x);
@@ -1012,11 +1028,28 @@ class ShotReader {
     return pattern;
   }
 
+  // {"levels": 0..4, "scheme": "loop" | "linear"}: the skin refined under the detail.
+  void readSubdivision(const Json& v, const std::string& pointer, ShotDetail& detail) {
+    ObjectReader o(c_, v, pointer, {"levels", "scheme"});
+    if (!o.ok()) return;
+    if (auto x = o.integer("levels", Range::closed(0, kMaxSubdivisionLevels), true)) detail.subdivisionLevels = int(*x);
+    const auto scheme = o.string("scheme");
+    if (!scheme) return;
+    const auto it = std::find(kSubdivisionSchemes.begin(), kSubdivisionSchemes.end(), *scheme);
+    if (it == kSubdivisionSchemes.end()) {
+      const std::string suggestion = didYouMean(*scheme, kSubdivisionSchemes);
+      o.error("scheme", fmt::format("unknown subdivision scheme '{}'{}", *scheme,
+                                    suggestion.empty() ? " (expected 'loop' or 'linear')" : suggestion));
+      return;
+    }
+    detail.subdivisionScheme = it == kSubdivisionSchemes.begin() ? RefinementScheme::Loop : RefinementScheme::Linear;
+  }
+
   void readDetail(const Json& v, const std::string& pointer) {
     const std::vector<std::string> regionKeys = {"asset",     "part",     "center",        "tangent",
                                                  "extent",    "innerRadius", "scale",      "coordinateScale",
                                                  "startFrame", "endFrame", "amplitude",    "validFraction",
-                                                 "seed"};
+                                                 "seed",      "subdivision"};
     const bool sum = v.is_object() && v.contains("patterns");
     std::vector<std::string> keys = regionKeys;
     if (sum)
@@ -1044,7 +1077,7 @@ class ShotReader {
     }
     const auto asset = readAssetPart(o, detail.part);
     if (asset) detail.asset = *asset;
-    if (auto x = o.vec3("center", true)) detail.center = *x;
+    if (asset) readAnchor(o, "center", *asset, detail.part, detail.center);
     if (auto x = o.vec3("tangent")) {
       if (*x == Vec3::Zero())
         o.error("tangent", "the tangent direction must not be zero");
@@ -1073,6 +1106,7 @@ class ShotReader {
       if (auto x = readAnimatedNumber(c_, *a, o.at("amplitude"), Range::atLeast(0))) detail.amplitude = *x;
     if (auto x = o.number("validFraction", Range::closed(0, 1))) detail.selection.fraction = float(*x);
     if (auto x = o.unsignedInteger("seed")) detail.selection.seed = *x;
+    if (const Json* s = o.find("subdivision")) readSubdivision(*s, o.at("subdivision"), detail);
     if (c_.errorCount() == before && asset) shot_.details.push_back(detail);
   }
 };
@@ -1123,6 +1157,8 @@ Shot loadShot(const std::filesystem::path& path) {
   }
   ShotReader(checker, shot).read(*json);
   if (checker.errorCount() > 0) throw ShotError(checker.diagnostics());
+  // Before any surface point is found: they index the refined triangles.
+  refineDetailRegions(shot);
   resolveAttachments(shot);
   resolveTearsAndDetails(shot);
   // After the details' surface points, on the assets as they are now (possibly refined).

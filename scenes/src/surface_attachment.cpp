@@ -5,6 +5,7 @@
 
 #include "asset_pose.hpp"
 #include "lacrima/geometry/surface_point.hpp"
+#include "surface_anchor.hpp"
 
 namespace lacrima::shotfile {
 
@@ -63,7 +64,7 @@ void resolveAttachments(Shot& shot) {
 void resolveTearsAndDetails(Shot& shot) {
   for (ShotTear& tear : shot.tears) {
     if (!shot.assets[tear.asset].gltf) continue;
-    tear.surfacePoint = nearestSurfacePoint(shot, tear.asset, tear.part, tear.start, double(shot.frameStart));
+    tear.surfacePoint = resolveSurfaceAnchor(shot, tear.asset, tear.part, tear.start);
     // The skin point follows the face until the drop starts, then the drop leaves from there.
     const ShotAsset& asset = shot.assets[tear.asset];
     const AssetPose pose = assetPoseAt(asset, tear.startFrame);
@@ -72,7 +73,7 @@ void resolveTearsAndDetails(Shot& shot) {
   }
   for (ShotDetail& detail : shot.details)
     if (shot.assets[detail.asset].gltf)
-      detail.surfacePoint = nearestSurfacePoint(shot, detail.asset, detail.part, detail.center, double(shot.frameStart));
+      detail.surfacePoint = resolveSurfaceAnchor(shot, detail.asset, detail.part, detail.center);
 }
 
 Vec3 attachedNormal(const std::vector<TriangleMesh>& posedPrimitives, const ShotShape::Attachment& attachment) {

@@ -276,6 +276,37 @@ TEST(ApplyDetailPattern, MovesInsideVerticesAlongTheNormalAndLeavesOthersBitwise
   EXPECT_TRUE(bitwiseEqual(g.mesh.positions.back(), Vec3(0.3f, -0.2f, 5.0f)));
 }
 
+TEST(ApplyDetailPattern, PatternOriginShiftsThePatternButNotTheDamping) {
+  GridMesh g = makeGrid();
+  const std::vector<Vec3> before = g.mesh.positions;
+  const DetailRegion region = makeRegion();
+  const std::vector<BasicDetailPattern> forehead = {{DetailPatternKind::ForeheadWrinkles, 1.0f, 2.0f, 0.0f}};
+  DetailPatternApplication app;
+  app.patterns = forehead;
+  app.time = 0.5f;
+  app.heightScale = 0.05f;
+  app.coordinateScale = 2.0f;
+  app.patternOrigin = Vec2(0.25f, -1.5f);  // below the region, outside it
+  applyDetailPattern(g.mesh, g.normals, region, app);
+  size_t checked = 0;
+  for (size_t i = 0; i < before.size(); ++i) {
+    const Vec3 d = before[i] - region.center;
+    const float x = d.dot(region.tangentX), y = d.dot(region.tangentY);
+    const float damping = detailDamping(x, y, region.semiAxisA, region.semiAxisB, region.innerRadius);
+    if (std::abs(d.z()) > region.maxNormalDistance || damping == 0.0f) {
+      EXPECT_TRUE(bitwiseEqual(g.mesh.positions[i], before[i])) << i;
+      continue;
+    }
+    const float height = foreheadWrinkleHeight(2.0f * (x - 0.25f), 2.0f * (y + 1.5f), 0.5f, 1.0f, 2.0f);
+    const Vec3 expected = before[i] + g.normals[i].normalized() * (0.05f * damping * height);
+    EXPECT_LT((g.mesh.positions[i] - expected).norm(), 1e-6f) << i;
+    ++checked;
+  }
+  EXPECT_GT(checked, 100u);
+  app.patternOrigin = Vec2(std::nanf(""), 0.0f);
+  EXPECT_THROW(applyDetailPattern(g.mesh, g.normals, region, app), InputError);
+}
+
 TEST(ApplyDetailPattern, RandomValidSubsetIsReproducibleForASeedAndDiffersForAnother) {
   const DetailRegion region = makeRegion();
   DetailPatternApplication app;

@@ -198,6 +198,25 @@ TEST(SheddingTearShot, FollowsTheSkinDetail) {
   EXPECT_GT(moved, 5e-5f) << "the wrinkles move the tear's base";
 }
 
+TEST(SheddingTearShot, LiesOnTheSkinRefinedUnderADetail) {
+  std::string refined = kDetail;
+  refined.replace(refined.find(R"("endFrame": 5)"), 13, R"("endFrame": 5, "subdivision": {"levels": 1})");
+  const Shot shot = loadShot(writeShot("shed_refined.json", faceShot(kTear + refined)));
+  const Shot plain = loadShot(writeShot("shed_unrefined.json", faceShot(kTear + kDetail)));
+  const size_t primitive = shot.sheddingTears[0].primitive;
+  ASSERT_GT(shot.assets[0].gltf->primitives[primitive].mesh.triangleCount(),
+            plain.assets[0].gltf->primitives[primitive].mesh.triangleCount())
+      << "the face is refined under the detail";
+  EXPECT_GT(shot.sheddingTears[0].region->mesh.triangleCount(), plain.sheddingTears[0].region->mesh.triangleCount())
+      << "the tear's region is taken from the refined face";
+  const Frame frame = buildFrame(shot, 4);
+  const MeshInstance* tear = findMesh(frame, "shedding tear");
+  ASSERT_NE(tear, nullptr);
+  const SkinDistances d = distancesToSkin(tear->mesh, skinOf(frame, shot).mesh, stripAt(shot, 4), 2e-5f);
+  EXPECT_GE(d.lowest, 0.0f);
+  EXPECT_LT(d.baseError, 1e-6f);
+}
+
 TEST(SheddingTearShot, MovesWithTheSkinDuringTheShutter) {
   const std::string smile = R"("blendshapes": {"cheekRaiser_R": {"keys": [[1, 0], [5, 1]], "interpolation": "linear"}})";
   const std::string shutter = R"(, "shutter": {"open": -0.25, "close": 0.25})";

@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <atomic>
-#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -13,6 +12,7 @@
 #include "commands.hpp"
 #include "frame_check.hpp"
 #include "frame_range.hpp"
+#include "frame_selection.hpp"
 #include "interrupt.hpp"
 #include "lacrima/renderer/camera.hpp"
 #include "lacrima/renderer/image_output.hpp"
@@ -27,25 +27,6 @@ namespace {
 // Above this fraction of discarded NaN/Inf samples a frame is a failed render, not a noisy one.
 constexpr double kMaxNonFiniteFraction = 1e-4;
 
-// The frames to render, all inside the shot's range (checked before anything is rendered).
-std::vector<int> framesToRender(const RenderOptions& options, const Shot& shot) {
-  if (!options.frames) {
-    std::vector<int> frames;
-    for (int f = shot.frameStart; f <= shot.frameEnd; ++f) frames.push_back(f);
-    return frames;
-  }
-  const std::string& text = *options.frames;
-  const std::string shown = text.empty() ? "''" : text;
-  std::string error;
-  auto frames = parseFrameList(text, error);
-  if (!frames) throw InputError("--frames " + shown + ": " + error);
-  for (int f : *frames)
-    if (f < shot.frameStart || f > shot.frameEnd)
-      throw InputError(fmt::format("--frames {}: frame {} is outside the frame range {}-{} of {}", shown, f,
-                                   shot.frameStart, shot.frameEnd, shot.path.string()));
-  return *frames;
-}
-
 void applyOverrides(const RenderOptions& o, RenderSettings& s) {
   if (o.spp) s.samplesPerPixel = *o.spp;
   if (o.width) s.width = *o.width;
@@ -56,21 +37,9 @@ void applyOverrides(const RenderOptions& o, RenderSettings& s) {
   if (o.floatOutput) s.floatOutput = true;
 }
 
-std::string lowerExtension(const std::filesystem::path& path) {
-  std::string ext = path.extension().string();
-  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
-  return ext;
-}
-
 std::string outputPattern(const RenderOptions& o, const Shot& shot, size_t frameCount) {
   const std::string pattern = o.outputPattern.empty() ? shot.outputPattern : o.outputPattern;
-  // The same expansion the frames get: a pattern with a frame field ('#' run, %d, %04d)
-  // names different files for different frames.
-  const bool hasFrameField = expandFramePattern(pattern, 1) != expandFramePattern(pattern, 2);
-  if (frameCount > 1 && !hasFrameField)
-    throw InputError(fmt::format("output '{}' has no #### frame field but {} frames are to be rendered: every frame "
-                                 "would overwrite the last",
-                                 pattern, frameCount));
+  requireFrameField(pattern, frameCount, "rendered");
   // Frames are always OpenEXR; another extension would mislead, and with --preview a '.png'
   // output would be overwritten by its own preview.
   if (lowerExtension(expandFramePattern(pattern, 1)) != ".exr")
@@ -248,7 +217,7 @@ int runRender(const RenderOptions& o) {
   try {
     const auto start = std::chrono::steady_clock::now();
     const Shot shot = loadShot(o.shotPath);
-    const std::vector<int> frames = framesToRender(o, shot);
+    const std::vector<int> frames = selectShotFrames(o.frames, shot);
     const std::string pattern = outputPattern(o, shot, frames.size());
     checkPreviewConfig(o, shot);
     printShotWarnings(shot);

@@ -27,6 +27,13 @@ struct RenderOptions {
   bool resume = false;  // skip frames whose EXR is already complete with these settings
 };
 
+struct ExportOptions {
+  std::string shotPath;
+  std::optional<std::string> frames;  // none: the shot's range
+  std::string format = "glb";         // "glb" or "obj" (main.cpp validates)
+  std::string outputPattern;          // empty: the shot's output pattern with the format's extension
+};
+
 struct BenchOptions {
   std::string shotPath;
   int width = 320, height = 180, spp = 4, threads = 0, repetitions = 3;
@@ -36,6 +43,7 @@ int runRender(const RenderOptions& options);
 int runCheck(const std::string& shotPath);
 int runInfo(const std::string& path);
 int runBench(const BenchOptions& options);
+int runExport(const ExportOptions& options);
 
 // Prints the shot's non-fatal warnings (Shot::warnings) to stderr, one per line:
 // "shot.json:13:27: /environment/file: warning: ...", before any rendering.

@@ -27,6 +27,8 @@ const char* kDescription =
     "  lacrima render shot.json --frames 1-48x2 --spp 64 --width 640 --height 360\n"
     "      every 2nd frame of 1-48, at a quick preview quality\n"
     "  lacrima check shot.json         validate a shot file, report every problem\n"
+    "  lacrima export shot.json --frames 1-48 --format obj\n"
+    "      the face, shape and tear meshes of each frame, for other tools\n"
     "  lacrima info face.glb           list primitives, blendshapes and cameras of a glTF\n"
     "  lacrima info frame.0001.exr     list channels and lacrima metadata of a rendered frame\n"
     "  lacrima bench                   renderer and raw Embree throughput on the default shot\n"
@@ -102,6 +104,47 @@ void addRender(CLI::App& app, RenderOptions& o) {
   render->callback([&o] { throw CLI::RuntimeError(runRender(o)); });
 }
 
+// One of a fixed set of words, with a message in the style of integerIn's.
+CLI::Validator oneOf(const std::vector<std::string>& words) {
+  std::string expected;
+  for (size_t i = 0; i < words.size(); ++i)
+    expected += (i == 0 ? "" : i + 1 == words.size() ? " or " : ", ") + words[i];
+  return CLI::Validator(
+      [words, expected](std::string& text) -> std::string {
+        for (const std::string& w : words)
+          if (text == w) return std::string();
+        return fmt::format("expected {}, found {}", expected, describeArgument(text));
+      },
+      expected);
+}
+
+const char* kExportExamples =
+    "Examples:\n"
+    "  lacrima export scenes/shots/tear_closeup.json\n"
+    "      every frame, next to the shot's EXR output with .glb (out/tear_closeup.####.glb)\n"
+    "  lacrima export shot.json --frames 12-14 --format obj --out /tmp/geo/shot.####.obj\n"
+    "      three frames as OBJ (each with its .mtl) to another place\n"
+    "\n"
+    "Each frame's file holds what the renderer gets from the shot at shutter open: the posed face\n"
+    "primitives, the shapes, the tears and the spheres (tessellated), in world space and metres, each\n"
+    "a named mesh (\"face/<mesh>/M_Face\", \"tear\", \"ellipsoid\", \"sphere 2\", ...) with its material's\n"
+    "name and colour. glb: one node and mesh per mesh (see it with `lacrima info FILE.glb`);\n"
+    "obj: one object per mesh, uvs flipped to OBJ's bottom-left origin. Files are written to a\n"
+    "temporary name and renamed when complete.\n"
+    "Exit status: 0 success, 2 bad input (shot, asset, options) or an output that cannot be written.";
+
+void addExport(CLI::App& app, ExportOptions& o) {
+  auto* exportCommand = app.add_subcommand("export", "Write each frame's face, shape and tear meshes (glTF or OBJ)");
+  exportCommand->footer(kExportExamples);
+  exportCommand->add_option("shot", o.shotPath, "Shot file (JSON)")->required();
+  exportCommand->add_option("--frames,-f", o.frames, "Frames to export: 12, 1-48, 1-48x2 or lists like 1,5,10-12");
+  exportCommand->add_option("--format", o.format, "File format: glb (binary glTF 2.0, default) or obj (+ .mtl)")
+      ->check(oneOf({"glb", "obj"}));
+  exportCommand->add_option("--out,-o", o.outputPattern,
+                            "Output path pattern, #### = frame number (default: the shot's output with .glb/.obj)");
+  exportCommand->callback([&o] { throw CLI::RuntimeError(runExport(o)); });
+}
+
 void addCheck(CLI::App& app, std::string& shot) {
   auto* check = app.add_subcommand("check", "Validate a shot file and its assets without rendering");
   check->add_option("shot", shot, "Shot file (JSON)")->required();
@@ -134,11 +177,13 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   RenderOptions renderOptions;
   BenchOptions benchOptions;
+  ExportOptions exportOptions;
   std::string checkShot, infoFile;
   addRender(app, renderOptions);
   addCheck(app, checkShot);
   addInfo(app, infoFile);
   addBench(app, benchOptions);
+  addExport(app, exportOptions);
   try {
     app.parse(argc, argv);
   } catch (const CLI::RuntimeError& status) {

@@ -145,12 +145,16 @@ struct DetailPatternApplication {
   float time = 0.0f;                             // t
   float heightScale = 1.0f;       // world units per unit of pattern height
   float coordinateScale = 1.0f;   // pattern units per world unit in the tangent plane
+  // Where the pattern's origin (x = y = 0) lies in the region's local (x, y), world units. The
+  // damping stays centred on the region: an origin outside it shows only an outer part of the
+  // pattern (e.g. eq. 1's rings centred below the forehead read as horizontal wrinkle arcs).
+  Vec2 patternOrigin = Vec2::Zero();
   ValidVertexSelection selection;  // fraction 1: every vertex in the region is valid
 };
 
 // Displaces each valid vertex in the region along its normal (normalised; one per vertex) by
-//   heightScale * detailDamping(x, y, a, b, innerRadius) * P(coordinateScale x, coordinateScale y, t)
-// with (x, y) its local coordinates. Vertices outside the region, invalid ones, ones whose normal
+//   heightScale * detailDamping(x, y, a, b, innerRadius) * P(coordinateScale (x - ox), coordinateScale (y - oy), t)
+// with (x, y) its local coordinates and (ox, oy) the patternOrigin. Vertices outside the region, invalid ones, ones whose normal
 // is zero or not finite and ones whose displacement is exactly 0 are left bitwise unchanged; a
 // displaced coordinate is clamped to the float range. Only positions change (recompute normals
 // afterwards if needed). `normals` may be mesh.normals. Returns the number of vertices moved.

@@ -3,6 +3,7 @@
 // point follows any deformation of a mesh with the same topology exactly. Tears and drops are
 // attached to the skin this way.
 #include <cstdint>
+#include <optional>
 
 #include "lacrima/geometry/math.hpp"
 #include "lacrima/geometry/mesh.hpp"
@@ -28,5 +29,14 @@ Vec3 triangleNormal(const TriangleMesh& mesh, uint32_t triangle);
 // triangle index; the closest point of a triangle after Ericson, "Real-Time Collision
 // Detection", 5.1.5). Throws InputError for an empty mesh.
 SurfacePoint closestSurfacePoint(const TriangleMesh& mesh, const Vec3& p);
+
+// The surface point at a vertex: the first triangle (lowest index) using it, with weight 1 at
+// that corner. nullopt when no triangle uses the vertex (or it is out of range).
+std::optional<SurfacePoint> vertexSurfacePoint(const TriangleMesh& mesh, uint32_t vertex);
+
+// The surface point whose interpolated texture coordinates are `uv`: the first triangle whose
+// uv triangle contains it (barycentric weights >= -1e-5, then clamped and renormalised); uv
+// triangles of zero area are skipped. nullopt when the mesh has no uvs or no triangle covers uv.
+std::optional<SurfacePoint> surfacePointAtUv(const TriangleMesh& mesh, const Vec2& uv);
 
 }  // namespace lacrima

@@ -16,6 +16,7 @@
 #include "lacrima/geometry/face_rig.hpp"
 #include "lacrima/geometry/gltf_asset.hpp"
 #include "lacrima/geometry/math.hpp"
+#include "lacrima/geometry/region_refinement.hpp"
 #include "lacrima/geometry/shedding_tear.hpp"
 #include "lacrima/geometry/surface_region.hpp"
 #include "lacrima/materials/material.hpp"
@@ -163,13 +164,25 @@ struct ShotShape {
 // A point on an asset's surface (triangle and barycentric coordinates of a posed primitive).
 using ShotSurfacePoint = ShotShape::Attachment;
 
+// Where a tear or a detail sits on a part, as written in the shot (docs/shot-format.md "Surface
+// anchors"): a point near the skin (snapped to the nearest surface point of the part at the
+// shot's first frame), a facial landmark of the asset, a vertex of the part, or a texture
+// coordinate on the part. Resolved into a ShotSurfacePoint by loadShot.
+struct ShotSurfaceAnchor {
+  enum class Kind { Point, Landmark, Vertex, Uv };
+  Kind kind = Kind::Point;
+  Vec3 point = Vec3::Zero();  // Point: world space
+  uint32_t index = 0;         // Landmark: index into GltfAsset::landmarks; Vertex: of the part's primitive
+  Vec2 uv = Vec2::Zero();     // Uv: in the part's TEXCOORD_0
+};
+
 // A dripping tear (seed 004 section 4.1, eq. 7; docs/shot-format.md "tears"): from startFrame on,
 // a drop mesh at t = (frame - startFrame) / fps seconds leaves the skin point `origin` along
 // `gravity`. Before startFrame there is no drop.
 struct ShotTear {
   size_t asset = 0;       // index into Shot::assets
   std::string part;       // the part the start point is snapped to
-  Vec3 start = Vec3::Zero();  // as written
+  ShotSurfaceAnchor start;  // as written
   double startFrame = 1.0;
   DrippingTearParams params;
   Vec3 gravity = Vec3(0, -1, 0);  // non-zero; normalised by placeDrippingTear
@@ -215,7 +228,7 @@ struct ShotDetail {
   std::vector<BasicDetailPattern> patterns;
   size_t asset = 0;
   std::string part;
-  Vec3 center = Vec3::Zero();           // as written; snapped to the surface at the first frame
+  ShotSurfaceAnchor center;             // as written; resolved to a surface point at the first frame
   std::optional<Vec3> tangent;          // world direction projected to tangent x (default +x)
   float semiAxisA = 0.01f, semiAxisB = 0.01f;  // metres
   float innerRadius = 0.5f;
@@ -224,6 +237,10 @@ struct ShotDetail {
   double startFrame = 1.0, endFrame = 1.0;
   AnimatedFloat amplitude{1.0f, nullptr};  // multiplies scale; >= 0
   ValidVertexSelection selection;
+  // "subdivision": the part's mesh is refined this many levels around the region at load, before
+  // anything is displaced (0: not refined).
+  int subdivisionLevels = 0;
+  RefinementScheme subdivisionScheme = RefinementScheme::Loop;
   ShotSurfacePoint surfacePoint;        // resolved by loadShot
 
   bool activeAt(int frame) const { return frame >= startFrame && frame <= endFrame; }
