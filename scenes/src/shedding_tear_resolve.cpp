@@ -34,8 +34,8 @@ SnappedPoint snapToPart(const std::vector<std::pair<size_t, TriangleMesh>>& part
 
 std::string formatPoint(const Vec3& p) { return fmt::format("[{:.4f}, {:.4f}, {:.4f}]", p.x(), p.y(), p.z()); }
 
-// Resolves one tear; appends its problems.
-void resolveTear(const Shot& shot, ShotSheddingTear& tear, std::vector<SheddingTearProblem>& problems) {
+// The part's primitives posed at the shot's first frame (the rest skin), with their indices.
+std::vector<std::pair<size_t, TriangleMesh>> restPartMeshes(const Shot& shot, const ShotSheddingTear& tear) {
   const ShotAsset& asset = shot.assets[tear.asset];
   const AssetPose pose = assetPoseAt(asset, double(shot.frameStart));
   std::vector<std::pair<size_t, TriangleMesh>> partMeshes;
@@ -44,16 +44,19 @@ void resolveTear(const Shot& shot, ShotSheddingTear& tear, std::vector<SheddingT
       TriangleMesh mesh = posedPrimitive(asset, pose, i);
       if (mesh.triangleCount() > 0) partMeshes.emplace_back(i, std::move(mesh));
     }
-  const std::string pathPointer = childPointer(tear.pointer, "path");
-  if (partMeshes.empty()) {
-    problems.push_back({childPointer(tear.pointer, "part"), fmt::format("part '{}' has no triangles", tear.part)});
-    return;
-  }
+  return partMeshes;
+}
+
+// The written path snapped to the rest skin; empty when a point is off the skin, on another
+// primitive than the first point or on the same skin point as the one before (appended to problems).
+std::vector<SnappedPoint> snapPath(const GltfAsset& gltf, const ShotSheddingTear& tear,
+                                   const std::vector<std::pair<size_t, TriangleMesh>>& partMeshes,
+                                   std::vector<SheddingTearProblem>& problems) {
   const size_t before = problems.size();
   std::vector<SnappedPoint> snapped;
   for (size_t k = 0; k < tear.path.size(); ++k) {
     const SnappedPoint s = snapToPart(partMeshes, tear.path[k]);
-    const std::string at = childPointer(pathPointer, k);
+    const std::string at = childPointer(childPointer(tear.pointer, "path"), k);
     if (s.distance > kMaxPathPointDistance)
       problems.push_back({at, fmt::format("path point {} is {:.3g} m from the skin of part '{}' (its nearest skin "
                                           "point at the first frame is {}); path points must lie within {} m of it",
@@ -61,14 +64,26 @@ void resolveTear(const Shot& shot, ShotSheddingTear& tear, std::vector<SheddingT
     else if (k > 0 && s.primitive != snapped[0].primitive)
       problems.push_back({at, fmt::format("path point {} snaps to primitive '{}' of part '{}' but path point 0 to "
                                           "'{}'; a shedding tear runs over one primitive",
-                                          k, asset.gltf->primitives[s.primitive].name, tear.part,
-                                          asset.gltf->primitives[snapped[0].primitive].name)});
+                                          k, gltf.primitives[s.primitive].name, tear.part,
+                                          gltf.primitives[snapped[0].primitive].name)});
     else if (k > 0 && s.position == snapped.back().position)
       problems.push_back({at, fmt::format("path point {} snaps to the same skin point as path point {}; give "
                                           "distinct points", k, k - 1)});
     snapped.push_back(s);
   }
-  if (problems.size() > before) return;
+  if (problems.size() > before) snapped.clear();
+  return snapped;
+}
+
+// Resolves one tear; appends its problems.
+void resolveTear(const Shot& shot, ShotSheddingTear& tear, std::vector<SheddingTearProblem>& problems) {
+  const std::vector<std::pair<size_t, TriangleMesh>> partMeshes = restPartMeshes(shot, tear);
+  if (partMeshes.empty()) {
+    problems.push_back({childPointer(tear.pointer, "part"), fmt::format("part '{}' has no triangles", tear.part)});
+    return;
+  }
+  const std::vector<SnappedPoint> snapped = snapPath(*shot.assets[tear.asset].gltf, tear, partMeshes, problems);
+  if (snapped.empty()) return;
 
   tear.primitive = snapped[0].primitive;
   const TriangleMesh* rest = nullptr;
@@ -103,7 +118,7 @@ void resolveTear(const Shot& shot, ShotSheddingTear& tear, std::vector<SheddingT
   try {
     buildSheddingTearStrip(tear.region->mesh, tear.regionPath, full, 0.0f);
   } catch (const InputError& e) {
-    problems.push_back({pathPointer, e.what()});
+    problems.push_back({childPointer(tear.pointer, "path"), e.what()});
   }
 }
 
