@@ -48,6 +48,8 @@ void validate(const SheddingTearParams& p) {
   if (!(p.noiseDensity >= 0.0f && p.noiseDensity <= 1.0f)) bad("noiseDensity", p.noiseDensity, "in [0, 1]");
   if (!(p.noiseAmplitude >= 0.0f) || !std::isfinite(p.noiseAmplitude))
     bad("noiseAmplitude", p.noiseAmplitude, "finite and >= 0");
+  if (p.smoothingDegree < 0 || p.smoothingDegree > 15)
+    bad("smoothingDegree", float(p.smoothingDegree), "in 0..15");
   if (!(p.smoothingEpsilon > 0.0f) || !std::isfinite(p.smoothingEpsilon))
     bad("smoothingEpsilon", p.smoothingEpsilon, "finite and > 0");
 }
@@ -141,10 +143,14 @@ SheddingTearStrip buildSheddingTearStrip(const TriangleMesh& restSkin, const std
           any = true;
         }
       }
-    const int m = MovingLeastSquares::basisSize(2, params.smoothingDegree);
+    // A polynomial of total degree r vanishing on r + 1 rows of r + 1 distinct points each is zero,
+    // so the fit is determined when both counts exceed the degree; a young tear with fewer rows
+    // is smoothed with a lower degree (two rows alone would make a degree-2 fit singular).
+    const int degree = std::min({params.smoothingDegree, strip.rows - 1, columns - 1});
+    const int m = MovingLeastSquares::basisSize(2, degree);
     if (any && strip.rows >= 2 && int(bumps.size()) >= m) {
       const std::vector<float> smooth =
-          smoothHeightField(strip.coordinates, bumps, params.smoothingDegree, double(params.smoothingEpsilon));
+          smoothHeightField(strip.coordinates, bumps, degree, double(params.smoothingEpsilon));
       for (int i = 0; i < strip.rows; ++i)
         for (int j = 1; j + 1 < columns; ++j) {
           const float s = -0.5f + float(j) / float(columns - 1);

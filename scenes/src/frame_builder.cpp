@@ -1,7 +1,8 @@
 // buildFrame: a checked Shot at one frame number -> the renderer's Frame, through the geometry
-// stage: assets posed by their rig, keyframes and performance tracks, shapes (keyed or attached
-// to the skin), lights and camera, each at shutter open and, when the shot has a shutter and it
-// moves, at shutter close (motion blur). Nothing is read from disk here.
+// stage: assets posed by their rig, keyframes and performance tracks, details displacing the
+// posed skin, shapes (keyed or attached to the skin), dripping tears and shedding tears (on the
+// posed, detailed skin), lights and camera, each at shutter open and, when the shot has a shutter
+// and it moves, at shutter close (motion blur). Nothing is read from disk here.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -10,6 +11,7 @@
 #include "lacrima/geometry/detail_patterns.hpp"
 #include "lacrima/geometry/dripping_tear.hpp"
 #include "lacrima/geometry/shapes.hpp"
+#include "lacrima/geometry/shedding_tear.hpp"
 #include "lacrima/scenes/shot.hpp"
 #include "shot_geometry.hpp"
 #include "surface_attachment.hpp"
@@ -122,6 +124,30 @@ void addTear(const Shot& shot, const ShotTear& tear, int frameNumber, const Shut
   frame.meshes.push_back(std::move(instance));
 }
 
+// Seed 004 section 4.2: the shedding tear's strip on the rest skin region at the shutter-open time,
+// placed on the posed (and detailed) primitive; with a shutter the same strip is also placed on
+// the shutter-close skin, so the tear moves with the face but its growth within the shutter is
+// not blurred.
+void addSheddingTear(const Shot& shot, const ShotSheddingTear& tear, int frameNumber, const ShutterTimes& shutter,
+                     const PosedAssets& open, const PosedAssets* close, Frame& frame) {
+  if (frameNumber < tear.startFrame || !tear.region || open[tear.asset].empty()) return;
+  const float t = float(std::max(0.0, tear.secondsAt(shutter.open, shot.fps)));
+  SheddingTearStrip strip = buildSheddingTearStrip(tear.region->mesh, tear.regionPath, tear.params, t);
+  if (strip.rows == 0) return;  // not grown to a row yet
+  for (SurfacePoint& p : strip.points) p = tear.region->toFull(p);
+  MeshInstance instance(sheddingTearMesh(open[tear.asset][tear.primitive], strip, tear.params.baseOffset),
+                        tear.materialId);
+  instance.mesh.name = "shedding tear";
+  if (close && !(*close)[tear.asset].empty()) {
+    TriangleMesh atClose = sheddingTearMesh((*close)[tear.asset][tear.primitive], strip, tear.params.baseOffset);
+    if (atClose.positions != instance.mesh.positions) {
+      instance.positionsAtClose = std::move(atClose.positions);
+      instance.normalsAtClose = std::move(atClose.normals);
+    }
+  }
+  frame.meshes.push_back(std::move(instance));
+}
+
 // The detail's displacement of the part's posed primitives at a (fractional) frame, in place.
 // The local frame comes from the posed skin at the detail's surface point: its centre there,
 // the normal the interpolated skin normal, tangent x the projection of the detail's tangent
@@ -224,6 +250,8 @@ Frame buildFrame(const Shot& shot, int frameNumber) {
   for (size_t a = 0; a < shot.assets.size(); ++a) addAssetMeshes(shot, a, open, closePtr, frame);
   for (const ShotShape& shape : shot.shapes) addShape(shape, shutter, open, closePtr, frame);
   for (const ShotTear& tear : shot.tears) addTear(shot, tear, frameNumber, shutter, frame);
+  for (const ShotSheddingTear& tear : shot.sheddingTears)
+    addSheddingTear(shot, tear, frameNumber, shutter, open, closePtr, frame);
 
   frame.lights = shot.lights;
   for (size_t i = 0; i < frame.lights.size() && i < shot.lightCenterCurves.size(); ++i)

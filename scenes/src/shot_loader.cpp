@@ -19,6 +19,7 @@
 #include "asset_pose.hpp"
 #include "detail_refinement.hpp"
 #include "suggest.hpp"
+#include "shedding_tear_resolve.hpp"
 #include "surface_attachment.hpp"
 
 namespace lacrima {
@@ -35,7 +36,7 @@ const std::vector<std::string> kRootKeys = {"version",   "frames", "output",    
 const std::vector<std::string> kMaterialTypes = {"diffuse", "skin", "water", "rough_dielectric"};
 const std::vector<std::string> kLightTypes = {"rectangle", "sphere"};
 const std::vector<std::string> kShapeTypes = {"sphere", "ellipsoid", "rectangle"};
-const std::vector<std::string> kTearTypes = {"dripping"};
+const std::vector<std::string> kTearTypes = {"dripping", "shedding"};
 const std::vector<std::string> kDetailPatterns = {"forehead", "eyeCorner", "cheek", "frown", "dimple", "eyePouch"};
 const std::vector<std::string> kSubdivisionSchemes = {"loop", "linear"};
 // Each level quadruples the region's triangles: 4 levels turn one triangle into 256.
@@ -915,6 +916,10 @@ class ShotReader {
   void readTear(const Json& v, const std::string& pointer) {
     const auto type = readType(v, pointer, kTearTypes, "tear");
     if (!type) return;
+    if (*type == "shedding") {
+      readSheddingTear(v, pointer);
+      return;
+    }
     ObjectReader o(c_, v, pointer,
                    {"type", "asset", "part", "start", "startFrame", "alpha", "beta", "lambda", "headAngle", "minTime",
                     "gravity", "material", "rings", "segments"});
@@ -940,6 +945,58 @@ class ShotReader {
     if (auto x = o.integer("segments", Range::closed(3, 1024))) tear.segments = int(*x);
     readMaterialMember(o, tear.material, tear.materialId);
     if (c_.errorCount() == before && asset) shot_.tears.push_back(tear);
+  }
+
+  // "path": [[x, y, z], ...], at least two points.
+  void readTearPath(ObjectReader& o, std::vector<Vec3>& path) {
+    const Json* v = o.find("path");
+    if (!v) {
+      o.missing("path", "[[x, y, z], ...], two or more points near the skin that the tear runs through");
+      return;
+    }
+    if (!v->is_array() || v->size() < 2) {
+      o.error("path", "expected an array of two or more points [[x, y, z], ...], found " + describeValue(*v));
+      return;
+    }
+    for (size_t i = 0; i < v->size(); ++i)
+      if (auto p = readVec3(c_, (*v)[i], childPointer(o.at("path"), i))) path.push_back(*p);
+  }
+
+  // Seed 004 section 4.2: a strip of water shed along a path over the skin (ShotSheddingTear).
+  void readSheddingTear(const Json& v, const std::string& pointer) {
+    ObjectReader o(c_, v, pointer,
+                   {"type", "asset", "part", "path", "startFrame", "material", "width", "thickness", "start", "speed",
+                    "headLength", "headBulge", "tipFraction", "skinRoughness", "noiseAmplitude", "smoothingEpsilon",
+                    "smoothingDegree", "sampleSpacing", "acrossSamples", "baseOffset", "seed"});
+    if (!o.ok()) return;
+    const size_t before = c_.errorCount();
+    ShotSheddingTear tear;
+    tear.pointer = pointer;
+    const auto asset = readAssetPart(o, tear.part);
+    if (asset) tear.asset = *asset;
+    readTearPath(o, tear.path);
+    if (auto x = o.number("startFrame", Range::any(), true)) tear.startFrame = *x;
+    SheddingTearParams& p = tear.params;
+    auto number = [&](const char* key, Range range, float& out) {
+      if (auto x = o.number(key, range)) out = float(*x);
+    };
+    number("width", Range::above(0), p.width);
+    number("thickness", Range::above(0), p.thickness);
+    number("start", Range::atLeast(0), p.start);
+    number("speed", Range::atLeast(0), p.speed);
+    number("headLength", Range::atLeast(0), p.headLength);
+    number("headBulge", Range::atLeast(0), p.headBulge);
+    number("tipFraction", Range::openClosed(0, 1), p.tipFraction);
+    number("skinRoughness", Range::closed(0, 1), p.noiseDensity);
+    number("noiseAmplitude", Range::atLeast(0), p.noiseAmplitude);
+    number("smoothingEpsilon", Range::above(0), p.smoothingEpsilon);
+    number("sampleSpacing", Range::above(0), p.sampleSpacing);
+    number("baseOffset", Range::above(0), p.baseOffset);
+    if (auto x = o.integer("smoothingDegree", Range::closed(0, 4))) p.smoothingDegree = int(*x);
+    if (auto x = o.integer("acrossSamples", Range::closed(3, 101))) p.acrossSamples = int(*x);
+    if (auto x = o.unsignedInteger("seed")) p.seed = *x;
+    readMaterialMember(o, tear.material, tear.materialId);
+    if (c_.errorCount() == before && asset) shot_.sheddingTears.push_back(tear);
   }
 
   // One basic pattern: {"pattern": name, "alpha", "beta", "gamma"} (the object itself for a
@@ -1106,6 +1163,10 @@ Shot loadShot(const std::filesystem::path& path) {
   refineDetailRegions(shot);
   resolveAttachments(shot);
   resolveTearsAndDetails(shot);
+  // After the details' surface points, on the assets as they are now (possibly refined).
+  for (const SheddingTearProblem& problem : resolveSheddingTears(shot))
+    checker.error(problem.pointer, Anchor::Value, problem.message);
+  if (checker.errorCount() > 0) throw ShotError(checker.diagnostics());
   return shot;
 }
 

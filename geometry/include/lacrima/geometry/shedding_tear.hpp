@@ -45,7 +45,8 @@
 // vertices are guaranteed above the skin (by baseOffset); a tear triangle spanning a convex crease
 // of the skin mesh can dip below the crease by about (sample spacing) x (crease angle) / 4, which a
 // strip finer than the face mesh and baseOffset keep small. Sampling is brute force over the skin's
-// triangles (fine for the extracted area around a tear, slow for a whole face).
+// triangles (fine for the extracted area around a tear, slow for a whole face: extractSurfaceRegion
+// and stripRegionRadius in surface_region.hpp extract that area and give bitwise the same strip).
 // The across direction follows the path's polyline segments, so a path turning more sharply than a
 // radius of width / 2 makes neighbouring rows cross (give smooth, finely spaced paths). The step 4
 // MLS fit uses every grid point for every evaluation (its weight has no compact support), so its
@@ -73,7 +74,7 @@ struct SheddingTearParams {
   float noiseDensity = 0.0f;    // probability that an interior grid point gets a bump, [0, 1]
   float noiseAmplitude = 0.0003f;  // metres, largest bump before smoothing (>= 0)
   float smoothingEpsilon = 0.0005f;  // MLS epsilon in metres (> 0)
-  int smoothingDegree = 2;      // MLS polynomial degree
+  int smoothingDegree = 2;      // MLS polynomial degree, 0..15 (lower while the tear has <= degree rows)
   uint64_t seed = 1;
 };
 

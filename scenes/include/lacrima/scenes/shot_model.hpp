@@ -17,6 +17,8 @@
 #include "lacrima/geometry/gltf_asset.hpp"
 #include "lacrima/geometry/math.hpp"
 #include "lacrima/geometry/region_refinement.hpp"
+#include "lacrima/geometry/shedding_tear.hpp"
+#include "lacrima/geometry/surface_region.hpp"
 #include "lacrima/materials/material.hpp"
 #include "lacrima/renderer/environment.hpp"
 #include "lacrima/renderer/frame.hpp"
@@ -196,6 +198,29 @@ struct ShotTear {
   double secondsAt(double frame, double fps) const { return (frame - startFrame) / fps; }
 };
 
+// A shedding tear (seed 004 section 4.2; docs/shot-format.md "tears"): a strip of water running
+// over the skin along `path`, grown to arc length h = start + speed t at t = (frame - startFrame)
+// / fps seconds, placed on the part's posed primitive (after details) so it follows the face.
+struct ShotSheddingTear {
+  size_t asset = 0;            // index into Shot::assets
+  std::string part;            // the part the path is snapped to
+  std::vector<Vec3> path;      // as written: >= 2 world points near the skin at the first frame
+  double startFrame = 1.0;
+  SheddingTearParams params;   // "skinRoughness" is params.noiseDensity
+  std::string material;
+  uint32_t materialId = 0;
+  std::string pointer;         // the tear in the shot file ("/tears/2"), for problems found resolving it
+  // Resolved by loadShot from the part posed at the shot's first frame (the rest skin): the one
+  // primitive all path points snap to, the rest skin's triangles around the path (seed 004
+  // section 4.2 step 1: the extracted region) and the snapped path on that region.
+  size_t primitive = 0;
+  std::shared_ptr<const SurfaceRegion> region;
+  std::vector<SurfacePoint> regionPath;
+
+  // Seconds since the tear started at a (fractional) frame.
+  double secondsAt(double frame, double fps) const { return (frame - startFrame) / fps; }
+};
+
 // Animated skin detail (seed 004 section 3; docs/shot-format.md "details"): a sum of basic
 // patterns displaced onto the part's posed primitives in an ellipse around a skin point, at
 // frames startFrame..endFrame.
@@ -251,7 +276,8 @@ struct Shot {
   std::vector<AnimatedFloat> lightIntensities;  // per light: multiplies its radiance (default 1)
   std::vector<ShotAsset> assets;
   std::vector<ShotShape> shapes;
-  std::vector<ShotTear> tears;
+  std::vector<ShotTear> tears;                  // "dripping" tears
+  std::vector<ShotSheddingTear> sheddingTears;  // "shedding" tears
   std::vector<ShotDetail> details;
 
   // Things that load but deserve a look (glTF loader caveats, environment texels that were
