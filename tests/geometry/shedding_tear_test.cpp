@@ -11,6 +11,7 @@
 #include "lacrima/geometry/error.hpp"
 #include "lacrima/geometry/mesh.hpp"
 #include "lacrima/geometry/shedding_tear.hpp"
+#include "height_field_mesh.hpp"
 
 namespace lacrima {
 namespace {
@@ -20,17 +21,7 @@ constexpr float kHalf = 0.02f;     // the patch spans [-2 cm, 2 cm]^2, faces 1.6
 
 // A flat skin patch in the xy plane, counter-clockwise seen from +z (its outside).
 TriangleMesh flatSkin() {
-  TriangleMesh m;
-  for (int y = 0; y <= kGrid; ++y)
-    for (int x = 0; x <= kGrid; ++x)
-      m.positions.emplace_back(-kHalf + 2 * kHalf * float(x) / kGrid, -kHalf + 2 * kHalf * float(y) / kGrid, 0.0f);
-  auto v = [](int x, int y) { return uint32_t(y * (kGrid + 1) + x); };
-  for (int y = 0; y < kGrid; ++y)
-    for (int x = 0; x < kGrid; ++x) {
-      m.indices.insert(m.indices.end(), {v(x, y), v(x + 1, y), v(x + 1, y + 1)});
-      m.indices.insert(m.indices.end(), {v(x, y), v(x + 1, y + 1), v(x, y + 1)});
-    }
-  return m;
+  return test::heightFieldMesh(kGrid, kHalf, [](float, float) { return 0.0f; });
 }
 
 // Same topology, moved vertices.

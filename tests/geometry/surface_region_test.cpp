@@ -10,6 +10,7 @@
 #include "lacrima/geometry/error.hpp"
 #include "lacrima/geometry/shedding_tear.hpp"
 #include "lacrima/geometry/surface_region.hpp"
+#include "height_field_mesh.hpp"
 
 namespace lacrima {
 namespace {
@@ -19,20 +20,9 @@ constexpr float kHalf = 0.03f;  // the sheet spans [-3 cm, 3 cm]^2, 1 mm quads
 
 // A wavy sheet (a cheek-like bump with ripples), counter-clockwise seen from +z.
 TriangleMesh wavySheet() {
-  TriangleMesh m;
-  for (int y = 0; y <= kGrid; ++y)
-    for (int x = 0; x <= kGrid; ++x) {
-      const float px = -kHalf + 2 * kHalf * float(x) / kGrid, py = -kHalf + 2 * kHalf * float(y) / kGrid;
-      const float z = 0.01f * std::exp(-(px * px + py * py) / 0.0004f) + 0.0004f * std::sin(400.0f * px) * std::cos(300.0f * py);
-      m.positions.emplace_back(px, py, z);
-    }
-  auto v = [](int x, int y) { return uint32_t(y * (kGrid + 1) + x); };
-  for (int y = 0; y < kGrid; ++y)
-    for (int x = 0; x < kGrid; ++x) {
-      m.indices.insert(m.indices.end(), {v(x, y), v(x + 1, y), v(x + 1, y + 1)});
-      m.indices.insert(m.indices.end(), {v(x, y), v(x + 1, y + 1), v(x, y + 1)});
-    }
-  return m;
+  return test::heightFieldMesh(kGrid, kHalf, [](float px, float py) {
+    return 0.01f * std::exp(-(px * px + py * py) / 0.0004f) + 0.0004f * std::sin(400.0f * px) * std::cos(300.0f * py);
+  });
 }
 
 // A path over the bump, snapped to the sheet; few points so its chords sag below the surface.

@@ -16,17 +16,9 @@ using test::expectSingleError;
 using test::firstLineOf;
 using test::writeShot;
 
-const std::string kFace = LACRIMA_SOURCE_DIR "/scenes/assets/ict-face/ict_face.glb";
-
 // Frames 1-5 of the face; `asset` adds members to the asset, `extra` top-level members.
-std::string faceShot(const std::string& asset, const std::string& extra = "",
-                     const std::string& cameraExtra = "") {
-  return "{\n  \"version\": 1,\n  \"frames\": {\"start\": 1, \"end\": 5, \"fps\": 24},\n"
-         "  \"output\": \"out.####.exr\",\n  \"render\": {\"width\": 16, \"height\": 8, \"spp\": 1},\n"
-         "  \"camera\": {\"position\": [0, 0, 0.5], \"lookAt\": [0, 0, 0], \"fov\": 30" + cameraExtra + "},\n"
-         "  \"materials\": {\"skin\": {\"type\": \"skin\"}, \"water\": {\"type\": \"water\"}},\n"
-         "  \"assets\": [{\"name\": \"face\", \"file\": \"" + kFace + "\", \"materials\": {\"M_Face\": \"skin\"}" +
-         (asset.empty() ? "" : ", " + asset) + "}]" + (extra.empty() ? "" : ",\n  " + extra) + "\n}\n";
+std::string faceShot(const std::string& asset, const std::string& extra = "", const std::string& cameraExtra = "") {
+  return test::ictFaceShot(extra, cameraExtra, asset);
 }
 
 size_t facePrimitive(const GltfAsset& asset) {

@@ -16,21 +16,16 @@ using test::firstLineOf;
 using test::shotErrorOf;
 using test::writeShot;
 
-const std::string kFace = LACRIMA_SOURCE_DIR "/scenes/assets/ict-face/ict_face.glb";
 const Vec3 kCheek(-0.0345f, -0.0018f, 0.0995f);
 
 // Frames 1-5 of the face at 24 fps with one cheek detail active at frames 2-4.
 std::string subdivisionShot(const std::string& subdivision, const std::string& asset = "") {
-  return "{\n  \"version\": 1,\n  \"frames\": {\"start\": 1, \"end\": 5, \"fps\": 24},\n"
-         "  \"output\": \"out.####.exr\",\n  \"render\": {\"width\": 16, \"height\": 8, \"spp\": 1},\n"
-         "  \"camera\": {\"position\": [0, 0, 0.5], \"lookAt\": [0, 0, 0], \"fov\": 30},\n"
-         "  \"materials\": {\"skin\": {\"type\": \"skin\"}},\n"
-         "  \"assets\": [{\"name\": \"face\", \"file\": \"" + kFace + "\", \"materials\": {\"M_Face\": \"skin\"}" +
-         (asset.empty() ? "" : ", " + asset) + "}],\n" +
-         R"(  "details": [{"pattern": "cheek", "alpha": 1, "beta": 2, "asset": "face", "part": "M_Face",
+  return test::ictFaceShot(
+      R"("details": [{"pattern": "cheek", "alpha": 1, "beta": 2, "asset": "face", "part": "M_Face",
       "center": [-0.0345, -0.0018, 0.0995], "extent": [0.01, 0.008], "innerRadius": 0.4, "scale": 0.0005,
       "coordinateScale": 1000, "startFrame": 2, "endFrame": 4)" +
-         (subdivision.empty() ? "" : ",\n      \"subdivision\": " + subdivision) + "}]\n}\n";
+          (subdivision.empty() ? "" : ",\n      \"subdivision\": " + subdivision) + "}]",
+      "", asset);
 }
 
 size_t facePrimitive(const Shot& shot) {

@@ -15,19 +15,10 @@ namespace lacrima {
 namespace {
 
 using test::expectSingleError;
+using test::ictFaceShot;
 using test::writeShot;
 
-const std::string kFace = LACRIMA_SOURCE_DIR "/scenes/assets/ict-face/ict_face.glb";
 
-// Frames 1-5 of the face at 24 fps; `extra` adds top-level members.
-std::string faceShot(const std::string& extra, const std::string& cameraExtra = "", const std::string& asset = "") {
-  return "{\n  \"version\": 1,\n  \"frames\": {\"start\": 1, \"end\": 5, \"fps\": 24},\n"
-         "  \"output\": \"out.####.exr\",\n  \"render\": {\"width\": 16, \"height\": 8, \"spp\": 1},\n"
-         "  \"camera\": {\"position\": [0, 0, 0.5], \"lookAt\": [0, 0, 0], \"fov\": 30" + cameraExtra + "},\n"
-         "  \"materials\": {\"skin\": {\"type\": \"skin\"}, \"water\": {\"type\": \"water\"}},\n"
-         "  \"assets\": [{\"name\": \"face\", \"file\": \"" + kFace + "\", \"materials\": {\"M_Face\": \"skin\"}" +
-         (asset.empty() ? "" : ", " + asset) + "}],\n  " + extra + "\n}\n";
-}
 
 // Down the right cheek (the face's -x side), starting at frame 2: 2 mm long then, 2.1 mm more a frame.
 const std::string kPath =
@@ -107,7 +98,7 @@ TEST(SheddingTearShot, NoTearBeforeItsStartFrameThenItGrows) {
   // Without head and noise every row but the leading one stays as it was.
   std::string plainTear = tearWith(R"("headLength": 0.002)", R"("headLength": 0)");
   plainTear.replace(plainTear.find(R"("skinRoughness": 0.3)"), 20, R"("skinRoughness": 0.0)");
-  const Shot shot = loadShot(writeShot("shed.json", faceShot(plainTear)));
+  const Shot shot = loadShot(writeShot("shed.json", ictFaceShot(plainTear)));
   ASSERT_EQ(shot.sheddingTears.size(), 1u);
   EXPECT_TRUE(shot.tears.empty());
   const ShotSheddingTear& tear = shot.sheddingTears[0];
@@ -141,7 +132,7 @@ TEST(SheddingTearShot, NoTearBeforeItsStartFrameThenItGrows) {
 }
 
 TEST(SheddingTearShot, ClosedOutwardAndFiniteOnEveryFrame) {
-  const Shot shot = loadShot(writeShot("shed_closed.json", faceShot(kTear)));
+  const Shot shot = loadShot(writeShot("shed_closed.json", ictFaceShot(kTear)));
   for (int f = 2; f <= 5; ++f) {
     const Frame frame = buildFrame(shot, f);
     const MeshInstance* mesh = findMesh(frame, "shedding tear");
@@ -154,8 +145,8 @@ TEST(SheddingTearShot, ClosedOutwardAndFiniteOnEveryFrame) {
 
 TEST(SheddingTearShot, FollowsTheDeformingFace) {
   const std::string smile = R"("blendshapes": {"cheekRaiser_R": {"keys": [[1, 0], [5, 1]], "interpolation": "linear"}})";
-  const Shot shot = loadShot(writeShot("shed_smile.json", faceShot(kTear, "", smile)));
-  const Shot still = loadShot(writeShot("shed_still.json", faceShot(kTear)));
+  const Shot shot = loadShot(writeShot("shed_smile.json", ictFaceShot(kTear, "", smile)));
+  const Shot still = loadShot(writeShot("shed_still.json", ictFaceShot(kTear)));
   for (int f = 2; f <= 5; ++f) {
     const Frame frame = buildFrame(shot, f);
     const MeshInstance* tear = findMesh(frame, "shedding tear");
@@ -181,8 +172,8 @@ const std::string kDetail =
        "coordinateScale": 1000, "startFrame": 2, "endFrame": 5}])";
 
 TEST(SheddingTearShot, FollowsTheSkinDetail) {
-  const Shot shot = loadShot(writeShot("shed_detail.json", faceShot(kTear + kDetail)));
-  const Shot plain = loadShot(writeShot("shed_plain.json", faceShot(kTear)));
+  const Shot shot = loadShot(writeShot("shed_detail.json", ictFaceShot(kTear + kDetail)));
+  const Shot plain = loadShot(writeShot("shed_plain.json", ictFaceShot(kTear)));
   const Frame frame = buildFrame(shot, 4);
   const MeshInstance* tear = findMesh(frame, "shedding tear");
   const Frame plainFrame = buildFrame(plain, 4);
@@ -201,8 +192,8 @@ TEST(SheddingTearShot, FollowsTheSkinDetail) {
 TEST(SheddingTearShot, LiesOnTheSkinRefinedUnderADetail) {
   std::string refined = kDetail;
   refined.replace(refined.find(R"("endFrame": 5)"), 13, R"("endFrame": 5, "subdivision": {"levels": 1})");
-  const Shot shot = loadShot(writeShot("shed_refined.json", faceShot(kTear + refined)));
-  const Shot plain = loadShot(writeShot("shed_unrefined.json", faceShot(kTear + kDetail)));
+  const Shot shot = loadShot(writeShot("shed_refined.json", ictFaceShot(kTear + refined)));
+  const Shot plain = loadShot(writeShot("shed_unrefined.json", ictFaceShot(kTear + kDetail)));
   const size_t primitive = shot.sheddingTears[0].primitive;
   ASSERT_GT(shot.assets[0].gltf->primitives[primitive].mesh.triangleCount(),
             plain.assets[0].gltf->primitives[primitive].mesh.triangleCount())
@@ -220,7 +211,7 @@ TEST(SheddingTearShot, LiesOnTheSkinRefinedUnderADetail) {
 TEST(SheddingTearShot, MovesWithTheSkinDuringTheShutter) {
   const std::string smile = R"("blendshapes": {"cheekRaiser_R": {"keys": [[1, 0], [5, 1]], "interpolation": "linear"}})";
   const std::string shutter = R"(, "shutter": {"open": -0.25, "close": 0.25})";
-  const Shot shot = loadShot(writeShot("shed_blur.json", faceShot(kTear, shutter, smile)));
+  const Shot shot = loadShot(writeShot("shed_blur.json", ictFaceShot(kTear, shutter, smile)));
   const Frame frame = buildFrame(shot, 4);
   const MeshInstance* tear = findMesh(frame, "shedding tear");
   ASSERT_NE(tear, nullptr);
@@ -237,15 +228,15 @@ TEST(SheddingTearShot, MovesWithTheSkinDuringTheShutter) {
   EXPECT_LT(d.baseError, 1e-6f);
   EXPECT_GE(d.lowest, 0.0f);
   // A still face: the tear does not move within the shutter.
-  const Shot still = loadShot(writeShot("shed_blur_still.json", faceShot(kTear, shutter)));
+  const Shot still = loadShot(writeShot("shed_blur_still.json", ictFaceShot(kTear, shutter)));
   EXPECT_FALSE(findMesh(buildFrame(still, 4), "shedding tear")->moves());
 }
 
 TEST(SheddingTearShot, SameSeedSameTearOtherSeedOtherNoise) {
-  const Shot a = loadShot(writeShot("seed_a.json", faceShot(kTear)));
-  const Shot b = loadShot(writeShot("seed_b.json", faceShot(kTear)));
-  const Shot c = loadShot(writeShot("seed_c.json", faceShot(tearWith(R"("seed": 7)", R"("seed": 8)"))));
-  const Shot smooth = loadShot(writeShot("seed_d.json", faceShot(tearWith(R"("skinRoughness": 0.3)", R"("skinRoughness": 0)"))));
+  const Shot a = loadShot(writeShot("seed_a.json", ictFaceShot(kTear)));
+  const Shot b = loadShot(writeShot("seed_b.json", ictFaceShot(kTear)));
+  const Shot c = loadShot(writeShot("seed_c.json", ictFaceShot(tearWith(R"("seed": 7)", R"("seed": 8)"))));
+  const Shot smooth = loadShot(writeShot("seed_d.json", ictFaceShot(tearWith(R"("skinRoughness": 0.3)", R"("skinRoughness": 0)"))));
   const auto positions = [](const Shot& shot) { return findMesh(buildFrame(shot, 5), "shedding tear")->mesh.positions; };
   EXPECT_EQ(positions(a), positions(b));
   EXPECT_NE(positions(a), positions(c));
@@ -254,7 +245,7 @@ TEST(SheddingTearShot, SameSeedSameTearOtherSeedOtherNoise) {
 
 TEST(SheddingTearShot, BadTearsGetExactMessages) {
   const auto bad = [](const std::string& name, const std::string& from, const std::string& to, const std::string& error) {
-    expectSingleError(name, faceShot(tearWith(from, to)), error);
+    expectSingleError(name, ictFaceShot(tearWith(from, to)), error);
   };
   bad("type.json", R"("shedding")", R"("sheding")", "/tears/0/type: unknown tear type 'sheding'; did you mean 'shedding'?");
   bad("one_point.json", kPath, "[[-0.0345, 0.004, 0.0985]]",

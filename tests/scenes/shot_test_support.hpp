@@ -48,6 +48,22 @@ inline std::string shotErrorOf(const std::filesystem::path& path, std::vector<Di
   return "";
 }
 
+// The repository's ICT face asset.
+inline const std::string kIctFace = LACRIMA_SOURCE_DIR "/scenes/assets/ict-face/ict_face.glb";
+
+// A shot of the ICT face: frames 1..lastFrame at 24 fps, a 16x8 1-spp render, materials "skin"
+// and "water", M_Face bound to skin. `extra` adds top-level members, `cameraExtra` members of
+// the camera (after its fov), `asset` members of the face asset.
+inline std::string ictFaceShot(const std::string& extra, const std::string& cameraExtra = "",
+                               const std::string& asset = "", int lastFrame = 5) {
+  return "{\n  \"version\": 1,\n  \"frames\": {\"start\": 1, \"end\": " + std::to_string(lastFrame) +
+         ", \"fps\": 24},\n  \"output\": \"out.####.exr\",\n  \"render\": {\"width\": 16, \"height\": 8, \"spp\": 1},\n"
+         "  \"camera\": {\"position\": [0, 0, 0.5], \"lookAt\": [0, 0, 0], \"fov\": 30" + cameraExtra + "},\n"
+         "  \"materials\": {\"skin\": {\"type\": \"skin\"}, \"water\": {\"type\": \"water\"}},\n"
+         "  \"assets\": [{\"name\": \"face\", \"file\": \"" + kIctFace + "\", \"materials\": {\"M_Face\": \"skin\"}" +
+         (asset.empty() ? "" : ", " + asset) + "}]" + (extra.empty() ? "" : ",\n  " + extra) + "\n}\n";
+}
+
 inline std::string firstLineOf(const std::string& s) { return s.substr(0, s.find('\n')); }
 
 // A shot that must fail with exactly one problem; `pointerAndMessage` is its JSON pointer and

@@ -12,16 +12,10 @@ namespace {
 using test::expectSingleError;
 using test::writeShot;
 
-const std::string kFace = LACRIMA_SOURCE_DIR "/scenes/assets/ict-face/ict_face.glb";
 
-// Frames 1-3 of the face; `extra` adds top-level members, `asset` members of the face asset.
+// Frames 1-3 of the face.
 std::string faceShot(const std::string& extra, const std::string& asset = "") {
-  return "{\n  \"version\": 1,\n  \"frames\": {\"start\": 1, \"end\": 3, \"fps\": 24},\n"
-         "  \"output\": \"out.####.exr\",\n  \"render\": {\"width\": 16, \"height\": 8, \"spp\": 1},\n"
-         "  \"camera\": {\"position\": [0, 0, 0.5], \"lookAt\": [0, 0, 0], \"fov\": 30},\n"
-         "  \"materials\": {\"skin\": {\"type\": \"skin\"}, \"water\": {\"type\": \"water\"}},\n"
-         "  \"assets\": [{\"name\": \"face\", \"file\": \"" + kFace + "\", \"materials\": {\"M_Face\": \"skin\"}" +
-         (asset.empty() ? "" : ", " + asset) + "}],\n  " + extra + "\n}\n";
+  return test::ictFaceShot(extra, "", asset, 3);
 }
 
 std::string detailAt(const std::string& center, const std::string& part = "M_Face") {

@@ -12,20 +12,11 @@ namespace {
 using test::shotErrorOf;
 using test::expectSingleError;
 using test::firstLineOf;
+using test::ictFaceShot;
 using test::writeShot;
 
-const std::string kFace = LACRIMA_SOURCE_DIR "/scenes/assets/ict-face/ict_face.glb";
 const Vec3 kCheek(-0.0345f, -0.0018f, 0.0995f);
 
-// Frames 1-5 of the face at 24 fps; `extra` adds top-level members.
-std::string faceShot(const std::string& extra, const std::string& cameraExtra = "", const std::string& asset = "") {
-  return "{\n  \"version\": 1,\n  \"frames\": {\"start\": 1, \"end\": 5, \"fps\": 24},\n"
-         "  \"output\": \"out.####.exr\",\n  \"render\": {\"width\": 16, \"height\": 8, \"spp\": 1},\n"
-         "  \"camera\": {\"position\": [0, 0, 0.5], \"lookAt\": [0, 0, 0], \"fov\": 30" + cameraExtra + "},\n"
-         "  \"materials\": {\"skin\": {\"type\": \"skin\"}, \"water\": {\"type\": \"water\"}},\n"
-         "  \"assets\": [{\"name\": \"face\", \"file\": \"" + kFace + "\", \"materials\": {\"M_Face\": \"skin\"}" +
-         (asset.empty() ? "" : ", " + asset) + "}],\n  " + extra + "\n}\n";
-}
 
 const std::string kTear =
     R"("tears": [{"type": "dripping", "asset": "face", "part": "M_Face", "start": [-0.0345, -0.0018, 0.0995],
@@ -47,7 +38,7 @@ const MeshInstance& faceMesh(const Frame& frame, const Shot& shot) {
 }
 
 TEST(TearShot, DrippingTearAppearsFromItsStartFrameAtTheSkin) {
-  const Shot shot = loadShot(writeShot("tear.json", faceShot(kTear)));
+  const Shot shot = loadShot(writeShot("tear.json", ictFaceShot(kTear)));
   ASSERT_EQ(shot.tears.size(), 1u);
   const ShotTear& tear = shot.tears[0];
   EXPECT_LT((tear.origin - kCheek).norm(), 2e-3f) << "snapped to the skin near the written start";
@@ -70,7 +61,7 @@ TEST(TearShot, DrippingTearAppearsFromItsStartFrameAtTheSkin) {
 TEST(TearShot, DrippingTearFollowsTheSkinUntilItStartsAndBlursWithAShutter) {
   const Shot shot = loadShot(writeShot(
       "tear_blur.json",
-      faceShot(kTear, R"(, "shutter": {"open": -0.25, "close": 0.25})",
+      ictFaceShot(kTear, R"(, "shutter": {"open": -0.25, "close": 0.25})",
                R"("blendshapes": {"cheekRaiser_R": {"keys": [[1, 0], [5, 1]], "interpolation": "linear"}})")));
   const ShotTear& tear = shot.tears[0];
   EXPECT_GT((tear.origin - tear.surfacePoint.reference).norm(), 1e-4f) << "the raised cheek carries the start point";
@@ -96,12 +87,12 @@ std::string detail(const std::string& amplitude) {
 }
 
 TEST(DetailShot, DetailDisplacesOnlyInsideItsRegionAndFrameRange) {
-  const Shot shot = loadShot(writeShot("detail.json", faceShot(detail("1"))));
+  const Shot shot = loadShot(writeShot("detail.json", ictFaceShot(detail("1"))));
   ASSERT_EQ(shot.details.size(), 1u);
   const Frame neutral = buildFrame(shot, 1);
   const MeshInstance& rest = faceMesh(neutral, shot);
   // Outside [startFrame, endFrame] the face is bitwise the face without details.
-  const Shot plain = loadShot(writeShot("plain.json", faceShot(R"("shapes": [])")));
+  const Shot plain = loadShot(writeShot("plain.json", ictFaceShot(R"("shapes": [])")));
   EXPECT_EQ(rest.mesh.positions, faceMesh(buildFrame(plain, 1), plain).mesh.positions);
   EXPECT_EQ(rest.mesh.normals, faceMesh(buildFrame(plain, 1), plain).mesh.normals);
   EXPECT_EQ(faceMesh(buildFrame(shot, 5), shot).mesh.positions, rest.mesh.positions);
@@ -129,7 +120,7 @@ TEST(DetailShot, DetailDisplacesOnlyInsideItsRegionAndFrameRange) {
 }
 
 TEST(DetailShot, MovedVerticesLieInsideTheEllipseOfTheSkinFrame) {
-  const Shot shot = loadShot(writeShot("detail_frame.json", faceShot(detail("1"))));
+  const Shot shot = loadShot(writeShot("detail_frame.json", ictFaceShot(detail("1"))));
   const MeshInstance rest = faceMesh(buildFrame(shot, 1), shot);
   const Frame frame = buildFrame(shot, 3);
   const MeshInstance& face = faceMesh(frame, shot);
@@ -177,8 +168,8 @@ TEST(DetailShot, MovedVerticesLieInsideTheEllipseOfTheSkinFrame) {
 
 TEST(DetailShot, KeyedAmplitudeScalesTheDisplacementAndZeroLeavesTheFace) {
   const Shot shot = loadShot(writeShot(
-      "detail_keys.json", faceShot(detail(R"({"keys": [[2, 0], [4, 2]], "interpolation": "linear"})"))));
-  const Shot constant = loadShot(writeShot("detail_one.json", faceShot(detail("1"))));
+      "detail_keys.json", ictFaceShot(detail(R"({"keys": [[2, 0], [4, 2]], "interpolation": "linear"})"))));
+  const Shot constant = loadShot(writeShot("detail_one.json", ictFaceShot(detail("1"))));
   const MeshInstance rest = faceMesh(buildFrame(shot, 1), shot);
   EXPECT_EQ(faceMesh(buildFrame(shot, 2), shot).mesh.positions, rest.mesh.positions) << "amplitude 0";
   // Frame 3: amplitude 1, as the constant one.
@@ -189,7 +180,7 @@ TEST(DetailShot, KeyedAmplitudeScalesTheDisplacementAndZeroLeavesTheFace) {
 }
 
 TEST(DetailShot, SumOfPatternsAndAShutterBlurTheStillFace) {
-  const Shot shot = loadShot(writeShot("detail_sum.json", faceShot(
+  const Shot shot = loadShot(writeShot("detail_sum.json", ictFaceShot(
       R"("details": [{"patterns": [{"pattern": "cheek", "alpha": 1, "beta": 2}, {"pattern": "frown", "alpha": 0.5}],
          "asset": "face", "part": "M_Face", "center": [-0.0345, -0.0018, 0.0995], "extent": [0.01, 0.01],
          "scale": 0.0005, "coordinateScale": 1000, "startFrame": 1, "endFrame": 5, "tangent": [1, 0.2, 0]}])",
@@ -204,17 +195,17 @@ TEST(DetailShot, SumOfPatternsAndAShutterBlurTheStillFace) {
 std::string tearWith(const std::string& from, const std::string& to) {
   std::string s = kTear;
   s.replace(s.find(from), from.size(), to);
-  return faceShot(s);
+  return ictFaceShot(s);
 }
 
 std::string detailWith(const std::string& from, const std::string& to) {
   std::string s = detail("1");
   s.replace(s.find(from), from.size(), to);
-  return faceShot(s);
+  return ictFaceShot(s);
 }
 
 TEST(DetailShot, PatternOriginMovesThePatternWithinTheSameRegion) {
-  const Shot centred = loadShot(writeShot("detail_centred.json", faceShot(detail("1"))));
+  const Shot centred = loadShot(writeShot("detail_centred.json", ictFaceShot(detail("1"))));
   const Shot shifted = loadShot(writeShot("detail_shifted.json", detailWith(R"("amplitude": 1)",
                                                                        R"("amplitude": 1, "patternOrigin": [0.002, -0.003])")));
   EXPECT_EQ(shifted.details[0].patternOrigin, Vec2(0.002f, -0.003f));
