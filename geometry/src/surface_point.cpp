@@ -84,15 +84,20 @@ Vec3 triangleNormal(const TriangleMesh& mesh, uint32_t triangle) {
   return n / len;
 }
 
+float closestPointOnTriangle(const TriangleMesh& mesh, uint32_t triangle, const Vec3& p, Vec3& barycentric) {
+  Vec3 a, b, c;
+  triangleCorners(mesh, triangle, a, b, c);
+  barycentric = closestBarycentric(p, a, b, c);
+  return (barycentric.x() * a + barycentric.y() * b + barycentric.z() * c - p).squaredNorm();
+}
+
 SurfacePoint closestSurfacePoint(const TriangleMesh& mesh, const Vec3& p) {
   if (mesh.triangleCount() == 0) throw InputError(fmt::format("{}: the mesh has no triangles", kSurfacePoint));
   SurfacePoint best;
   float bestDistance = std::numeric_limits<float>::infinity();
   for (uint32_t t = 0; t < uint32_t(mesh.triangleCount()); ++t) {
-    Vec3 a, b, c;
-    triangleCorners(mesh, t, a, b, c);
-    const Vec3 w = closestBarycentric(p, a, b, c);
-    const float d = (w.x() * a + w.y() * b + w.z() * c - p).squaredNorm();
+    Vec3 w;
+    const float d = closestPointOnTriangle(mesh, t, p, w);
     if (d < bestDistance) {
       bestDistance = d;
       best = SurfacePoint{t, w};

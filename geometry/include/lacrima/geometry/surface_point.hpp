@@ -25,6 +25,10 @@ Vec3 surfacePosition(const TriangleMesh& mesh, const SurfacePoint& point);
 // degenerate (zero-area) triangle or one out of range.
 Vec3 triangleNormal(const TriangleMesh& mesh, uint32_t triangle);
 
+// The nearest point of triangle `triangle` to p (Ericson, "Real-Time Collision Detection",
+// 5.1.5): its barycentric weights, and the squared distance as the return value.
+float closestPointOnTriangle(const TriangleMesh& mesh, uint32_t triangle, const Vec3& p, Vec3& barycentric);
+
 // The nearest point of the mesh to p (brute force over all triangles; ties keep the lowest
 // triangle index; the closest point of a triangle after Ericson, "Real-Time Collision
 // Detection", 5.1.5). Throws InputError for an empty mesh.
