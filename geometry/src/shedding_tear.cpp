@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 
+#include "lacrima/geometry/closest_point_grid.hpp"
 #include "lacrima/geometry/error.hpp"
 #include "lacrima/geometry/moving_least_squares.hpp"
 #include "lacrima/geometry/surface_point.hpp"
@@ -84,6 +85,8 @@ SheddingTearStrip buildSheddingTearStrip(const TriangleMesh& restSkin, const std
   strip.rows = int(rowArc.size());
   strip.length = h;
 
+  // Every grid point is projected to the skin: many queries on one mesh.
+  const ClosestPointGrid skinLocator(restSkin);
   const int columns = strip.columns;
   const float headLength = std::min(params.headLength, h);
   size_t segment = 0;
@@ -93,7 +96,7 @@ SheddingTearStrip buildSheddingTearStrip(const TriangleMesh& restSkin, const std
     const float segmentLength = arc[segment + 1] - arc[segment];
     const float f = segmentLength > 0.0f ? std::clamp((a - arc[segment]) / segmentLength, 0.0f, 1.0f) : 0.0f;
     const Vec3 onPath = control[segment] + f * (control[segment + 1] - control[segment]);
-    const SurfacePoint centre = closestSurfacePoint(restSkin, onPath);
+    const SurfacePoint centre = skinLocator.closest(onPath);
     const Vec3 centrePos = surfacePosition(restSkin, centre);
     const Vec3 n = triangleNormal(restSkin, centre.triangle);
     const Vec3 d = control[segment + 1] - control[segment];
@@ -123,7 +126,7 @@ SheddingTearStrip buildSheddingTearStrip(const TriangleMesh& restSkin, const std
       const float v = s * w;
       const SurfacePoint sp = (j == (columns - 1) / 2 && columns % 2 == 1)
                                   ? centre
-                                  : closestSurfacePoint(restSkin, centrePos + across * v);
+                                  : skinLocator.closest(centrePos + across * v);
       strip.points.push_back(sp);
       strip.coordinates.emplace_back(a, v);
       const float q = (j == 0 || j == columns - 1) ? 0.0f : std::max(0.0f, 1.0f - 4.0f * s * s);

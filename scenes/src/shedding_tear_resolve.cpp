@@ -7,6 +7,7 @@
 
 #include "asset_pose.hpp"
 #include "json_source.hpp"  // childPointer
+#include "lacrima/geometry/closest_point_grid.hpp"
 #include "lacrima/geometry/error.hpp"
 
 namespace lacrima::shotfile {
@@ -21,10 +22,12 @@ struct SnappedPoint {
 };
 
 // The nearest surface point of the part's posed primitives (ties keep the earlier primitive).
-SnappedPoint snapToPart(const std::vector<std::pair<size_t, TriangleMesh>>& partMeshes, const Vec3& target) {
+SnappedPoint snapToPart(const std::vector<std::pair<size_t, TriangleMesh>>& partMeshes,
+                        const std::vector<ClosestPointGrid>& locators, const Vec3& target) {
   SnappedPoint best;
-  for (const auto& [index, mesh] : partMeshes) {
-    const SurfacePoint nearest = closestSurfacePoint(mesh, target);
+  for (size_t m = 0; m < partMeshes.size(); ++m) {
+    const auto& [index, mesh] = partMeshes[m];
+    const SurfacePoint nearest = locators[m].closest(target);
     const Vec3 position = surfacePosition(mesh, nearest);
     const float distance = (position - target).norm();
     if (distance < best.distance) best = {index, nearest, position, distance};
@@ -54,8 +57,10 @@ std::vector<SnappedPoint> snapPath(const GltfAsset& gltf, const ShotSheddingTear
                                    std::vector<SheddingTearProblem>& problems) {
   const size_t before = problems.size();
   std::vector<SnappedPoint> snapped;
+  std::vector<ClosestPointGrid> locators;
+  for (const auto& part : partMeshes) locators.emplace_back(part.second);
   for (size_t k = 0; k < tear.path.size(); ++k) {
-    const SnappedPoint s = snapToPart(partMeshes, tear.path[k]);
+    const SnappedPoint s = snapToPart(partMeshes, locators, tear.path[k]);
     const std::string at = childPointer(childPointer(tear.pointer, "path"), k);
     if (s.distance > kMaxPathPointDistance)
       problems.push_back({at, fmt::format("path point {} is {:.3g} m from the skin of part '{}' (its nearest skin "
