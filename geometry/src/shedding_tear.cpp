@@ -46,6 +46,7 @@ void validate(const SheddingTearParams& p) {
   if (!(p.headLength >= 0.0f) || !std::isfinite(p.headLength)) bad("headLength", p.headLength, "finite and >= 0");
   if (!(p.headBulge >= 0.0f) || !std::isfinite(p.headBulge)) bad("headBulge", p.headBulge, "finite and >= 0");
   if (!(p.tipFraction > 0.0f && p.tipFraction <= 1.0f)) bad("tipFraction", p.tipFraction, "in (0, 1]");
+  if (!(p.tailLength >= 0.0f) || !std::isfinite(p.tailLength)) bad("tailLength", p.tailLength, "finite and >= 0");
   if (!(p.noiseDensity >= 0.0f && p.noiseDensity <= 1.0f)) bad("noiseDensity", p.noiseDensity, "in [0, 1]");
   if (!(p.noiseAmplitude >= 0.0f) || !std::isfinite(p.noiseAmplitude))
     bad("noiseAmplitude", p.noiseAmplitude, "finite and >= 0");
@@ -119,6 +120,16 @@ SheddingTearStrip buildSheddingTearStrip(const TriangleMesh& restSkin, const std
         g *= close;
         widthFactor = close;
       }
+    }
+    // The tail: over the first tailLength of the path the strip narrows and thins towards the
+    // source like the head's front (quarter ellipse, floored at tipFraction), so the tear emerges
+    // from the skin instead of starting with a blunt cap.
+    const float tailLength = std::min(params.tailLength, h - headLength);
+    if (tailLength > 0.0f && a < tailLength) {
+      const float e = 1.0f - a / tailLength;
+      const float open = std::max(params.tipFraction, std::sqrt(std::max(0.0f, 1.0f - e * e)));
+      g *= open;
+      widthFactor *= open;
     }
     const float w = params.width * widthFactor;
     for (int j = 0; j < columns; ++j) {

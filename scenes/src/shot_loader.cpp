@@ -966,7 +966,7 @@ class ShotReader {
   void readSheddingTear(const Json& v, const std::string& pointer) {
     ObjectReader o(c_, v, pointer,
                    {"type", "asset", "part", "path", "startFrame", "material", "width", "thickness", "start", "speed",
-                    "headLength", "headBulge", "tipFraction", "skinRoughness", "noiseAmplitude", "smoothingEpsilon",
+                    "headLength", "headBulge", "tipFraction", "tailLength", "skinRoughness", "noiseAmplitude", "smoothingEpsilon",
                     "smoothingDegree", "sampleSpacing", "acrossSamples", "baseOffset", "seed"});
     if (!o.ok()) return;
     const size_t before = c_.errorCount();
@@ -987,6 +987,7 @@ class ShotReader {
     number("headLength", Range::atLeast(0), p.headLength);
     number("headBulge", Range::atLeast(0), p.headBulge);
     number("tipFraction", Range::openClosed(0, 1), p.tipFraction);
+    number("tailLength", Range::atLeast(0), p.tailLength);
     number("skinRoughness", Range::closed(0, 1), p.noiseDensity);
     number("noiseAmplitude", Range::atLeast(0), p.noiseAmplitude);
     number("smoothingEpsilon", Range::above(0), p.smoothingEpsilon);

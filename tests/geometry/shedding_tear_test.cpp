@@ -157,6 +157,34 @@ TEST(SheddingTear, RoundedHeadAtTheLeadingEnd) {
               params.thickness * (1 + params.headBulge) * params.tipFraction, 1e-7f);
 }
 
+TEST(SheddingTear, TailTapersFromTheSourceAndLeavesTheRestAsItWas) {
+  const TriangleMesh rest = flatSkin();
+  SheddingTearParams params;
+  const SheddingTearStrip blunt = buildSheddingTearStrip(rest, tearPath(rest), params, 1.0f);
+  params.tailLength = 0.004f;
+  const SheddingTearStrip tapered = buildSheddingTearStrip(rest, tearPath(rest), params, 1.0f);
+  ASSERT_EQ(tapered.rows, blunt.rows);
+  const int c = tapered.columns, mid = c / 2;
+  auto width = [&](const SheddingTearStrip& s, int i) {
+    return (surfacePosition(rest, s.points[size_t(i * c)]) - surfacePosition(rest, s.points[size_t(i * c + c - 1)])).norm();
+  };
+  EXPECT_NEAR(width(tapered, 0), params.tipFraction * params.width, 1e-5f) << "a small lens at the source";
+  EXPECT_NEAR(tapered.thickness[size_t(mid)], params.tipFraction * params.thickness, 1e-7f);
+  float previous = 0.0f;
+  for (int i = 0; i < tapered.rows; ++i) {
+    const float a = tapered.coordinates[size_t(i * c)].x();
+    if (a > params.tailLength) {  // beyond the tail: bitwise the blunt strip
+      EXPECT_EQ(tapered.thickness[size_t(i * c + mid)], blunt.thickness[size_t(i * c + mid)]) << i;
+      continue;
+    }
+    EXPECT_GE(tapered.thickness[size_t(i * c + mid)], previous) << "widens and thickens away from the source";
+    previous = tapered.thickness[size_t(i * c + mid)];
+  }
+  EXPECT_EQ(findClosedMeshDefect(sheddingTearMesh(rest, tapered, params.baseOffset)), "");
+  params.tailLength = -1.0f;
+  EXPECT_THROW(buildSheddingTearStrip(rest, tearPath(rest), params, 1.0f), InputError);
+}
+
 TEST(SheddingTear, GrowsMonotonically) {
   const TriangleMesh rest = flatSkin();
   const std::vector<SurfacePoint> path = tearPath(rest);

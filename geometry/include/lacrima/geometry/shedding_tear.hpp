@@ -28,7 +28,9 @@
 //   factor g rises smoothly from 1 to 1 + headBulge over x in [0, 1/2] (smoothstep), then both g and
 //   the width factor W(a)/width close like a quarter ellipse, sqrt(1 - (2x - 1)^2), floored at
 //   tipFraction so the leading cap stays a small non-degenerate lens: a bulging, rounded head.
-//   Elsewhere g = 1 and W = width.
+//   Elsewhere g = 1 and W = width. Optionally (tailLength > 0) the start of the strip tapers the
+//   same way over its first tailLength (a quarter ellipse from tipFraction up to 1), so the tear
+//   emerges from the skin at its source rather than starting with a blunt cap.
 // * Seed 004 section 4.2 step 4 (noise): each interior grid point is raised with probability noiseDensity by a random
 //   bump in [noiseAmplitude / 2, noiseAmplitude] (a hash of seed and grid index, so the same seed
 //   gives bitwise the same tear, and a grid point keeps its bump while the tear grows). The bump
@@ -71,6 +73,7 @@ struct SheddingTearParams {
   float headLength = 0.003f;    // metres of the grown path shaped as the head (0: no head)
   float headBulge = 0.5f;       // extra thickness factor of the head (>= 0)
   float tipFraction = 0.2f;     // width and thickness factor kept at the leading cap, in (0, 1]
+  float tailLength = 0.0f;      // metres at the start of the path over which the tear tapers (0: blunt start)
   float noiseDensity = 0.0f;    // probability that an interior grid point gets a bump, [0, 1]
   float noiseAmplitude = 0.0003f;  // metres, largest bump before smoothing (>= 0)
   float smoothingEpsilon = 0.0005f;  // MLS epsilon in metres (> 0)
