@@ -1,0 +1,253 @@
+#pragma once
+// The liquid state of tears running along one flow path on the skin (issue 5, "Tears that obey
+// physics"): the lacrimal meniscus filling and overflowing, beads that stick and slide, the wet
+// trail they leave and its drying, hanging drops that detach and fall. Deterministic: the state
+// at time t is simulated forward from t = 0 with a fixed time step, so it is a pure function of
+// t and the input (any frame can be computed alone and gives bitwise the same answer).
+//
+// Laws (SI units throughout; sources and modelling choices):
+// * Welling: the source adds `rate` m^3/s during [start, end) to the meniscus. When the meniscus
+//   holds overflowVolume it spills spillVolume as a new bead at s = 0 (modelling choice: the lid
+//   margin releases a fixed portion, then refills).
+// * Stick / slide: a bead at rest starts sliding when SlidingModel says so (Furmidge 1962,
+//   ElSherbini & Jacobi 2006; see sessile_drop.hpp), tilt from the path's normal and gravity. On a
+//   wet trail the retention force is scaled by 1 - wetness (1 - wetRetentionFactor), wetness =
+//   min(1, film thickness / filmThickness) (modelling choice: a prewetted surface pins less).
+// * Sliding speed: driving force minus retention balances the viscous dissipation in the contact
+//   line wedges, F = 3 mu v ln(L/a) w / theta (de Gennes 1985, Rev. Mod. Phys. 57:827, wedge
+//   dissipation, sec. IV; used for sliding drops by Kim, Lee & Kang 2002, J. Colloid Interface
+//   Sci. 247:372), so v_terminal = theta_mean (F_drive - F_retention) / (3 mu ln(L/a) w), i.e.
+//   Ca = mu v / gamma proportional to Bo sin(alpha) - Bo_c as in Podgorski, Flesselles & Limat
+//   2001 (PRL 87:036102). The speed relaxes to it with time constant speedRelaxationTime, and a
+//   sliding bead moves at least at minSlideSpeed (modelling choice: it stops at the critical
+//   volume in finite time instead of creeping towards it forever).
+// * Trail: a sliding bead leaves a film of thickness filmThickness across its base width w
+//   (slidingBaseWidth) on the dry skin: dV/ds = -h_f w(V), solved exactly per step with
+//   w = c_w V^(1/3): V^(2/3) decreases by (2/3) h_f c_w ds (modelling choice for h_f, default
+//   20 um). On film already present it only tops the film up to h_f w. It re-pins when
+//   dropSlides turns false (it has thinned below the critical volume).
+// * Drying: film thickness decays as exp(-t / filmDryingTime) (modelling choice); the lost volume
+//   is counted as dried.
+// * Coalescence: a bead reaching the bead ahead merges with it (volumes add, momentum kept).
+// * Drip: at the path's end or where the surface faces down (n . g_hat > overhangCosine) the bead
+//   stops and hangs; it detaches when its volume exceeds Tate's limit 2 pi r gamma / (rho g)
+//   (hangingDropMaxVolume; Tate 1864), r = its spherical cap's base radius at the mean contact
+//   angle, or hangingContactRadius when that is positive. The whole bead detaches (modelling
+//   choice: no residual drop) and falls ballistically without drag: x(t) = x0 + g (t - t0)^2 / 2.
+// * A bead whose volume falls below minBeadVolume has run out: its rest joins the film (Dried).
+//
+// Limits: one path, fixed in time (the caller recomputes the path; the state does not follow a
+// moving path); the path is assumed to follow the steepest descent, so the whole along-surface
+// gravity g sin(alpha) drives the bead along it; beads do not evaporate (minutes for uL drops);
+// bead shape is reported for tilt min(alpha, 90 degrees); no drag, no oscillation of falling
+// drops; the film is uniform across the width of the widest bead that wetted each cell.
+#include <cstdint>
+#include <numbers>
+#include <vector>
+
+#include "lacrima/geometry/math.hpp"
+#include "lacrima/geometry/mesh.hpp"
+#include "lacrima/geometry/sessile_drop.hpp"
+#include "lacrima/geometry/surface_flow.hpp"
+
+namespace lacrima {
+
+// One sample of the path. The normal (unit, pointing out of the skin) applies to the straight
+// piece from this sample to the next (flow paths are flat within each piece).
+struct LiquidPathSample {
+  double arcLength = 0.0;
+  Vec3d position = Vec3d::Zero();
+  Vec3d normal = Vec3d::UnitZ();
+};
+
+// The samples of a traced flow path on `mesh` (the mesh it was traced on), each with the
+// geometric normal of the triangle of the piece that starts there. Throws InputError for an empty path.
+std::vector<LiquidPathSample> liquidPathFromFlowPath(const FlowPath& path, const TriangleMesh& mesh);
+
+// The lacrimal meniscus filling at the start of the path.
+struct WellingSource {
+  double rate = 2.0 * kMicrolitre;             // m^3/s while welling (crying: several uL/s)
+  double start = 0.0;                          // s
+  double end = 1e30;                           // s
+  double initialVolume = 0.0;                  // m^3 in the meniscus at t = 0
+  double overflowVolume = 8.0 * kMicrolitre;   // the meniscus overflows when it holds this much
+  double spillVolume = 6.0 * kMicrolitre;      // what leaves as a bead at each overflow (<= overflowVolume)
+};
+
+// A bead already on the path at t = 0 (counted as source volume).
+struct InitialBead {
+  double arcLength = 0.0;
+  double volume = 0.0;
+};
+
+struct TearLiquidParams {
+  TearFluid fluid;
+  ContactAngleHysteresis contactAngles{95.0 * std::numbers::pi / 180.0, 65.0 * std::numbers::pi / 180.0};
+  double retentionFactor = kElSherbiniJacobiRetentionFactor;
+  double viscosity = 1.5e-3;           // Pa s: tears 1-3 mPa s at high shear (assumption)
+  double contactLineLogRatio = 13.8;   // ln(L/a), macroscopic over molecular cut-off (de Gennes 1985: 10-20)
+  double speedRelaxationTime = 0.005;  // s
+  double minSlideSpeed = 1e-3;         // m/s
+  double wetRetentionFactor = 0.5;     // retention multiplier on a fully wet trail, (0, 1]
+  double filmThickness = 20e-6;        // m, h_f
+  double filmDryingTime = 30.0;        // s
+  double trailCellLength = 5e-4;       // m of arc length per film cell
+  double overhangCosine = 0.5;         // n . g_hat above which the surface is an overhang (drip site)
+  double hangingContactRadius = 0.0;   // m; 0: the cap's base radius
+  double minBeadVolume = 0.01 * kMicrolitre;
+  double timeStep = 1e-3;              // s
+  WellingSource source;
+  std::vector<InitialBead> initialBeads;
+};
+
+struct TearLiquidInput {
+  std::vector<LiquidPathSample> path;          // at least 2 samples, arc length strictly increasing from 0
+  Vec3d gravityDirection = -Vec3d::UnitY();    // any non-zero length; magnitude from params.fluid
+  TearLiquidParams params;
+};
+
+enum class BeadPhase {
+  Welling,   // pinned at the lid margin (s = 0), where later overflows merge into it
+  Pinned,    // held by contact-angle hysteresis
+  Sliding,
+  Hanging,   // at a drip site (overhang or path end), growing until Tate's limit
+  Detached,  // fell as a FallingDrop (volume 0)
+  Merged,    // coalesced into the bead ahead, mergedInto (volume 0)
+  Dried,     // ran out below minBeadVolume; its rest joined the film (volume 0)
+};
+const char* beadPhaseName(BeadPhase phase);
+
+// A bead; beads keep their index (id) for life. Detached, Merged and Dried beads have volume 0
+// (their liquid is a drop, another bead, or film).
+struct Bead {
+  double arcLength = 0.0;
+  double speed = 0.0;   // m/s along the path
+  double volume = 0.0;  // m^3
+  BeadPhase phase = BeadPhase::Pinned;
+  double birthTime = 0.0;  // end of the step in which it overflowed (0 for initial beads)
+  int mergedInto = -1;  // bead id, for Merged
+};
+
+struct FallingDrop {
+  int beadId = 0;
+  double detachTime = 0.0;
+  Vec3d detachCentre = Vec3d::Zero();
+  Vec3d detachVelocity = Vec3d::Zero();  // a hanging bead is at rest: zero
+  double volume = 0.0;
+};
+
+// Bead as the renderer needs it.
+struct BeadView {
+  int id = 0;
+  BeadPhase phase = BeadPhase::Pinned;
+  double arcLength = 0.0;
+  double speed = 0.0;
+  double volume = 0.0;
+  Vec3d position = Vec3d::Zero();  // on the path
+  Vec3d normal = Vec3d::UnitZ();
+  double tilt = 0.0;               // radians from the horizontal, [0, pi]
+  BeadShape shape;                 // beadShape at the mean contact angle and min(tilt, 90 degrees)
+};
+
+struct DropView {
+  int beadId = 0;
+  Vec3d centre = Vec3d::Zero();
+  Vec3d velocity = Vec3d::Zero();
+  double volume = 0.0;
+  double radius = 0.0;  // equivalent sphere
+};
+
+struct TearLiquidState {
+  double time = 0.0;
+  double meniscusVolume = 0.0;
+  std::vector<BeadView> beads;             // live beads only (volume > 0)
+  std::vector<DropView> drops;
+  std::vector<double> sampleFilmThickness;  // per path sample, m
+};
+
+// Where the liquid is; every term in m^3.
+struct VolumeBudget {
+  double source = 0.0;  // welled so far plus initial meniscus and beads
+  double meniscus = 0.0;
+  double beads = 0.0;
+  double film = 0.0;
+  double detached = 0.0;
+  double dried = 0.0;
+  double accounted() const { return meniscus + beads + film + detached + dried; }
+  // |accounted - source| / source (0 for no source).
+  double relativeImbalance() const;
+};
+
+// The forward simulation. Throws InputError for an invalid input (message names the field).
+class TearLiquidSimulation {
+ public:
+  explicit TearLiquidSimulation(TearLiquidInput input);
+
+  // Steps forward to the last step time <= t (t may not go backwards: InputError).
+  void advanceTo(double t);
+  void step();
+
+  double time() const { return double(steps_) * input_.params.timeStep; }
+  long long steps() const { return steps_; }
+  double meniscusVolume() const { return meniscus_; }
+  const std::vector<Bead>& beads() const { return beads_; }
+  const std::vector<FallingDrop>& drops() const { return drops_; }
+  const std::vector<double>& cellFilmVolume() const { return cellVolume_; }
+  VolumeBudget budget() const;
+
+  // Film thickness (m) at arc length s; 0 off the path.
+  double filmThicknessAt(double arcLength) const;
+  // The state for rendering at time t, which must lie in the current step: advanceTo(t) first
+  // (InputError otherwise). Beads are as of the last step; drops are placed at exactly t.
+  TearLiquidState state(double t) const;
+
+  // Terminal sliding speed (m/s, >= 0, before the minSlideSpeed floor) of a bead of this volume
+  // at this tilt with this wetness in [0, 1].
+  double terminalSpeed(double volume, double tilt, double wetness) const;
+  bool slides(double volume, double tilt, double wetness) const;
+  // Surface tilt from the horizontal (radians, [0, pi]) and overhang test at arc length s.
+  double tiltAt(double arcLength) const;
+
+ private:
+  void well();
+  void moveBead(Bead& bead, int id);
+  void depositTrail(Bead& bead, int id, double distance);
+  void runOut(Bead& bead, int id);
+  void coalesce();
+  void detachIfHeavy(Bead& bead, int id);
+  void dryFilm();
+  double hangingLimit(double volume) const;
+  double baseRadius(double volume) const;
+  double retentionScale(double wetness) const;
+  double wetnessAhead(const Bead& bead, int id) const;
+  bool isDripSite(double arcLength) const;
+  double nextDripSite(double from, double to) const;
+  size_t pieceAt(double arcLength) const;
+  Vec3d positionAt(double arcLength) const;
+  size_t cellAt(double arcLength) const;
+  double cellLength(size_t cell) const;
+  double cellThickness(size_t cell) const;
+
+  TearLiquidInput input_;
+  SlidingModel sliding_;
+  Vec3d gHat_;
+  double widthPerCubeRoot_ = 0.0;  // c_w in w = c_w V^(1/3)
+  double pathLength_ = 0.0;
+  long long steps_ = 0;
+  double meniscus_ = 0.0;
+  double sourced_ = 0.0;
+  double detached_ = 0.0;
+  double dried_ = 0.0;
+  std::vector<Bead> beads_;
+  std::vector<FallingDrop> drops_;
+  std::vector<double> cellVolume_;  // film volume per trail cell
+  std::vector<double> cellWidth_;   // widest bead base that wetted the cell
+  std::vector<int> cellDepositor_;  // bead that last laid film there (-1: none)
+  std::vector<double> cellOwnVolume_;  // the part of the film that bead laid
+};
+
+// The state at time t of a fresh simulation (simulated from t = 0).
+TearLiquidState simulateTearLiquid(const TearLiquidInput& input, double t);
+VolumeBudget tearLiquidVolumeBudget(const TearLiquidInput& input, double t);
+
+}  // namespace lacrima

@@ -1,0 +1,465 @@
+#include "lacrima/geometry/tear_liquid.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <utility>
+
+#include "lacrima/geometry/error.hpp"
+#include "lacrima/geometry/surface_point.hpp"
+
+namespace lacrima {
+
+namespace {
+
+constexpr double kPiD = std::numbers::pi;
+
+void requireFinite(double value, const char* what) {
+  if (!std::isfinite(value)) throw InputError(fmt::format("tear liquid: {} must be finite, got {}", what, value));
+}
+
+void requirePositive(double value, const char* what) {
+  if (!(std::isfinite(value) && value > 0.0))
+    throw InputError(fmt::format("tear liquid: {} must be finite and positive, got {}", what, value));
+}
+
+void requireNonNegative(double value, const char* what) {
+  if (!(std::isfinite(value) && value >= 0.0))
+    throw InputError(fmt::format("tear liquid: {} must be finite and >= 0, got {}", what, value));
+}
+
+void validatePath(std::vector<LiquidPathSample>& path) {
+  if (path.size() < 2)
+    throw InputError(fmt::format("tear liquid: the path needs at least 2 samples, got {}", path.size()));
+  if (path.front().arcLength != 0.0)
+    throw InputError(fmt::format("tear liquid: the path's first arc length must be 0, got {}", path.front().arcLength));
+  for (size_t i = 0; i < path.size(); ++i) {
+    LiquidPathSample& sample = path[i];
+    if (!sample.position.allFinite() || !sample.normal.allFinite() || !(sample.normal.norm() > 0.0))
+      throw InputError(fmt::format("tear liquid: path sample {} needs a finite position and a non-zero normal", i));
+    sample.normal.normalize();
+    requireFinite(sample.arcLength, "path arc length");
+    if (i > 0 && !(sample.arcLength > path[i - 1].arcLength))
+      throw InputError(fmt::format("tear liquid: path arc length must increase strictly, sample {} has {} after {}", i,
+                                   sample.arcLength, path[i - 1].arcLength));
+  }
+}
+
+void validateSource(const WellingSource& source) {
+  requireNonNegative(source.rate, "welling rate");
+  requireFinite(source.start, "welling start");
+  if (!(source.end >= source.start))
+    throw InputError(fmt::format("tear liquid: welling end ({}) must not be before its start ({})", source.end, source.start));
+  requireNonNegative(source.initialVolume, "initial meniscus volume");
+  requirePositive(source.overflowVolume, "overflow volume");
+  requirePositive(source.spillVolume, "spill volume");
+  if (source.spillVolume > source.overflowVolume)
+    throw InputError(fmt::format("tear liquid: spill volume {} must not exceed the overflow volume {}", source.spillVolume,
+                                 source.overflowVolume));
+}
+
+void validateParams(const TearLiquidParams& p, double pathLength) {
+  requirePositive(p.viscosity, "viscosity");
+  requirePositive(p.contactLineLogRatio, "contact line log ratio");
+  requirePositive(p.speedRelaxationTime, "speed relaxation time");
+  requireNonNegative(p.minSlideSpeed, "minimum slide speed");
+  if (!(p.wetRetentionFactor > 0.0 && p.wetRetentionFactor <= 1.0))
+    throw InputError(fmt::format("tear liquid: wet retention factor must be in (0, 1], got {}", p.wetRetentionFactor));
+  requirePositive(p.filmThickness, "film thickness");
+  requirePositive(p.filmDryingTime, "film drying time");
+  requirePositive(p.trailCellLength, "trail cell length");
+  if (!(p.overhangCosine >= -1.0 && p.overhangCosine <= 1.0))
+    throw InputError(fmt::format("tear liquid: overhang cosine must be in [-1, 1], got {}", p.overhangCosine));
+  requireNonNegative(p.hangingContactRadius, "hanging contact radius");
+  requirePositive(p.minBeadVolume, "minimum bead volume");
+  requirePositive(p.timeStep, "time step");
+  validateSource(p.source);
+  for (const InitialBead& bead : p.initialBeads) {
+    requirePositive(bead.volume, "initial bead volume");
+    if (!(bead.arcLength >= 0.0 && bead.arcLength <= pathLength))
+      throw InputError(fmt::format("tear liquid: initial bead arc length {} is outside the path [0, {}]", bead.arcLength,
+                                   pathLength));
+  }
+}
+
+long long stepsFor(double t, double dt) {
+  if (!(std::isfinite(t) && t >= 0.0)) throw InputError(fmt::format("tear liquid: time must be finite and >= 0, got {}", t));
+  return (long long)std::floor(t / dt + 1e-9);
+}
+
+bool isLive(const Bead& bead) {
+  return bead.phase == BeadPhase::Welling || bead.phase == BeadPhase::Pinned || bead.phase == BeadPhase::Sliding ||
+         bead.phase == BeadPhase::Hanging;
+}
+
+double equivalentRadius(double volume) { return std::cbrt(3.0 * volume / (4.0 * kPiD)); }
+
+}  // namespace
+
+const char* beadPhaseName(BeadPhase phase) {
+  switch (phase) {
+    case BeadPhase::Welling: return "welling";
+    case BeadPhase::Pinned: return "pinned";
+    case BeadPhase::Sliding: return "sliding";
+    case BeadPhase::Hanging: return "hanging";
+    case BeadPhase::Detached: return "detached";
+    case BeadPhase::Merged: return "merged";
+    case BeadPhase::Dried: return "dried";
+  }
+  return "unknown";
+}
+
+std::vector<LiquidPathSample> liquidPathFromFlowPath(const FlowPath& path, const TriangleMesh& mesh) {
+  if (path.points.empty()) throw InputError("tear liquid: the flow path is empty");
+  std::vector<LiquidPathSample> samples(path.points.size());
+  for (size_t i = 0; i < samples.size(); ++i) {
+    samples[i].arcLength = path.arcLength[i];
+    samples[i].position = path.positions[i].cast<double>();
+    samples[i].normal = triangleNormal(mesh, path.points[i].triangle).cast<double>().normalized();
+  }
+  return samples;
+}
+
+double VolumeBudget::relativeImbalance() const {
+  return source > 0.0 ? std::abs(accounted() - source) / source : std::abs(accounted());
+}
+
+// ---- Set-up ---------------------------------------------------------------------------------------
+
+TearLiquidSimulation::TearLiquidSimulation(TearLiquidInput input) : input_(std::move(input)) {
+  validatePath(input_.path);
+  pathLength_ = input_.path.back().arcLength;
+  const TearLiquidParams& p = input_.params;
+  validateParams(p, pathLength_);
+  if (!input_.gravityDirection.allFinite() || !(input_.gravityDirection.norm() > 0.0))
+    throw InputError("tear liquid: gravity direction must be finite and non-zero");
+  gHat_ = input_.gravityDirection.normalized();
+  sliding_ = SlidingModel{p.fluid, p.contactAngles, p.retentionFactor};
+  widthPerCubeRoot_ = slidingBaseWidth(sliding_, kMicrolitre) / std::cbrt(kMicrolitre);  // validates the model
+  const size_t cells = size_t(std::ceil(pathLength_ / p.trailCellLength));
+  cellVolume_.assign(std::max<size_t>(cells, 1), 0.0);
+  cellWidth_.assign(cellVolume_.size(), 0.0);
+  cellDepositor_.assign(cellVolume_.size(), -1);
+  cellOwnVolume_.assign(cellVolume_.size(), 0.0);
+  meniscus_ = p.source.initialVolume;
+  sourced_ = meniscus_;
+  for (const InitialBead& initial : p.initialBeads) {
+    beads_.push_back(Bead{initial.arcLength, 0.0, initial.volume, BeadPhase::Pinned, 0.0, -1});
+    sourced_ += initial.volume;
+  }
+}
+
+// ---- Path queries ---------------------------------------------------------------------------------
+
+size_t TearLiquidSimulation::pieceAt(double s) const {
+  const auto& path = input_.path;
+  const auto it = std::upper_bound(path.begin(), path.end(), s,
+                                   [](double value, const LiquidPathSample& sample) { return value < sample.arcLength; });
+  const size_t index = it == path.begin() ? 0 : size_t(it - path.begin()) - 1;
+  return std::min(index, path.size() - 2);
+}
+
+Vec3d TearLiquidSimulation::positionAt(double s) const {
+  const size_t i = pieceAt(s);
+  const LiquidPathSample& a = input_.path[i];
+  const LiquidPathSample& b = input_.path[i + 1];
+  const double f = std::clamp((s - a.arcLength) / (b.arcLength - a.arcLength), 0.0, 1.0);
+  return a.position + f * (b.position - a.position);
+}
+
+double TearLiquidSimulation::tiltAt(double s) const {
+  // cos(alpha) = n . up = -n . g_hat: 0 for a floor, pi / 2 for a wall, pi for a ceiling.
+  const double cosTilt = std::clamp(-input_.path[pieceAt(s)].normal.dot(gHat_), -1.0, 1.0);
+  return std::acos(cosTilt);
+}
+
+bool TearLiquidSimulation::isDripSite(double s) const {
+  return s >= pathLength_ || input_.path[pieceAt(s)].normal.dot(gHat_) > input_.params.overhangCosine;
+}
+
+double TearLiquidSimulation::nextDripSite(double from, double to) const {
+  // Pieces start at samples; the first overhanging piece beginning in (from, to], else the path's end.
+  const auto& path = input_.path;
+  for (size_t i = pieceAt(from) + 1; i + 1 < path.size() && path[i].arcLength <= to; ++i)
+    if (path[i].normal.dot(gHat_) > input_.params.overhangCosine) return path[i].arcLength;
+  return std::min(to, pathLength_);
+}
+
+size_t TearLiquidSimulation::cellAt(double s) const {
+  return std::min(size_t(std::max(s, 0.0) / input_.params.trailCellLength), cellVolume_.size() - 1);
+}
+
+double TearLiquidSimulation::cellLength(size_t cell) const {
+  const double begin = double(cell) * input_.params.trailCellLength;
+  return std::min(input_.params.trailCellLength, pathLength_ - begin);
+}
+
+double TearLiquidSimulation::cellThickness(size_t cell) const {
+  return cellWidth_[cell] > 0.0 ? cellVolume_[cell] / (cellWidth_[cell] * cellLength(cell)) : 0.0;
+}
+
+double TearLiquidSimulation::filmThicknessAt(double s) const {
+  if (!(s >= 0.0 && s <= pathLength_)) return 0.0;
+  return cellThickness(cellAt(s));
+}
+
+// Wetness met by the bead's front contact line (ignoring film the bead laid itself).
+double TearLiquidSimulation::wetnessAhead(const Bead& bead, int id) const {
+  const size_t cell = cellAt(std::min(bead.arcLength + baseRadius(bead.volume), pathLength_));
+  if (cellDepositor_[cell] == id) return 0.0;
+  return std::min(1.0, cellThickness(cell) / input_.params.filmThickness);
+}
+
+// ---- Laws -----------------------------------------------------------------------------------------
+
+double TearLiquidSimulation::baseRadius(double volume) const { return 0.5 * widthPerCubeRoot_ * std::cbrt(volume); }
+
+double TearLiquidSimulation::retentionScale(double wetness) const {
+  return 1.0 - wetness * (1.0 - input_.params.wetRetentionFactor);
+}
+
+bool TearLiquidSimulation::slides(double volume, double tilt, double wetness) const {
+  if (wetness <= 0.0) return dropSlides(sliding_, volume, tilt);  // exactly the SlidingModel criterion when dry
+  const double drive = sliding_.fluid.density * volume * sliding_.fluid.gravity * std::sin(tilt);
+  return drive > 0.0 && drive >= retentionScale(wetness) * retentionForce(sliding_, volume);
+}
+
+double TearLiquidSimulation::terminalSpeed(double volume, double tilt, double wetness) const {
+  // de Gennes 1985 wedge dissipation: F_drive - F_retention = 3 mu v ln(L/a) w / theta_mean.
+  const TearLiquidParams& p = input_.params;
+  const double drive = sliding_.fluid.density * volume * sliding_.fluid.gravity * std::sin(tilt);
+  const double excess = drive - retentionScale(wetness) * retentionForce(sliding_, volume);
+  const double thetaMean = 0.5 * (p.contactAngles.advancing + p.contactAngles.receding);
+  const double width = slidingBaseWidth(sliding_, volume);
+  return std::max(0.0, thetaMean * excess / (3.0 * p.viscosity * p.contactLineLogRatio * width));
+}
+
+// ---- Stepping -------------------------------------------------------------------------------------
+
+void TearLiquidSimulation::advanceTo(double t) {
+  const long long target = stepsFor(t, input_.params.timeStep);
+  if (target < steps_)
+    throw InputError(fmt::format("tear liquid: cannot go back in time from {} s to {} s", time(), t));
+  while (steps_ < target) step();
+}
+
+void TearLiquidSimulation::step() {
+  well();
+  for (size_t id = 0; id < beads_.size(); ++id) {
+    Bead& bead = beads_[id];
+    if (bead.phase == BeadPhase::Hanging || !isLive(bead)) continue;
+    moveBead(bead, int(id));
+  }
+  coalesce();
+  for (size_t id = 0; id < beads_.size(); ++id)
+    if (beads_[id].phase == BeadPhase::Hanging) detachIfHeavy(beads_[id], int(id));
+  dryFilm();
+  ++steps_;
+}
+
+void TearLiquidSimulation::well() {
+  const WellingSource& source = input_.params.source;
+  const double t0 = time();
+  const double t1 = t0 + input_.params.timeStep;
+  const double overlap = std::max(0.0, std::min(t1, source.end) - std::max(t0, source.start));
+  const double added = source.rate * overlap;
+  meniscus_ += added;
+  sourced_ += added;
+  // The meniscus overflows over the lid margin: a bead of spillVolume leaves (merges with a bead
+  // still sitting at the lid through coalesce()).
+  while (meniscus_ >= source.overflowVolume) {
+    meniscus_ -= source.spillVolume;
+    beads_.push_back(Bead{0.0, 0.0, source.spillVolume, BeadPhase::Welling, t1, -1});
+  }
+}
+
+void TearLiquidSimulation::moveBead(Bead& bead, int id) {
+  const TearLiquidParams& p = input_.params;
+  if (isDripSite(bead.arcLength)) {
+    bead.phase = BeadPhase::Hanging;
+    bead.speed = 0.0;
+    return;
+  }
+  const double tilt = tiltAt(bead.arcLength);
+  const double wetness = wetnessAhead(bead, id);
+  if (!slides(bead.volume, tilt, wetness)) {
+    bead.phase = bead.arcLength == 0.0 ? BeadPhase::Welling : BeadPhase::Pinned;
+    bead.speed = 0.0;
+    return;
+  }
+  bead.phase = BeadPhase::Sliding;
+  const double target = std::max(terminalSpeed(bead.volume, tilt, wetness), p.minSlideSpeed);
+  bead.speed = target + (bead.speed - target) * std::exp(-p.timeStep / p.speedRelaxationTime);
+  const double wanted = bead.arcLength + bead.speed * p.timeStep;
+  const double reached = nextDripSite(bead.arcLength, wanted);
+  depositTrail(bead, id, reached - bead.arcLength);
+  bead.arcLength = reached;
+  if (isDripSite(reached)) {
+    bead.phase = BeadPhase::Hanging;
+    bead.speed = 0.0;
+  }
+  if (bead.volume < p.minBeadVolume) runOut(bead, id);
+}
+
+void TearLiquidSimulation::depositTrail(Bead& bead, int id, double distance) {
+  if (!(distance > 0.0)) return;
+  const TearLiquidParams& p = input_.params;
+  // Exact dry consumption over the distance: d(V^(2/3))/ds = -(2/3) h_f c_w.
+  const double remaining = std::cbrt(bead.volume) * std::cbrt(bead.volume) -
+                           (2.0 / 3.0) * p.filmThickness * widthPerCubeRoot_ * distance;
+  const double dryDeposit = remaining > 0.0 ? bead.volume - remaining * std::sqrt(remaining) : bead.volume;
+  const double width = 2.0 * baseRadius(bead.volume);
+  // The film is laid by the rear contact line, a base radius behind the centre.
+  const double rear0 = bead.arcLength - baseRadius(bead.volume);
+  const double rear1 = rear0 + distance;
+  double deposited = 0.0;
+  for (size_t cell = cellAt(rear0); cell < cellVolume_.size(); ++cell) {
+    const double begin = double(cell) * p.trailCellLength;
+    const double end = begin + cellLength(cell);
+    if (begin >= rear1) break;
+    const double overlap = std::min(end, rear1) - std::max(begin, std::max(rear0, 0.0));
+    if (!(overlap > 0.0)) continue;
+    const double need = dryDeposit * overlap / distance;
+    // Film laid by others is topped up, not doubled; the bead's own film in the cell is not "present".
+    const double foreign = cellDepositor_[cell] == id ? cellVolume_[cell] - cellOwnVolume_[cell] : cellVolume_[cell];
+    const double present = foreign * overlap / cellLength(cell);
+    const double added = std::min(std::max(0.0, need - present), bead.volume - deposited);
+    if (added <= 0.0) continue;
+    if (cellDepositor_[cell] != id) cellOwnVolume_[cell] = 0.0;
+    cellVolume_[cell] += added;
+    cellOwnVolume_[cell] += added;
+    cellWidth_[cell] = std::max(cellWidth_[cell], width);
+    cellDepositor_[cell] = id;
+    deposited += added;
+  }
+  bead.volume -= deposited;
+}
+
+void TearLiquidSimulation::runOut(Bead& bead, int id) {
+  const size_t cell = cellAt(bead.arcLength - baseRadius(bead.volume));
+  cellWidth_[cell] = std::max(cellWidth_[cell], 2.0 * baseRadius(bead.volume));
+  if (cellDepositor_[cell] != id) cellOwnVolume_[cell] = 0.0;
+  cellVolume_[cell] += bead.volume;
+  cellOwnVolume_[cell] += bead.volume;
+  cellDepositor_[cell] = id;
+  bead.volume = 0.0;
+  bead.speed = 0.0;
+  bead.phase = BeadPhase::Dried;
+}
+
+void TearLiquidSimulation::coalesce() {
+  // Beads whose footprints touch (centre gap below the sum of base radii) merge into the one ahead.
+  std::vector<int> order;
+  for (size_t id = 0; id < beads_.size(); ++id)
+    if (isLive(beads_[id])) order.push_back(int(id));
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return beads_[a].arcLength < beads_[b].arcLength; });
+  for (size_t k = 0; k + 1 < order.size(); ++k) {
+    Bead& behind = beads_[order[k]];
+    Bead& ahead = beads_[order[k + 1]];
+    if (ahead.arcLength - behind.arcLength > baseRadius(behind.volume) + baseRadius(ahead.volume)) continue;
+    const double volume = ahead.volume + behind.volume;
+    if (ahead.phase != BeadPhase::Hanging)
+      ahead.speed = (ahead.volume * ahead.speed + behind.volume * behind.speed) / volume;  // momentum kept
+    ahead.volume = volume;
+    behind.volume = 0.0;
+    behind.speed = 0.0;
+    behind.phase = BeadPhase::Merged;
+    behind.mergedInto = order[k + 1];
+  }
+}
+
+double TearLiquidSimulation::hangingLimit(double volume) const {
+  const double radius = input_.params.hangingContactRadius > 0.0 ? input_.params.hangingContactRadius : baseRadius(volume);
+  return hangingDropMaxVolume(sliding_.fluid, radius);  // Tate 1864
+}
+
+void TearLiquidSimulation::detachIfHeavy(Bead& bead, int id) {
+  if (bead.volume <= hangingLimit(bead.volume)) return;
+  FallingDrop drop;
+  drop.beadId = id;
+  drop.detachTime = time() + input_.params.timeStep;
+  // The drop hangs below its contact point: its centre one sphere radius further along gravity.
+  drop.detachCentre = positionAt(bead.arcLength) + gHat_ * equivalentRadius(bead.volume);
+  drop.volume = bead.volume;
+  drops_.push_back(drop);
+  detached_ += bead.volume;
+  bead.volume = 0.0;
+  bead.phase = BeadPhase::Detached;
+}
+
+void TearLiquidSimulation::dryFilm() {
+  const double keep = std::exp(-input_.params.timeStep / input_.params.filmDryingTime);
+  for (size_t cell = 0; cell < cellVolume_.size(); ++cell) {
+    const double kept = cellVolume_[cell] * keep;
+    dried_ += cellVolume_[cell] - kept;
+    cellVolume_[cell] = kept;
+    cellOwnVolume_[cell] *= keep;
+  }
+}
+
+// ---- Output ---------------------------------------------------------------------------------------
+
+VolumeBudget TearLiquidSimulation::budget() const {
+  VolumeBudget budget;
+  budget.source = sourced_;
+  budget.meniscus = meniscus_;
+  for (const Bead& bead : beads_) budget.beads += bead.volume;
+  budget.film = std::accumulate(cellVolume_.begin(), cellVolume_.end(), 0.0);
+  budget.detached = detached_;
+  budget.dried = dried_;
+  return budget;
+}
+
+TearLiquidState TearLiquidSimulation::state(double t) const {
+  if (stepsFor(t, input_.params.timeStep) != steps_)
+    throw InputError(fmt::format("tear liquid: state at {} s asked of a simulation at {} s", t, time()));
+  const TearLiquidParams& p = input_.params;
+  TearLiquidState state;
+  state.time = t;
+  state.meniscusVolume = meniscus_;
+  const double thetaMean = 0.5 * (p.contactAngles.advancing + p.contactAngles.receding);
+  for (size_t id = 0; id < beads_.size(); ++id) {
+    const Bead& bead = beads_[id];
+    if (!isLive(bead)) continue;
+    BeadView view;
+    view.id = int(id);
+    view.phase = bead.phase;
+    view.arcLength = bead.arcLength;
+    view.speed = bead.speed;
+    view.volume = bead.volume;
+    view.position = positionAt(bead.arcLength);
+    view.normal = input_.path[pieceAt(bead.arcLength)].normal;
+    view.tilt = tiltAt(bead.arcLength);
+    view.shape = beadShape(p.fluid, bead.volume, thetaMean, std::min(view.tilt, 0.5 * kPiD));
+    state.beads.push_back(view);
+  }
+  const Vec3d g = gHat_ * p.fluid.gravity;
+  for (const FallingDrop& drop : drops_) {
+    const double dt = t - drop.detachTime;  // >= 0: detachments happen at step ends <= time()
+    DropView view;
+    view.beadId = drop.beadId;
+    view.centre = drop.detachCentre + drop.detachVelocity * dt + 0.5 * g * dt * dt;  // ballistic, no drag
+    view.velocity = drop.detachVelocity + g * dt;
+    view.volume = drop.volume;
+    view.radius = equivalentRadius(drop.volume);
+    state.drops.push_back(view);
+  }
+  for (const LiquidPathSample& sample : input_.path) state.sampleFilmThickness.push_back(filmThicknessAt(sample.arcLength));
+  return state;
+}
+
+TearLiquidState simulateTearLiquid(const TearLiquidInput& input, double t) {
+  TearLiquidSimulation simulation(input);
+  simulation.advanceTo(t);
+  return simulation.state(t);
+}
+
+VolumeBudget tearLiquidVolumeBudget(const TearLiquidInput& input, double t) {
+  TearLiquidSimulation simulation(input);
+  simulation.advanceTo(t);
+  return simulation.budget();
+}
+
+}  // namespace lacrima

@@ -1,0 +1,316 @@
+// The liquid state of tears along a flow path (issue 5): welling, stick and slide, the trail film
+// and its drying, coalescence, hanging drops and their ballistic fall, volume bookkeeping and
+// determinism. Paths are analytic planes (gravity -y) so every expectation has a closed form.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "lacrima/geometry/error.hpp"
+#include "lacrima/geometry/tear_liquid.hpp"
+
+namespace lacrima {
+namespace {
+
+constexpr double kPiD = std::numbers::pi;
+constexpr double kUl = kMicrolitre;
+double deg(double degrees) { return degrees * kPiD / 180.0; }
+
+// A plane tilted by `tilt` from the horizontal: normal (0, cos, sin), fall line (0, -sin, cos).
+// Samples every `spacing` from the origin down the fall line. Pieces from `overhangFrom` on face
+// straight down (a ceiling: n . g_hat = 1), continuing horizontally.
+std::vector<LiquidPathSample> planePath(double tilt, double length, double spacing = 1e-3,
+                                        double overhangFrom = 1e30) {
+  const Vec3d normal(0.0, std::cos(tilt), std::sin(tilt));
+  const Vec3d down(0.0, -std::sin(tilt), std::cos(tilt));
+  std::vector<LiquidPathSample> path;
+  const int count = int(std::lround(length / spacing));
+  Vec3d overhangStart = Vec3d::Zero();
+  for (int i = 0; i <= count; ++i) {
+    const double s = i * spacing;
+    LiquidPathSample sample;
+    sample.arcLength = s;
+    if (s < overhangFrom - 1e-12) {
+      sample.position = s * down;
+      sample.normal = normal;
+      overhangStart = sample.position;
+    } else {
+      sample.position = overhangStart + (s - overhangFrom) * Vec3d::UnitZ();
+      sample.normal = -Vec3d::UnitY();
+    }
+    path.push_back(sample);
+  }
+  return path;
+}
+
+TearLiquidInput noWelling(std::vector<LiquidPathSample> path) {
+  TearLiquidInput input;
+  input.path = std::move(path);
+  input.params.source.rate = 0.0;
+  return input;
+}
+
+SlidingModel slidingModelOf(const TearLiquidParams& p) { return SlidingModel{p.fluid, p.contactAngles, p.retentionFactor}; }
+
+// c_w in w = c_w V^(1/3).
+double widthPerCubeRoot(const TearLiquidParams& p) {
+  return slidingBaseWidth(slidingModelOf(p), kUl) / std::cbrt(kUl);
+}
+
+TEST(TearLiquid, VolumeIsConservedEveryStepThroughWellingSlidingFilmDryingAndDripping) {
+  TearLiquidInput input;
+  input.path = planePath(deg(70.0), 0.04, 1e-3, 0.03);
+  input.params.source = WellingSource{.rate = 10.0 * kUl, .start = 0.2, .end = 6.0, .initialVolume = 1.0 * kUl,
+                                      .overflowVolume = 10.0 * kUl, .spillVolume = 8.0 * kUl};
+  input.params.filmDryingTime = 2.0;
+  input.params.hangingContactRadius = 0.8e-3;
+  input.params.initialBeads = {{0.01, 3.0 * kUl}};
+  TearLiquidSimulation simulation(input);
+  double worst = 0.0, maxFilm = 0.0;
+  while (simulation.time() < 12.0) {
+    simulation.step();
+    const VolumeBudget budget = simulation.budget();
+    worst = std::max(worst, budget.relativeImbalance());
+    maxFilm = std::max(maxFilm, budget.film);
+  }
+  EXPECT_LT(worst, 1e-6);
+  // Every kind of transfer took place.
+  const VolumeBudget budget = simulation.budget();
+  EXPECT_NEAR(budget.source, (1.0 + 3.0 + 10.0 * 5.8) * kUl, 1e-12);
+  EXPECT_GE(simulation.drops().size(), 1u);
+  EXPECT_GT(budget.detached, 0.0);
+  EXPECT_GT(budget.dried, 0.0);
+  EXPECT_GT(maxFilm, 0.0);
+  bool merged = false;
+  for (const Bead& bead : simulation.beads()) merged = merged || bead.phase == BeadPhase::Merged;
+  EXPECT_TRUE(merged);
+}
+
+TEST(TearLiquid, StateIsAFunctionOfTimeOnlyBitwise) {
+  TearLiquidInput input;
+  input.path = planePath(deg(65.0), 0.05, 1e-3, 0.04);
+  input.params.source = WellingSource{.rate = 8.0 * kUl, .overflowVolume = 9.0 * kUl, .spillVolume = 7.0 * kUl};
+  input.params.hangingContactRadius = 0.6e-3;
+  const double t = 4.2;
+  const TearLiquidState direct = simulateTearLiquid(input, t);
+
+  TearLiquidSimulation incremental(input);
+  for (double earlier : {0.5, 1.234, 3.0}) {
+    incremental.advanceTo(earlier);
+    (void)incremental.state(earlier);
+  }
+  incremental.advanceTo(t);
+  const TearLiquidState again = incremental.state(t);
+
+  ASSERT_GT(direct.beads.size(), 0u);
+  ASSERT_GT(direct.drops.size(), 0u);
+  EXPECT_EQ(direct.meniscusVolume, again.meniscusVolume);
+  ASSERT_EQ(direct.beads.size(), again.beads.size());
+  for (size_t i = 0; i < direct.beads.size(); ++i) {
+    EXPECT_EQ(direct.beads[i].id, again.beads[i].id);
+    EXPECT_EQ(direct.beads[i].arcLength, again.beads[i].arcLength);
+    EXPECT_EQ(direct.beads[i].volume, again.beads[i].volume);
+    EXPECT_EQ(direct.beads[i].speed, again.beads[i].speed);
+    EXPECT_EQ(direct.beads[i].shape.height, again.beads[i].shape.height);
+  }
+  ASSERT_EQ(direct.drops.size(), again.drops.size());
+  for (size_t i = 0; i < direct.drops.size(); ++i) {
+    EXPECT_EQ(direct.drops[i].centre, again.drops[i].centre);
+    EXPECT_EQ(direct.drops[i].velocity, again.drops[i].velocity);
+  }
+  EXPECT_EQ(direct.sampleFilmThickness, again.sampleFilmThickness);
+  EXPECT_THROW(incremental.advanceTo(1.0), InputError);
+}
+
+TEST(TearLiquid, BeadSticksJustBelowTheCriticalTiltAndSlidesJustAbove) {
+  const double volume = 10.0 * kUl;
+  const TearLiquidParams defaults;
+  const double critical = *criticalTiltAngle(slidingModelOf(defaults), volume);
+  for (double offset : {-1e-7, 1e-7}) {
+    TearLiquidInput input = noWelling(planePath(critical + offset, 0.03));
+    input.params.initialBeads = {{0.005, volume}};
+    TearLiquidSimulation simulation(input);
+    simulation.step();
+    const Bead& bead = simulation.beads()[0];
+    if (offset < 0.0) {
+      EXPECT_EQ(bead.phase, BeadPhase::Pinned);
+      EXPECT_EQ(bead.arcLength, 0.005);
+      EXPECT_EQ(bead.volume, volume);
+    } else {
+      EXPECT_EQ(bead.phase, BeadPhase::Sliding);
+      EXPECT_GT(bead.arcLength, 0.005);
+      EXPECT_LT(bead.volume, volume);
+    }
+  }
+}
+
+TEST(TearLiquid, TerminalSpeedFollowsTheWedgeDissipationBalance) {
+  TearLiquidInput input = noWelling(planePath(deg(60.0), 0.3));
+  input.params.filmThickness = 1e-12;  // keeps the volume constant for the comparison
+  const double volume = 10.0 * kUl;
+  input.params.initialBeads = {{0.005, volume}};
+  TearLiquidSimulation simulation(input);
+
+  // v = theta_mean (rho g V sin(alpha) - F_retention) / (3 mu ln(L/a) w), by hand.
+  const TearLiquidParams& p = input.params;
+  const SlidingModel model = slidingModelOf(p);
+  const double drive = p.fluid.density * p.fluid.gravity * volume * std::sin(deg(60.0));
+  const double thetaMean = 0.5 * (p.contactAngles.advancing + p.contactAngles.receding);
+  const double expected = thetaMean * (drive - retentionForce(model, volume)) /
+                          (3.0 * p.viscosity * p.contactLineLogRatio * slidingBaseWidth(model, volume));
+  EXPECT_NEAR(simulation.terminalSpeed(volume, deg(60.0), 0.0), expected, 1e-12 * expected);
+  simulation.advanceTo(0.1);  // 20 relaxation times
+  EXPECT_NEAR(simulation.beads()[0].speed, expected, 1e-6 * expected);
+
+  // Bigger or steeper is faster; a wet trail is faster too.
+  EXPECT_GT(simulation.terminalSpeed(20.0 * kUl, deg(60.0), 0.0), expected);
+  EXPECT_GT(simulation.terminalSpeed(volume, deg(80.0), 0.0), expected);
+  EXPECT_GT(simulation.terminalSpeed(volume, deg(60.0), 1.0), expected);
+  EXPECT_EQ(simulation.terminalSpeed(volume, deg(30.0), 0.0), 0.0);  // below the critical tilt
+}
+
+TEST(TearLiquid, BeadThinsByItsTrailAndStopsWhereItsVolumeReachesTheCriticalVolume) {
+  const double tilt = deg(60.0), volume = 10.0 * kUl, start = 0.005;
+  TearLiquidInput input = noWelling(planePath(tilt, 0.2));
+  input.params.initialBeads = {{start, volume}};
+  TearLiquidSimulation simulation(input);
+  simulation.advanceTo(10.0);
+  const Bead& bead = simulation.beads()[0];
+  ASSERT_EQ(bead.phase, BeadPhase::Pinned);
+
+  // dV/ds = -h_f c_w V^(1/3)  =>  s_stop = s0 + 3 (V0^(2/3) - Vc^(2/3)) / (2 h_f c_w).
+  const TearLiquidParams& p = input.params;
+  const double critical = criticalSlidingVolume(slidingModelOf(p), tilt);
+  const double twoThirds = 2.0 / 3.0;
+  const double expected = start + (std::pow(volume, twoThirds) - std::pow(critical, twoThirds)) /
+                                      (twoThirds * p.filmThickness * widthPerCubeRoot(p));
+  EXPECT_NEAR(bead.arcLength, expected, 1e-5);  // within 10 um over ~5 cm
+  EXPECT_LT(bead.volume, critical);
+  EXPECT_NEAR(bead.volume, critical, 1e-4 * critical);
+  EXPECT_NEAR(simulation.budget().relativeImbalance(), 0.0, 1e-12);
+}
+
+TEST(TearLiquid, SecondBeadOnTheWetTrailReachesAPointSooner) {
+  TearLiquidInput input;
+  input.path = planePath(deg(90.0), 0.2);
+  // Two overflows of 12 uL, one second apart (the source stops half-way to a third).
+  input.params.source = WellingSource{.rate = 12.0 * kUl, .end = 2.5, .overflowVolume = 12.0 * kUl,
+                                      .spillVolume = 12.0 * kUl};
+  TearLiquidSimulation simulation(input);
+  const double target = 0.03;
+  std::vector<double> travelTime;
+  while (simulation.time() < 4.0) {
+    simulation.step();
+    const auto& beads = simulation.beads();
+    for (size_t id = travelTime.size(); id < beads.size() && beads[id].arcLength >= target; ++id)
+      travelTime.push_back(simulation.time() - beads[id].birthTime);
+  }
+  ASSERT_EQ(travelTime.size(), 2u);
+  EXPECT_LT(travelTime[1], 0.8 * travelTime[0]) << travelTime[0] << " s then " << travelTime[1] << " s";
+}
+
+TEST(TearLiquid, HangingDropDetachesAtTatesLimitAndFallsBallistically) {
+  TearLiquidInput input;
+  input.path = planePath(deg(60.0), 0.03, 1e-3, 0.02);
+  input.params.source = WellingSource{.rate = 10.0 * kUl, .overflowVolume = 8.0 * kUl, .spillVolume = 8.0 * kUl};
+  TearLiquidSimulation simulation(input);
+  double hangingBefore = 0.0;
+  while (simulation.drops().empty() && simulation.time() < 30.0) {
+    for (const Bead& bead : simulation.beads())
+      if (bead.phase == BeadPhase::Hanging) {
+        hangingBefore = bead.volume;
+        EXPECT_EQ(bead.arcLength, 0.02);
+      }
+    simulation.step();
+  }
+  ASSERT_EQ(simulation.drops().size(), 1u);
+  const FallingDrop drop = simulation.drops()[0];
+  const TearLiquidParams& p = input.params;
+  const auto tate = [&](double v) { return hangingDropMaxVolume(p.fluid, 0.5 * widthPerCubeRoot(p) * std::cbrt(v)); };
+  EXPECT_LE(hangingBefore, tate(hangingBefore));
+  EXPECT_GT(drop.volume, tate(drop.volume));
+  EXPECT_EQ(drop.detachTime, simulation.time());
+
+  // The centre starts one sphere radius below the drip site, then y(t) = y0 - g t^2 / 2.
+  const Vec3d site = input.path[20].position;
+  const double radius = std::cbrt(3.0 * drop.volume / (4.0 * kPiD));
+  const TearLiquidState atDetach = simulation.state(simulation.time());
+  const Vec3d start = atDetach.drops[0].centre;
+  EXPECT_NEAR((start - (site - radius * Vec3d::UnitY())).norm(), 0.0, 1e-12);
+  for (double fall : {0.0123, 0.1, 0.25}) {
+    const double t = drop.detachTime + fall;
+    simulation.advanceTo(t);
+    const DropView falling = simulation.state(t).drops[0];
+    EXPECT_NEAR(falling.centre.y(), start.y() - 0.5 * p.fluid.gravity * fall * fall, 1e-6);
+    EXPECT_NEAR(falling.centre.x(), start.x(), 1e-12);
+    EXPECT_NEAR(falling.centre.z(), start.z(), 1e-12);
+    EXPECT_NEAR(falling.velocity.y(), -p.fluid.gravity * fall, 1e-9);
+  }
+}
+
+TEST(TearLiquid, MeniscusFillsLinearlyThenOverflowsAsABead) {
+  TearLiquidInput input;
+  input.path = planePath(deg(80.0), 0.1);
+  input.params.source = WellingSource{.rate = 2.0 * kUl, .start = 0.5, .overflowVolume = 8.0 * kUl,
+                                      .spillVolume = 6.0 * kUl};
+  TearLiquidSimulation simulation(input);
+  for (double t : {0.25, 1.0, 2.5, 4.0}) {
+    simulation.advanceTo(t);
+    EXPECT_NEAR(simulation.meniscusVolume(), 2.0 * kUl * std::max(0.0, t - 0.5), 1e-9 * kUl) << t;
+    EXPECT_TRUE(simulation.beads().empty()) << t;
+  }
+  simulation.advanceTo(4.6);
+  ASSERT_EQ(simulation.beads().size(), 1u);
+  EXPECT_NEAR(simulation.beads()[0].birthTime, 4.5, 1.5e-3);
+  EXPECT_NEAR(simulation.meniscusVolume(), 2.0 * kUl * 4.1 - 6.0 * kUl, 1e-9 * kUl);
+  const TearLiquidState state = simulation.state(4.6);
+  ASSERT_EQ(state.beads.size(), 1u);
+  EXPECT_GT(state.beads[0].arcLength, 0.0);
+}
+
+TEST(TearLiquid, TrailFilmDriesWithItsTimeConstant) {
+  TearLiquidInput input = noWelling(planePath(deg(60.0), 0.1));
+  input.params.initialBeads = {{0.003, 10.0 * kUl}};
+  input.params.filmDryingTime = 5.0;
+  TearLiquidSimulation simulation(input);
+  simulation.advanceTo(1.0);
+  const double early = simulation.filmThicknessAt(0.006);
+  EXPECT_GT(early, 0.8 * input.params.filmThickness * std::exp(-1.0 / 5.0));
+  EXPECT_LE(early, input.params.filmThickness);
+  simulation.advanceTo(3.0);
+  EXPECT_NEAR(simulation.filmThicknessAt(0.006) / early, std::exp(-2.0 / 5.0), 1e-12);
+  const TearLiquidState state = simulation.state(3.0);
+  EXPECT_EQ(state.sampleFilmThickness[6], simulation.filmThicknessAt(0.006));
+  EXPECT_EQ(simulation.filmThicknessAt(0.5), 0.0);  // off the path
+}
+
+TEST(TearLiquid, FlowPathSamplesCarryTheirTriangleNormals) {
+  TriangleMesh mesh;
+  mesh.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 0, -1), Vec3(1, -1, 0)};
+  mesh.indices = {0, 1, 2};
+  FlowPath path;
+  path.points = {SurfacePoint{0, Vec3(1, 0, 0)}, SurfacePoint{0, Vec3(0, 1, 0)}};
+  path.positions = {mesh.positions[0], mesh.positions[1]};
+  path.arcLength = {0.0f, 1.0f};
+  const auto samples = liquidPathFromFlowPath(path, mesh);
+  ASSERT_EQ(samples.size(), 2u);
+  EXPECT_NEAR((samples[0].normal - Vec3d(0, 1, 0)).norm(), 0.0, 1e-7);
+  EXPECT_EQ(samples[1].arcLength, 1.0);
+}
+
+TEST(TearLiquid, RejectsBadInputWithAMessageNamingTheField) {
+  TearLiquidInput input = noWelling(planePath(deg(60.0), 0.01));
+  input.params.source.spillVolume = 2.0 * input.params.source.overflowVolume;
+  try {
+    TearLiquidSimulation simulation(input);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("spill volume"), std::string::npos) << e.what();
+  }
+  input = noWelling(planePath(deg(60.0), 0.01));
+  input.path[3].arcLength = input.path[2].arcLength;
+  EXPECT_THROW(TearLiquidSimulation{input}, InputError);
+}
+
+}  // namespace
+}  // namespace lacrima
