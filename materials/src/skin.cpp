@@ -1,7 +1,10 @@
-// Skin v1 BSDF; see skin.hpp for parameters and sources.
+// Skin BSDF; see skin.hpp for parameters and sources.
 #include "lacrima/materials/skin.hpp"
 
+#include <algorithm>
+
 #include "lacrima/materials/fresnel.hpp"
+#include "lacrima/materials/pores.hpp"
 #include "lacrima/materials/sampling.hpp"
 
 namespace lacrima {
@@ -40,23 +43,35 @@ float fresnelHemisphericalReflectance(float eta) {
 SkinBsdf::SkinBsdf(const SkinParams& params)
     : albedo_(params.albedo.max(0.0f).min(kMaxSkinAlbedo)),  // energy margin, see skin.hpp
       ior_(params.ior),
-      distribution_(roughnessToAlpha(params.roughness)),
-      diffuseNorm_(kInvPi / (1.0f - fresnelHemisphericalReflectance(params.ior))) {}
+      sharp_(roughnessToAlpha(params.roughness)),
+      broad_(roughnessToAlpha(params.roughness2)),
+      lobeMix_(std::clamp(params.lobeMix, 0.0f, 1.0f)),
+      diffuseNorm_(kInvPi / (1.0f - fresnelHemisphericalReflectance(params.ior))),
+      poreScale_(params.poreScale),
+      poreDepth_(params.poreDepth > 0.0f && params.poreScale > 0.0f ? params.poreDepth : 0.0f) {}
+
+Vec3 SkinBsdf::perturbShadingNormal(const Vec3& position, const Vec3& ns, const Vec3& ng) const {
+  return perturbNormalByPores(position, ns, ng, poreScale_, poreDepth_);
+}
 
 float SkinBsdf::specularF(const Vec3& wo, const Vec3& wi) const {
   const auto wm = reflectionHalfVector(wo, wi);
   if (!wm) return 0.0f;
-  // f_r = D G F / (4 cos_o cos_i) (Walter 2007 eq. 20).
+  // f_r = D G F / (4 cos_o cos_i) per lobe (Walter 2007 eq. 20); the lobes share wm and F.
   const float F = fresnelDielectric(wo.dot(*wm), ior_);
-  return distribution_.D(*wm) * distribution_.G(wo, wi) * F / (4.0f * wo.z() * wi.z());
+  float dg = sharp_.D(*wm) * sharp_.G(wo, wi);
+  if (lobeMix_ > 0.0f) dg = (1.0f - lobeMix_) * dg + lobeMix_ * (broad_.D(*wm) * broad_.G(wo, wi));
+  return dg * F / (4.0f * wo.z() * wi.z());
 }
 
 float SkinBsdf::specularPdf(const Vec3& wo, const Vec3& wi) const {
   const auto wm = reflectionHalfVector(wo, wi);
   if (!wm) return 0.0f;
   // pdf(wi) = D_wo(wm) / (4 |wo.wm|): visible normals times the reflection Jacobian
-  // (Heitz 2018 eq. 1; Walter 2007 eq. 14).
-  return distribution_.visibleD(wo, *wm) / (4.0f * std::abs(wo.dot(*wm)));
+  // (Heitz 2018 eq. 1; Walter 2007 eq. 14); the lobe mixture mixes the visible-normal densities.
+  float visible = sharp_.visibleD(wo, *wm);
+  if (lobeMix_ > 0.0f) visible = (1.0f - lobeMix_) * visible + lobeMix_ * broad_.visibleD(wo, *wm);
+  return visible / (4.0f * std::abs(wo.dot(*wm)));
 }
 
 Color SkinBsdf::eval(const Vec3& wo, const Vec3& wi) const {
@@ -89,8 +104,10 @@ std::optional<BsdfSample> SkinBsdf::sample(const Vec3& wo, float uLobe, const Ve
   const float pSpec = specularProbability(wo);
   Vec3 wi;
   if (uLobe < pSpec) {
-    // Specular: sample a visible normal and mirror wo about it (Heitz 2018).
-    const Vec3 wm = distribution_.sampleVisibleNormal(wo, u);
+    // Specular: pick a lobe (the broad one with probability w, reusing uLobe rescaled to [0, 1)),
+    // sample a visible normal and mirror wo about it (Heitz 2018).
+    const bool broad = lobeMix_ > 0.0f && uLobe / pSpec < lobeMix_;
+    const Vec3 wm = (broad ? broad_ : sharp_).sampleVisibleNormal(wo, u);
     wi = reflect(wo, wm);
   } else {
     wi = sampleCosineHemisphere(u);

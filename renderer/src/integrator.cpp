@@ -154,6 +154,8 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
     if (!v.bsdf->isTransmissive()) {
       // Opaque surfaces are two-sided: shade the side the ray arrives from.
       if (!frontFacing) { ng = -ng; ns = -ns; }
+      // Fine-scale relief of the material (skin pores); ns unchanged for other materials.
+      ns = v.bsdf->perturbShadingNormal(hit.position, ns, ng);
       // A shading normal that hides wo would make the surface black or leak: fall back to ng.
       if (v.wo.dot(ns) <= 0.0f) ns = ng;
     }

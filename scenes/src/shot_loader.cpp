@@ -308,11 +308,18 @@ class ShotReader {
       m.params = p;
       if (auto x = o.color("emission", Range::atLeast(0))) m.emission = *x;
     } else if (*type == "skin") {
-      ObjectReader o(c_, v, pointer, {"type", "albedo", "roughness", "ior", "emission"});
+      ObjectReader o(c_, v, pointer,
+                     {"type", "albedo", "roughness", "ior", "roughness2", "lobeMix", "poreScale", "poreDepth", "emission"});
       SkinParams p;
       if (auto x = o.color("albedo", unit)) p.albedo = *x;
       if (auto x = o.number("roughness", unit)) p.roughness = float(*x);
       if (auto x = o.number("ior", ior)) p.ior = float(*x);
+      if (auto x = o.number("roughness2", unit)) p.roughness2 = float(*x);
+      if (auto x = o.number("lobeMix", unit)) p.lobeMix = float(*x);
+      if (o.has("roughness2") && !o.has("lobeMix"))
+        o.error("roughness2", "'roughness2' needs 'lobeMix' (the weight of the second lobe, in [0, 1])", Anchor::Key);
+      if (auto x = o.number("poreScale", Range::above(0))) p.poreScale = float(*x);
+      if (auto x = o.number("poreDepth", Range::atLeast(0))) p.poreDepth = float(*x);
       m.params = p;
       if (auto x = o.color("emission", Range::atLeast(0))) m.emission = *x;
     } else if (*type == "water") {

@@ -32,6 +32,21 @@ inline std::vector<BsdfCase> chi2Cases() {
       cases.push_back({std::string("skin_") + label + "_" + incidence, p, cosO});
     }
   }
+  // Dual-lobe skin: (sharper roughness, broader roughness, weight of the broader lobe).
+  struct DualLobe {
+    const char* label;
+    float r1, r2, mix;
+  };
+  for (const DualLobe& d : {DualLobe{"r03_r06_w05", 0.3f, 0.6f, 0.5f}, DualLobe{"r015_r07_w02", 0.15f, 0.7f, 0.2f},
+                            DualLobe{"r035_r05_w09", 0.35f, 0.5f, 0.9f}}) {
+    for (const auto& [incidence, cosO] : {std::pair{"normal", 0.99f}, std::pair{"grazing", 0.15f}}) {
+      SkinParams p;
+      p.roughness = d.r1;
+      p.roughness2 = d.r2;
+      p.lobeMix = d.mix;
+      cases.push_back({std::string("skin_dual_") + d.label + "_" + incidence, p, cosO});
+    }
+  }
   for (const auto& [label, roughness] : {std::pair{"r02", 0.2f}, std::pair{"r05", 0.5f}, std::pair{"r09", 0.9f}}) {
     for (const auto& [side, sign] : {std::pair{"outside", 1.0f}, std::pair{"inside", -1.0f}}) {
       for (const auto& [incidence, cosO] : {std::pair{"normal", 0.99f}, std::pair{"grazing", 0.15f}}) {

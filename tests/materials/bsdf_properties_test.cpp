@@ -4,6 +4,7 @@
 
 #include <cstdio>
 #include <map>
+#include <tuple>
 
 #include "bsdf_cases.hpp"
 #include "chi2.hpp"
@@ -34,6 +35,21 @@ std::vector<NamedParams> propertyMaterials() {
     white.roughness = r;
     m.push_back({"skin_white_r" + std::to_string(r), white, false});
   }
+  // Dual-lobe skin (sharper roughness, broader roughness, weight of the broader lobe); white
+  // bases test the energy bound where it is tightest.
+  for (const auto& [r1, r2, mix] : {std::tuple{0.3f, 0.6f, 0.5f}, std::tuple{0.1f, 0.9f, 0.3f}, std::tuple{0.35f, 0.5f, 0.9f}}) {
+    SkinParams white;
+    white.albedo = Color(1.0f, 1.0f, 1.0f);
+    white.roughness = r1;
+    white.roughness2 = r2;
+    white.lobeMix = mix;
+    m.push_back({"skin_dual_white_" + std::to_string(r1) + "_" + std::to_string(r2) + "_" + std::to_string(mix), white,
+                 false});
+  }
+  SkinParams dual;
+  dual.roughness2 = 0.6f;
+  dual.lobeMix = 0.15f;
+  m.push_back({"skin_dual", dual, false});
   for (const float r : {0.2f, 0.5f, 0.9f}) {
     RoughDielectricParams p;
     p.roughness = r;

@@ -37,6 +37,12 @@ class Bsdf {
   // zero for opaque surfaces. wo is the local direction towards the shading point the shadow ray
   // started from. Used by the renderer's transparent shadows (see integrator.cpp).
   virtual Color straightTransmittance(const Vec3& /*wo*/) const { return Color::Zero(); }
+  // The shading normal to use at world `position`, given the interpolated one ns and the
+  // geometric one ng (unit, same side). Materials with fine-scale relief (skin pores) tilt it;
+  // the result must be unit and on ng's side. Default: ns unchanged.
+  virtual Vec3 perturbShadingNormal(const Vec3& /*position*/, const Vec3& ns, const Vec3& /*ng*/) const {
+    return ns;
+  }
   // Reflectance-like colour for the albedo AOV.
   virtual Color albedo() const = 0;
 };

@@ -16,11 +16,17 @@ struct DiffuseParams {
   Color albedo = Color(0.5f, 0.5f, 0.5f);
 };
 
-// Skin v1: Lambertian base under a GGX specular coat whose strength follows dielectric Fresnel.
+// Skin: Lambertian base under one or two GGX specular lobes whose strength follows dielectric
+// Fresnel, optionally with procedural pores that tilt the shading normal (see skin.hpp, pores.hpp).
+// The defaults (lobeMix 0, poreDepth 0) are skin v1: one lobe, no pores.
 struct SkinParams {
   Color albedo = Color(0.62f, 0.43f, 0.35f);
-  float roughness = 0.35f;  // GGX alpha = roughness^2
-  float ior = 1.4f;         // skin surface lipids, drives the specular Fresnel
+  float roughness = 0.35f;   // sharper lobe, GGX alpha = roughness^2
+  float ior = 1.4f;          // skin surface lipids, drives the specular Fresnel
+  float roughness2 = 0.6f;   // broader second lobe, GGX alpha = roughness2^2
+  float lobeMix = 0.0f;      // weight of the second lobe in [0, 1]; 0 = single lobe (skin v1)
+  float poreScale = 3e-4f;   // metres between neighbouring pores (cell size of the pore lattice)
+  float poreDepth = 0.0f;    // metres deep; 0 = no pores
 };
 
 // Smooth dielectric interface (water, tears): Fresnel reflection + refraction, TIR.

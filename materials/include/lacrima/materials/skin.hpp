@@ -1,14 +1,24 @@
 #pragma once
-// Skin v1: a Lambertian base under a GGX specular reflection lobe (no subsurface transport yet).
+// Skin: a Lambertian base under one or two GGX specular reflection lobes (no subsurface transport
+// yet), with optional procedural pores that tilt the shading normal (pores.hpp).
 //
 // Parameters (SkinParams):
-//   albedo    - reflectance of the base before the Fresnel loss, clamped to [0, 0.99] (see Energy);
-//   roughness - GGX alpha = roughness^2 of the skin surface (lipid film), clamped to alpha >= 1e-3;
-//   ior       - refractive index of the surface layer; drives the specular Fresnel F.
+//   albedo     - reflectance of the base before the Fresnel loss, clamped to [0, 0.99] (see Energy);
+//   roughness  - sharper lobe, GGX alpha1 = roughness^2, clamped to alpha >= 1e-3;
+//   roughness2 - broader lobe, GGX alpha2 = roughness2^2 (used only when lobeMix > 0);
+//   lobeMix    - weight w of the broader lobe in [0, 1]; 0 is skin v1 (one lobe, bitwise);
+//   ior        - refractive index of the surface layer; drives the specular Fresnel F;
+//   poreScale, poreDepth - the pore field of pores.hpp (poreDepth 0: no pores, skin v1).
 //
 // f(wo, wi) = f_spec + f_diff, both zero unless wo and wi are above the surface:
-//   f_spec = D(wm) G2(wo, wi) F(wo.wm) / (4 cos_o cos_i), wm = normalize(wo + wi)
-//            (Walter et al. 2007 eq. 20, GGX D, height-correlated Smith G2, exact dielectric F);
+//   f_spec = [(1 - w) D1(wm) G2_1(wo, wi) + w D2(wm) G2_2(wo, wi)] F(wo.wm) / (4 cos_o cos_i),
+//            wm = normalize(wo + wi) (Walter et al. 2007 eq. 20 per lobe, GGX D, height-correlated
+//            Smith G2, exact dielectric F). Two lobes, a sharper and a broader one sharing the
+//            Fresnel term of the skin's oily layer, are the skin specular advised by d'Eon & Luebke,
+//            "Advanced Techniques for Realistic Real-Time Skin Rendering" (GPU Gems 3, ch. 14,
+//            2007, §14.3, Kelemen/Szirmay-Kalos specular); measured skin needs more than one lobe
+//            (Donner & Jensen 2005, "Light Diffusion in Multi-Layered Translucent Materials").
+//            A convex mix of normalised lobes: the specular albedo is the mix of the lobes' albedos.
 //   f_diff = albedo / pi * (1 - F(cos_o)) (1 - F(cos_i)) / (1 - Fbar),
 //            Fbar = (1/pi) integral F(cos) cos dw, the hemispherical (cosine-weighted) Fresnel
 //            reflectance. Light enters and leaves the base through the interface, so both ends
@@ -21,11 +31,13 @@
 // E_spec(wo) can exceed F(cos_o) slightly (facets tilted towards wo see more Fresnel than the
 // macro surface): measured max (E_spec - F) / (1 - F) = 7.2e-4, at roughness 0.3, cos_o 0.7, over
 // roughness 0.05-1 and ior 1.3-2. The base albedo is therefore clamped to kMaxSkinAlbedo = 0.99,
-// which keeps the total <= 1 with a tenfold margin (tested with a white base).
+// which keeps the total <= 1 with a tenfold margin (tested with a white base, one and two lobes:
+// the two-lobe E_spec is a convex mix of one-lobe ones, so the same bound holds).
 //
-// Sampling: a mixture. The specular lobe (visible-normal sampling, Heitz 2018) is chosen with
-// probability pSpec = Fo / (Fo + lum(albedo)(1 - Fo)), Fo = F(cos_o), clamped to [0.1, 0.9]; else
-// the cosine-weighted diffuse lobe. pdf() is the mixture density (Veach 1997 ch. 9, one-sample model, one-sample
+// Sampling: a mixture. The specular part is chosen with probability
+// pSpec = Fo / (Fo + lum(albedo)(1 - Fo)), Fo = F(cos_o), clamped to [0.1, 0.9]; within it the
+// broader lobe with probability w, each lobe by visible-normal sampling (Heitz 2018); else the
+// cosine-weighted diffuse lobe. pdf() is the mixture density (Veach 1997 ch. 9, one-sample
 // model), and sample() returns the full f and the mixture pdf.
 #include "lacrima/materials/bsdf.hpp"
 #include "lacrima/materials/material.hpp"
@@ -49,7 +61,10 @@ class SkinBsdf final : public Bsdf {
   std::optional<BsdfSample> sample(const Vec3& wo, float uLobe, const Vec2& u) const override;
   Color albedo() const override { return albedo_; }  // clamped base albedo
 
-  // Probability of sampling the specular lobe for this wo (exposed for tests).
+  // Pores: ns tilted by the pore field at the world position (pores.hpp); ns when poreDepth is 0.
+  Vec3 perturbShadingNormal(const Vec3& position, const Vec3& ns, const Vec3& ng) const override;
+
+  // Probability of sampling the specular lobes (both together) for this wo (exposed for tests).
   float specularProbability(const Vec3& wo) const;
 
  private:
@@ -58,8 +73,12 @@ class SkinBsdf final : public Bsdf {
 
   Color albedo_;
   float ior_;
-  GgxDistribution distribution_;
-  float diffuseNorm_;  // 1 / (pi (1 - Fbar))
+  GgxDistribution sharp_;  // alpha = roughness^2
+  GgxDistribution broad_;  // alpha = roughness2^2, weight lobeMix_
+  float lobeMix_;          // in [0, 1]; 0 skips the broad lobe everywhere (skin v1, bitwise)
+  float diffuseNorm_;      // 1 / (pi (1 - Fbar))
+  float poreScale_;
+  float poreDepth_;
 };
 
 }  // namespace lacrima

@@ -1,0 +1,64 @@
+// Procedural pores; see pores.hpp for the field and its sources.
+#include "lacrima/materials/pores.hpp"
+
+#include <cmath>
+
+#include "lacrima/geometry/sampler.hpp"
+
+namespace lacrima {
+
+namespace {
+
+constexpr uint64_t kPoreSeed = 0x706f726573ULL;  // "pores": decorrelates from other hashed streams
+
+// The pore centre of lattice cell (i, j, k), in lattice units: the cell corner plus a hashed jitter.
+Vec3 poreCentre(int64_t i, int64_t j, int64_t k) {
+  const uint64_t cell = hashCombine(hashCombine(hashCombine(kPoreSeed, uint64_t(i)), uint64_t(j)), uint64_t(k));
+  return Vec3(float(i) + uint64ToUnitFloat(hashCombine(cell, 0)), float(j) + uint64ToUnitFloat(hashCombine(cell, 1)),
+              float(k) + uint64ToUnitFloat(hashCombine(cell, 2)));
+}
+
+}  // namespace
+
+PoreHeight poreHeight(const Vec3& p, float scale, float depth) {
+  PoreHeight result;
+  if (depth <= 0.0f) return result;
+  // Lattice coordinates; double for the floor so that large world coordinates keep their cells.
+  const Vec3d q = p.cast<double>() / double(scale);
+  const int64_t ci = int64_t(std::floor(q.x())), cj = int64_t(std::floor(q.y())), ck = int64_t(std::floor(q.z()));
+  // Relative to the cell corner, so that the float differences below stay small.
+  const Vec3 local = (q - Vec3d(double(ci), double(cj), double(ck))).cast<float>();
+  constexpr float invR2 = 1.0f / (kPoreRadius * kPoreRadius);
+  float sumB = 0.0f;
+  Vec3 sumGrad = Vec3::Zero();
+  // A centre lies in its own cell and R < 1, so only the 27 surrounding cells can reach p.
+  for (int64_t di = -1; di <= 1; ++di) {
+    for (int64_t dj = -1; dj <= 1; ++dj) {
+      for (int64_t dk = -1; dk <= 1; ++dk) {
+        const Vec3 centre = poreCentre(ci + di, cj + dj, ck + dk) - Vec3(float(ci), float(cj), float(ck));
+        const Vec3 d = local - centre;
+        const float s = d.squaredNorm() * invR2;
+        if (s >= 1.0f) continue;
+        // b(s) = (1 - s)^2, db/dq = -2 (1 - s) * 2 d / R^2.
+        sumB += (1.0f - s) * (1.0f - s);
+        sumGrad += (-4.0f * (1.0f - s) * invR2) * d;
+      }
+    }
+  }
+  result.height = -depth * sumB;
+  result.gradient = (-depth / scale) * sumGrad;  // chain rule: dq/dp = 1 / scale
+  return result;
+}
+
+Vec3 perturbNormalByPores(const Vec3& p, const Vec3& ns, const Vec3& ng, float scale, float depth) {
+  if (depth <= 0.0f) return ns;
+  const Vec3 g = poreHeight(p, scale, depth).gradient;
+  Vec3 slope = g - g.dot(ns) * ns;  // tangential part: the height field lives over ns's tangent plane
+  const float slopeLength = slope.norm();
+  if (slopeLength > kMaxPoreSlope) slope *= kMaxPoreSlope / slopeLength;
+  const Vec3 tilted = (ns - slope).normalized();  // |ns - slope| >= 1: never degenerate
+  if (!tilted.allFinite() || tilted.dot(ng) < kMinPoreCosToGeometric) return ns;
+  return tilted;
+}
+
+}  // namespace lacrima

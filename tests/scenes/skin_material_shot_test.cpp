@@ -1,0 +1,77 @@
+// The skin material's keys in a shot file: the dual specular lobe and the pores (docs/shot-format.md).
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <iterator>
+
+#include "shot_test_support.hpp"
+
+namespace lacrima {
+namespace {
+
+std::string shotWithMaterials(const std::string& materials) {
+  return "{\n  \"version\": 1,\n  \"frames\": {\"start\": 1, \"end\": 1},\n  \"output\": \"out.exr\",\n"
+         "  \"render\": {\"width\": 16, \"height\": 8, \"spp\": 1},\n"
+         "  \"camera\": {\"position\": [0, 0, 3], \"lookAt\": [0, 0, 0], \"fov\": 30},\n"
+         "  \"materials\": {" + materials + "}\n}\n";
+}
+
+std::string shotWithSkin(const std::string& skinMembers) {
+  return shotWithMaterials("\"skin\": {\"type\": \"skin\"" + skinMembers + "}");
+}
+
+const SkinParams& skinOf(const Shot& shot) { return std::get<SkinParams>(shot.materials.at(0).params); }
+
+TEST(SkinMaterialShot, DefaultsAreTheSingleLobeSkinWithoutPores) {
+  const Shot shot = loadShot(test::writeShot("skin_defaults.json", shotWithSkin(R"(, "roughness": 0.3)")));
+  const SkinParams& p = skinOf(shot);
+  EXPECT_EQ(p.roughness, 0.3f);
+  EXPECT_EQ(p.lobeMix, 0.0f);
+  EXPECT_EQ(p.poreDepth, 0.0f);
+}
+
+TEST(SkinMaterialShot, ReadsTheSecondLobeAndThePores) {
+  const Shot shot = loadShot(test::writeShot(
+      "skin_dual.json",
+      shotWithSkin(R"(, "roughness": 0.3, "roughness2": 0.65, "lobeMix": 0.2, "poreScale": 0.0004, "poreDepth": 0.00003)")));
+  const SkinParams& p = skinOf(shot);
+  EXPECT_EQ(p.roughness, 0.3f);
+  EXPECT_EQ(p.roughness2, 0.65f);
+  EXPECT_EQ(p.lobeMix, 0.2f);
+  EXPECT_EQ(p.poreScale, 0.0004f);
+  EXPECT_EQ(p.poreDepth, 0.00003f);
+}
+
+TEST(SkinMaterialShot, SecondRoughnessWithoutMixIsAnError) {
+  test::expectSingleError("skin_no_mix.json", shotWithSkin(R"(, "roughness2": 0.6)"),
+                          "/materials/skin/roughness2: 'roughness2' needs 'lobeMix' (the weight of the second "
+                          "lobe, in [0, 1])");
+}
+
+TEST(SkinMaterialShot, OutOfRangeValuesNameTheirKey) {
+  test::expectSingleError("skin_bad_mix.json", shotWithSkin(R"(, "roughness2": 0.6, "lobeMix": 1.5)"),
+                          "/materials/skin/lobeMix: expected a number in [0, 1], found 1.5");
+  test::expectSingleError("skin_bad_scale.json", shotWithSkin(R"(, "poreScale": 0)"),
+                          "/materials/skin/poreScale: expected a number > 0, found 0");
+  test::expectSingleError("skin_bad_depth.json", shotWithSkin(R"(, "poreDepth": -0.001)"),
+                          "/materials/skin/poreDepth: expected a number >= 0, found -0.001");
+}
+
+// The example of the "skin" section of docs/shot-format.md must stay a valid material.
+TEST(SkinMaterialShot, DocExampleLoads) {
+  std::ifstream in(test::sourcePath("docs/shot-format.md"));
+  ASSERT_TRUE(in) << "docs/shot-format.md not found";
+  const std::string doc((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const size_t section = doc.find("### skin");
+  ASSERT_NE(section, std::string::npos);
+  const size_t begin = doc.find("```json\n", section);
+  ASSERT_NE(begin, std::string::npos);
+  const size_t end = doc.find("\n```", begin + 8);
+  const Shot shot = loadShot(test::writeShot("skin_doc.json", shotWithMaterials(doc.substr(begin + 8, end - begin - 8))));
+  const SkinParams& p = skinOf(shot);
+  EXPECT_GT(p.lobeMix, 0.0f);
+  EXPECT_GT(p.poreDepth, 0.0f);
+}
+
+}  // namespace
+}  // namespace lacrima
