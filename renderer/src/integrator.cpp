@@ -108,15 +108,19 @@ MediumStack PathIntegrator::mediaAroundCamera() const {
 // the media the path is in change. Without priorities every surface is real.
 PathIntegrator::Trace PathIntegrator::traceToRealSurface(Ray& ray, SurfaceHit& hit, MediumStack& media,
                                                          PathCounters& counters) const {
+  float skippedDistance = 0.0f;  // so that hit.distance (the depth AOV) counts from the real origin
   for (int skipped = 0;; ++skipped) {
     ++counters.rays;
     if (!scene_.intersect(ray, hit)) return Trace::Miss;
+    hit.distance += skippedDistance;
     if (!nested_ || hit.lightIndex >= 0 || !isDielectric(hit.materialId)) return Trace::Hit;
     const bool entering = ray.direction.dot(hit.geometricNormal) < 0.0f;
     if (!classifyInterface(media, hit.materialId, entering).isFalse) return Trace::Hit;
     if (skipped == kMaxFalseInterfaces) return Trace::Lost;
     crossInterface(media, hit.materialId, entering);
-    ray.origin = offsetOrigin(hit.position, hit.geometricNormal, ray.direction);
+    const Vec3 next = offsetOrigin(hit.position, hit.geometricNormal, ray.direction);
+    skippedDistance += (next - ray.origin).dot(ray.direction);
+    ray.origin = next;
   }
 }
 

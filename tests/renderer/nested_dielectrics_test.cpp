@@ -215,6 +215,9 @@ TEST(NestedDielectrics, TheDropsPartInsideTheCorneaIsNotRendered) {
   ASSERT_GT(scale, 0.1);
   EXPECT_LT(meanAbsoluteDifference(hidden, without), 1e-3 * scale);
   EXPECT_GT(meanAbsoluteDifference(plain, without), 0.05 * scale);
+  // The depth AOV sees the emitter, 3 m away, through the skipped surfaces.
+  for (size_t p = 0; p < hidden.depth.size(); ++p) ASSERT_NEAR(hidden.depth[p], without.depth[p], 1e-4f) << "pixel " << p;
+  EXPECT_NEAR(hidden.depth[0], 3.0f, 0.01f);
 }
 
 // From outside, straight at the drop's top: the cap reflects F(0) of tear against air, then the
