@@ -96,6 +96,22 @@ TEST(MediumStack, EnteringBeyondTheCapacityIsIgnoredAndLeavingAnUnknownMediumIsH
   EXPECT_EQ(media.size(), MediumStack::kCapacity);
 }
 
+// ---- the material side --------------------------------------------------------------------------
+
+TEST(DielectricMedium, AnInterfaceAgainstAMediumUsesTheRatioOfIndices) {
+  const MaterialParams rough = RoughDielectricParams{kCorneaIor, 0.3f, Color::Ones(), 2};
+  const MaterialParams paired = againstMedium(rough, kTearIor);
+  ASSERT_TRUE(std::holds_alternative<RoughDielectricParams>(paired));
+  EXPECT_FLOAT_EQ(std::get<RoughDielectricParams>(paired).ior, kCorneaIor / kTearIor);
+  EXPECT_EQ(std::get<RoughDielectricParams>(paired).roughness, 0.3f);
+  EXPECT_EQ(dielectricMedium(rough)->priority, 2);
+  EXPECT_FALSE(dielectricMedium(DiffuseParams{}).has_value());
+  // Index matched: the rough model's half vector is undefined, the interface is a smooth pass-through.
+  const MaterialParams matched = againstMedium(rough, kCorneaIor);
+  ASSERT_TRUE(std::holds_alternative<SmoothDielectricParams>(matched));
+  EXPECT_EQ(std::get<SmoothDielectricParams>(matched).ior, 1.0f);
+}
+
 // ---- scenes -----------------------------------------------------------------------------------
 
 // A diffuse floor lit by a rectangle light, seen through a glass ball (radius 0.6) that holds an
