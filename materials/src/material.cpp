@@ -28,4 +28,26 @@ std::unique_ptr<Bsdf> makeBsdf(const MaterialParams& params) {
       params);
 }
 
+std::optional<DielectricMedium> dielectricMedium(const MaterialParams& params) {
+  if (const auto* smooth = std::get_if<SmoothDielectricParams>(&params)) return DielectricMedium{smooth->ior, smooth->priority};
+  if (const auto* rough = std::get_if<RoughDielectricParams>(&params)) return DielectricMedium{rough->ior, rough->priority};
+  return std::nullopt;
+}
+
+MaterialParams againstMedium(const MaterialParams& params, float outsideIor) {
+  if (const auto* smooth = std::get_if<SmoothDielectricParams>(&params)) {
+    SmoothDielectricParams p = *smooth;
+    p.ior = smooth->ior / outsideIor;
+    return p;
+  }
+  if (const auto* rough = std::get_if<RoughDielectricParams>(&params)) {
+    const float ior = rough->ior / outsideIor;
+    if (ior == 1.0f) return SmoothDielectricParams{ior, rough->tint, rough->priority};
+    RoughDielectricParams p = *rough;
+    p.ior = ior;
+    return p;
+  }
+  return params;
+}
+
 }  // namespace lacrima

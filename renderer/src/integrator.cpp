@@ -1,6 +1,8 @@
 #include "integrator.hpp"
 
+#include <algorithm>
 #include <limits>
+#include <vector>
 
 namespace lacrima {
 
@@ -22,6 +24,10 @@ Vec3 offsetOrigin(const Vec3& position, const Vec3& geometricNormal, const Vec3&
 constexpr int kRussianRouletteDepth = 3;
 // A shadow ray gives up (counts as blocked) after this many dielectric crossings.
 constexpr int kMaxShadowCrossings = 16;
+// A path is dropped (absorbed) after skipping this many false interfaces in one segment.
+constexpr int kMaxFalseInterfaces = 64;
+// The camera-media probe looks at no more than this many surfaces.
+constexpr int kMaxProbeSurfaces = 256;
 
 }  // namespace
 
@@ -33,6 +39,8 @@ struct PathIntegrator::Vertex {
   Vec3 position;
   Vec3 geometricNormal;  // oriented as the shading frame's side (see orientNormals)
   ShadingFrame frame;
+  uint32_t materialId;
+  bool entering;         // arrived on the geometric normal's side (into a dielectric's medium)
   Vec3 wo;               // world, towards the previous vertex
   Vec3 woLocal;
   const Bsdf* bsdf;
@@ -43,9 +51,81 @@ PathIntegrator::PathIntegrator(const Frame& frame, const EmbreeScene& scene, con
     : frame_(frame), scene_(scene), lights_(lights), maxDepth_(frame.settings.maxDepth) {
   bsdfs_.reserve(frame.materials.size());
   for (const Material& material : frame.materials) bsdfs_.push_back(makeBsdf(material.params));
+  media_.reserve(frame.materials.size());
+  for (const Material& material : frame.materials) {
+    media_.push_back(dielectricMedium(material.params));
+    if (media_.back() && media_.back()->priority > 0) nested_ = true;
+  }
+  if (!nested_) return;
+  // Every real interface a path can meet, built once: dielectric `hit` of priority >= 1 against
+  // each medium that can surround it.
+  const size_t count = frame.materials.size();
+  pairBsdfs_.resize(count * count);
+  for (size_t hit = 0; hit < count; ++hit) {
+    if (!media_[hit] || media_[hit]->priority == 0) continue;
+    for (size_t other = 0; other < count; ++other)
+      if (media_[other]) pairBsdfs_[hit * count + other] = makeBsdf(againstMedium(frame.materials[hit].params, media_[other]->ior));
+  }
+  cameraMedia_ = mediaAroundCamera();
 }
 
-Color PathIntegrator::sampleDirectLight(const Vertex& v, PixelSampler& sampler, PathCounters& counters) const {
+InterfaceCrossing PathIntegrator::classifyInterface(const MediumStack& media, uint32_t materialId, bool entering) const {
+  return media.classify(MediumEntry{materialId, media_[materialId]->priority}, entering);
+}
+
+const Bsdf* PathIntegrator::interfaceBsdf(uint32_t materialId, int otherMaterial) const {
+  if (otherMaterial < 0) return bsdfs_[materialId].get();
+  return pairBsdfs_[materialId * bsdfs_.size() + size_t(otherMaterial)].get();
+}
+
+void PathIntegrator::crossInterface(MediumStack& media, uint32_t materialId, bool entering) const {
+  if (nested_ && isDielectric(materialId)) media.cross(MediumEntry{materialId, media_[materialId]->priority}, entering);
+}
+
+// The media the camera sits in: a probe ray from the camera position at shutter open, in a fixed
+// direction off the axes (so it rarely grazes mesh edges). A medium whose surface the probe
+// meets first from inside encloses the camera (closed surfaces assumed). A thin lens's aperture
+// is assumed to lie in the same media as its centre.
+MediumStack PathIntegrator::mediaAroundCamera() const {
+  const Vec3 direction = Vec3(0.5773f, 0.6139f, 0.5384f).normalized();
+  Ray ray{frame_.camera.cameraToWorld.translation(), direction, 0.0f};
+  std::vector<uint32_t> seen, enclosing;  // enclosing: innermost first
+  SurfaceHit hit;
+  for (int i = 0; i < kMaxProbeSurfaces && scene_.intersect(ray, hit); ++i) {
+    const bool firstMeeting = std::find(seen.begin(), seen.end(), hit.materialId) == seen.end();
+    if (hit.lightIndex < 0 && isDielectric(hit.materialId) && firstMeeting) {
+      seen.push_back(hit.materialId);
+      if (direction.dot(hit.geometricNormal) > 0.0f) enclosing.push_back(hit.materialId);
+    }
+    ray.origin = offsetOrigin(hit.position, hit.geometricNormal, direction);
+  }
+  MediumStack media;
+  for (auto id = enclosing.rbegin(); id != enclosing.rend(); ++id) crossInterface(media, *id, true);
+  return media;
+}
+
+// Schmidt & Budge 2002 (medium_stack.hpp): false interfaces are crossed without scattering; only
+// the media the path is in change. Without priorities every surface is real.
+PathIntegrator::Trace PathIntegrator::traceToRealSurface(Ray& ray, SurfaceHit& hit, MediumStack& media,
+                                                         PathCounters& counters) const {
+  float skippedDistance = 0.0f;  // so that hit.distance (the depth AOV) counts from the real origin
+  for (int skipped = 0;; ++skipped) {
+    ++counters.rays;
+    if (!scene_.intersect(ray, hit)) return Trace::Miss;
+    hit.distance += skippedDistance;
+    if (!nested_ || hit.lightIndex >= 0 || !isDielectric(hit.materialId)) return Trace::Hit;
+    const bool entering = ray.direction.dot(hit.geometricNormal) < 0.0f;
+    if (!classifyInterface(media, hit.materialId, entering).isFalse) return Trace::Hit;
+    if (skipped == kMaxFalseInterfaces) return Trace::Lost;
+    crossInterface(media, hit.materialId, entering);
+    const Vec3 next = offsetOrigin(hit.position, hit.geometricNormal, ray.direction);
+    skippedDistance += (next - ray.origin).dot(ray.direction);
+    ray.origin = next;
+  }
+}
+
+Color PathIntegrator::sampleDirectLight(const Vertex& v, const MediumStack& media, PixelSampler& sampler,
+                                        PathCounters& counters) const {
   const float uSelect = sampler.get1D();
   const Vec2 u = sampler.get2D();
   if (v.bsdf->isPureSpecular() || lights_.empty()) return Color::Zero();
@@ -62,9 +142,12 @@ Color PathIntegrator::sampleDirectLight(const Vertex& v, PixelSampler& sampler, 
   if ((f <= 0.0f).all()) return Color::Zero();
   const Vec3 origin = offsetOrigin(v.position, v.geometricNormal, light.direction);
   const float maxDistance = std::isinf(light.distance) ? light.distance : light.distance * (1.0f - 1e-4f);
+  // A shadow ray through a (rough) dielectric starts in the media on the far side.
+  MediumStack shadowMedia = media;
+  if (!geometricReflect) crossInterface(shadowMedia, v.materialId, v.entering);
   bool crossedDielectric = false;
-  const Color transmittance =
-      shadowTransmittance(Ray{origin, light.direction, v.time}, maxDistance, crossedDielectric, counters);
+  const Color transmittance = shadowTransmittance(Ray{origin, light.direction, v.time}, maxDistance, shadowMedia,
+                                                  crossedDielectric, counters);
   if ((transmittance <= 0.0f).all()) return Color::Zero();
   // Through a dielectric, only this strategy counts the path (the BSDF strategy drops it, see
   // radiance()), so it takes the full weight.
@@ -79,8 +162,10 @@ Color PathIntegrator::sampleDirectLight(const Vertex& v, PixelSampler& sampler, 
 // The straight line ignores refraction: the shadow of a drop is a soft, slightly dimmed shadow
 // instead of a focused caustic (the bias, documented in docs/shot-format.md). Caustics need
 // manifold next-event estimation (a later issue).
-Color PathIntegrator::shadowTransmittance(const Ray& shadowRay, float maxDistance, bool& crossedDielectric,
-                                          PathCounters& counters) const {
+// Nested dielectrics: false interfaces cost nothing (the BSDF path skips them too, so it stays
+// the other MIS strategy); real ones transmit with the pair of indices present there.
+Color PathIntegrator::shadowTransmittance(const Ray& shadowRay, float maxDistance, MediumStack media,
+                                          bool& crossedDielectric, PathCounters& counters) const {
   const Vec3& direction = shadowRay.direction;
   ++counters.rays;
   if (!scene_.occluded(shadowRay.origin, direction, maxDistance, shadowRay.time)) return Color::Ones();
@@ -93,11 +178,17 @@ Color PathIntegrator::shadowTransmittance(const Ray& shadowRay, float maxDistanc
     ++counters.rays;
     if (!scene_.intersect(Ray{position, direction, shadowRay.time}, hit) || hit.distance >= remaining) return transmittance;
     if (hit.lightIndex >= 0) return Color::Zero();
-    Vec3 ns = hit.shadingNormal.dot(hit.geometricNormal) < 0.0f ? -hit.shadingNormal : hit.shadingNormal;
-    const Vec3 woLocal = ShadingFrame::fromNormal(ns).toLocal(-direction);
-    transmittance *= bsdfs_[hit.materialId]->straightTransmittance(woLocal);
-    if ((transmittance <= 0.0f).all()) return Color::Zero();
-    crossedDielectric = true;
+    const bool entering = direction.dot(hit.geometricNormal) < 0.0f;
+    const InterfaceCrossing surface =
+        nested_ && isDielectric(hit.materialId) ? classifyInterface(media, hit.materialId, entering) : InterfaceCrossing{};
+    if (!surface.isFalse) {
+      Vec3 ns = hit.shadingNormal.dot(hit.geometricNormal) < 0.0f ? -hit.shadingNormal : hit.shadingNormal;
+      const Vec3 woLocal = ShadingFrame::fromNormal(ns).toLocal(-direction);
+      transmittance *= interfaceBsdf(hit.materialId, surface.otherMaterial)->straightTransmittance(woLocal);
+      if ((transmittance <= 0.0f).all()) return Color::Zero();
+      crossedDielectric = true;
+    }
+    crossInterface(media, hit.materialId, entering);
     const Vec3 next = offsetOrigin(hit.position, hit.geometricNormal, direction);
     remaining -= (next - position).dot(direction);
     position = next;
@@ -119,11 +210,13 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
   float previousBsdfPdf = 0.0f;
   Vec3 previousPosition = cameraRay.origin;
   Ray ray = cameraRay;
+  MediumStack media = cameraMedia_;  // the dielectric media the path is in (nested dielectrics only)
 
   for (int depth = 0;; ++depth) {
     SurfaceHit hit;
-    ++counters.rays;
-    if (!scene_.intersect(ray, hit)) {
+    const Trace trace = traceToRealSurface(ray, hit, media, counters);
+    if (trace == Trace::Lost) break;
+    if (trace == Trace::Miss) {
       // A uniform background is not light-sampled, so only the environment map can be counted twice.
       if (lights_.environmentIsSampled() && countedByTransparentShadows(chainAfterNonSpecular, crossings)) break;
       const Color background = lights_.background(ray.direction);
@@ -143,14 +236,18 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
 
     const Material& material = frame_.materials[hit.materialId];
     Vertex v;
-    v.bsdf = bsdfs_[hit.materialId].get();
     v.position = hit.position;
     v.wo = -ray.direction;
     v.time = ray.time;
+    v.materialId = hit.materialId;
     Vec3 ng = hit.geometricNormal;
     Vec3 ns = hit.shadingNormal;
     if (ns.dot(ng) < 0.0f) ns = -ns;  // interpolated normals follow the winding's side
     const bool frontFacing = v.wo.dot(ng) > 0.0f;
+    v.entering = frontFacing;
+    v.bsdf = bsdfs_[hit.materialId].get();
+    if (nested_ && isDielectric(hit.materialId))
+      v.bsdf = interfaceBsdf(hit.materialId, classifyInterface(media, hit.materialId, frontFacing).otherMaterial);
     if (!v.bsdf->isTransmissive()) {
       // Opaque surfaces are two-sided: shade the side the ray arrives from.
       if (!frontFacing) { ng = -ng; ns = -ns; }
@@ -169,7 +266,7 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
       result += throughput * material.emission;
     if (depth >= maxDepth_) break;
 
-    result += throughput * sampleDirectLight(v, sampler, counters);
+    result += throughput * sampleDirectLight(v, media, sampler, counters);
 
     const float uLobe = sampler.get1D();
     const std::optional<BsdfSample> bs = v.bsdf->sample(v.woLocal, uLobe, sampler.get2D());
@@ -178,7 +275,10 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
     const bool geometricReflect = wi.dot(ng) * v.wo.dot(ng) > 0.0f;
     if (geometricReflect == bs->transmitted) break;  // the shading normal sent it through the surface
     throughput *= bs->f * (absCosTheta(bs->wi) / bs->pdf);
-    if (bs->transmitted) etaScale *= bs->eta * bs->eta;
+    if (bs->transmitted) {
+      etaScale *= bs->eta * bs->eta;
+      crossInterface(media, hit.materialId, frontFacing);
+    }
     if (!bs->specular) {
       chainAfterNonSpecular = true;
       crossings = 0;

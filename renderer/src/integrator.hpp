@@ -1,15 +1,17 @@
 #pragma once
 // Unidirectional path tracer with next-event estimation and multiple importance sampling
-// (Veach 1997, ch. 9, power heuristic), Russian roulette, and shading-normal handling that does
-// not leak light through surfaces.
+// (Veach 1997, ch. 9, power heuristic), Russian roulette, shading-normal handling that does
+// not leak light through surfaces, and nested dielectrics with priorities (medium_stack.hpp).
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "embree_scene.hpp"
 #include "light_sampler.hpp"
 #include "lacrima/geometry/sampler.hpp"
 #include "lacrima/materials/bsdf.hpp"
+#include "lacrima/renderer/medium_stack.hpp"
 
 namespace lacrima {
 
@@ -34,17 +36,40 @@ class PathIntegrator {
  private:
   struct Vertex;  // the shading point of the current bounce (integrator.cpp)
 
-  Color sampleDirectLight(const Vertex& vertex, PixelSampler& sampler, PathCounters& counters) const;
-  // What reaches the shading point along shadowRay within maxDistance (see integrator.cpp).
-  Color shadowTransmittance(const Ray& shadowRay, float maxDistance, bool& crossedDielectric,
+  enum class Trace { Hit, Miss, Lost };
+
+  Color sampleDirectLight(const Vertex& vertex, const MediumStack& media, PixelSampler& sampler,
+                          PathCounters& counters) const;
+  // What reaches the shading point along shadowRay within maxDistance (see integrator.cpp);
+  // media: the media the shadow ray starts in.
+  Color shadowTransmittance(const Ray& shadowRay, float maxDistance, MediumStack media, bool& crossedDielectric,
                             PathCounters& counters) const;
   bool countedByTransparentShadows(bool chainAfterNonSpecular, int crossings) const;
+
+  // Nested dielectrics: the first surface along ray that is not a false interface (ray's origin
+  // moves past the skipped ones, media follows them); Lost when too many were skipped.
+  Trace traceToRealSurface(Ray& ray, SurfaceHit& hit, MediumStack& media, PathCounters& counters) const;
+  // A surface of dielectric materialId; entering when the ray arrives on its normal's side.
+  InterfaceCrossing classifyInterface(const MediumStack& media, uint32_t materialId, bool entering) const;
+  // The BSDF of a real interface of materialId against otherMaterial (-1 = air).
+  const Bsdf* interfaceBsdf(uint32_t materialId, int otherMaterial) const;
+  void crossInterface(MediumStack& media, uint32_t materialId, bool entering) const;
+  // The media around the camera, found by a probe ray (see integrator.cpp).
+  MediumStack mediaAroundCamera() const;
+  bool isDielectric(uint32_t materialId) const { return media_[materialId].has_value(); }
 
   const Frame& frame_;
   const EmbreeScene& scene_;
   const LightSampler& lights_;
   std::vector<std::unique_ptr<Bsdf>> bsdfs_;  // one per material
   int maxDepth_;
+  // Nested dielectrics, active only when some dielectric has a priority >= 1 (otherwise every
+  // path renders exactly as without them).
+  bool nested_ = false;
+  std::vector<std::optional<DielectricMedium>> media_;  // per material; none for opaque ones
+  // pairBsdfs_[hit * materialCount + other]: dielectric `hit` (priority >= 1) against medium `other`.
+  std::vector<std::unique_ptr<Bsdf>> pairBsdfs_;
+  MediumStack cameraMedia_;
 };
 
 }  // namespace lacrima

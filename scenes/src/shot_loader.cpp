@@ -301,6 +301,7 @@ class ShotReader {
     const auto type = readType(v, pointer, kMaterialTypes, "material");
     if (!type) return;
     const Range unit = Range::closed(0, 1), ior = Range::openClosed(1, 3);
+    const Range priority = Range::closed(0, kMaxDielectricPriority);  // nested dielectrics (docs/shot-format.md)
     if (*type == "diffuse") {
       ObjectReader o(c_, v, pointer, {"type", "albedo", "emission"});
       DiffuseParams p;
@@ -323,18 +324,20 @@ class ShotReader {
       m.params = p;
       if (auto x = o.color("emission", Range::atLeast(0))) m.emission = *x;
     } else if (*type == "water") {
-      ObjectReader o(c_, v, pointer, {"type", "ior", "tint", "emission"});
+      ObjectReader o(c_, v, pointer, {"type", "ior", "tint", "priority", "emission"});
       SmoothDielectricParams p;
       if (auto x = o.number("ior", ior)) p.ior = float(*x);
       if (auto x = o.color("tint", unit)) p.tint = *x;
+      if (auto x = o.integer("priority", priority)) p.priority = int(*x);
       m.params = p;
       if (auto x = o.color("emission", Range::atLeast(0))) m.emission = *x;
     } else {  // rough_dielectric
-      ObjectReader o(c_, v, pointer, {"type", "ior", "roughness", "tint", "emission"});
+      ObjectReader o(c_, v, pointer, {"type", "ior", "roughness", "tint", "priority", "emission"});
       RoughDielectricParams p;
       if (auto x = o.number("ior", ior)) p.ior = float(*x);
       if (auto x = o.number("roughness", Range::openClosed(0, 1))) p.roughness = float(*x);
       if (auto x = o.color("tint", unit)) p.tint = *x;
+      if (auto x = o.integer("priority", priority)) p.priority = int(*x);
       m.params = p;
       if (auto x = o.color("emission", Range::atLeast(0))) m.emission = *x;
     }

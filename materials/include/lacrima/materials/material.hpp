@@ -2,6 +2,7 @@
 // Material descriptions (plain data, what a shot file or glTF asset says) and the factory that
 // turns them into BSDFs. Parameters are constant per material in this version (no textures).
 #include <memory>
+#include <optional>
 #include <string>
 #include <variant>
 
@@ -31,8 +32,9 @@ struct SkinParams {
 
 // Smooth dielectric interface (water, tears): Fresnel reflection + refraction, TIR.
 struct SmoothDielectricParams {
-  float ior = kTearIor;  // inside / outside
+  float ior = kTearIor;  // the medium's index (relative to air; the renderer divides by the surrounding medium's)
   Color tint = Color(1.0f, 1.0f, 1.0f);  // multiplies transmission (1 = clear)
+  int priority = 0;  // nested dielectrics (DielectricMedium below); 0 = the outside is air
 };
 
 // Rough dielectric: GGX microfacets, visible-normal sampling (Walter 2007, Heitz 2018).
@@ -40,6 +42,7 @@ struct RoughDielectricParams {
   float ior = kTearIor;
   float roughness = 0.1f;  // GGX alpha = roughness^2
   Color tint = Color(1.0f, 1.0f, 1.0f);
+  int priority = 0;  // as SmoothDielectricParams::priority
 };
 
 using MaterialParams = std::variant<DiffuseParams, SkinParams, SmoothDielectricParams, RoughDielectricParams>;
@@ -51,5 +54,26 @@ struct Material {
 };
 
 std::unique_ptr<Bsdf> makeBsdf(const MaterialParams& params);
+
+// The medium a dielectric material encloses, for nested dielectrics with priorities (Schmidt &
+// Budge 2002, "Simple Nested Dielectrics in Ray Traced Images", JGT 7(2)): where volumes
+// overlap, the one with the higher priority fills the overlap and the surfaces of the others
+// there are not interfaces at all. Priority 0 (the default) keeps the plain model: the
+// material's `ior` is relative to air. See renderer/include/lacrima/renderer/medium_stack.hpp.
+inline constexpr int kMaxDielectricPriority = 1000;  // priorities are integers in [0, 1000]
+
+struct DielectricMedium {
+  float ior = 1.0f;  // absolute refractive index of the medium
+  int priority = 0;
+};
+
+// The medium of a dielectric material; nothing for opaque materials.
+std::optional<DielectricMedium> dielectricMedium(const MaterialParams& params);
+
+// The same dielectric with its interface seen against a surrounding medium of absolute index
+// outsideIor instead of air: ior becomes ior / outsideIor, everything else is kept. An
+// index-matched rough interface (relative ior 1) becomes a smooth one: microfacets cannot bend
+// light there and the rough model's half vector is undefined (pbrt-v4 DielectricBxDF does the same).
+MaterialParams againstMedium(const MaterialParams& params, float outsideIor);
 
 }  // namespace lacrima
