@@ -269,6 +269,33 @@ TEST(LiquidTearShot, DetachedDropsAreMovingSpheresUnderAShutter) {
   EXPECT_EQ(withDrops, 1);
 }
 
+TEST(LiquidTearShot, SlidingBeadsAreMotionBlurredUnderAShutter) {
+  const std::string shutter = R"(, "shutter": {"open": -0.25, "close": 0.25})";
+  const Shot shot = loadTearShot("liquid_bead_blur.json", kTear, shutter);
+  int blurred = 0;
+  for (int f = 25; f <= kFrames && blurred == 0; ++f) {
+    const TearLiquidState state = liquidTearStateAt(shot, shot.liquidTears[0], f - 0.25);
+    if (state.beads.empty() || state.beads[0].phase != BeadPhase::Sliding) continue;
+    const auto beads = beadsOf(buildFrame(shot, f));
+    ASSERT_FALSE(beads.empty());
+    const MeshInstance& bead = *beads[0];
+    ASSERT_EQ(bead.positionsAtClose.size(), bead.mesh.positions.size()) << f;
+    Vec3 open = Vec3::Zero(), close = Vec3::Zero();
+    for (size_t i = 0; i < bead.mesh.positions.size(); ++i) {
+      open += bead.mesh.positions[i];
+      close += bead.positionsAtClose[i];
+    }
+    EXPECT_LT(close.y(), open.y()) << "frame " << f << ": the bead runs down during the shutter";
+    ++blurred;
+  }
+  EXPECT_EQ(blurred, 1);
+  // A bead at rest on a still face does not move within the shutter.
+  const auto resting = beadsOf(buildFrame(shot, 30));
+  ASSERT_FALSE(resting.empty());
+  EXPECT_EQ(liquidTearStateAt(shot, shot.liquidTears[0], 29.75).beads[0].phase, BeadPhase::Pinned);
+  EXPECT_TRUE(resting[0]->positionsAtClose.empty());
+}
+
 TEST(LiquidTearShot, VolumeBudgetIsBalanced) {
   const Shot shot = loadTearShot("liquid_budget.json");
   for (double t : {0.5, 1.2, 2.0, 3.0}) {
