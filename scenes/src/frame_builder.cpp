@@ -1,6 +1,6 @@
 // buildFrame: a checked Shot at one frame number -> the renderer's Frame, through the geometry
 // stage: assets posed by their rig, keyframes and performance tracks, details displacing the
-// posed skin, shapes (keyed or attached to the skin), dripping tears and shedding tears (on the
+// posed skin, shapes (keyed or attached to the skin), dripping, shedding and liquid tears (on the
 // posed, detailed skin), lights and camera, each at shutter open and, when the shot has a shutter
 // and it moves, at shutter close (motion blur). Nothing is read from disk here.
 #include <fmt/format.h>
@@ -13,6 +13,7 @@
 #include "lacrima/geometry/shapes.hpp"
 #include "lacrima/geometry/shedding_tear.hpp"
 #include "lacrima/scenes/shot.hpp"
+#include "liquid_tear_frame.hpp"
 #include "shot_geometry.hpp"
 #include "surface_attachment.hpp"
 
@@ -252,6 +253,9 @@ Frame buildFrame(const Shot& shot, int frameNumber) {
   for (const ShotTear& tear : shot.tears) addTear(shot, tear, frameNumber, shutter, frame);
   for (const ShotSheddingTear& tear : shot.sheddingTears)
     addSheddingTear(shot, tear, frameNumber, shutter, open, closePtr, frame);
+  for (const ShotLiquidTear& tear : shot.liquidTears)
+    shotfile::addLiquidTear(shot, tear, shutter.open, shutter.close, open[tear.asset],
+                            closePtr ? &(*closePtr)[tear.asset] : nullptr, frame);
 
   frame.lights = shot.lights;
   for (size_t i = 0; i < frame.lights.size() && i < shot.lightCenterCurves.size(); ++i)

@@ -6,6 +6,7 @@
 #include <cerrno>
 #include <cstring>
 #include <fstream>
+#include <numbers>
 #include <sstream>
 
 #include "frame_pattern.hpp"
@@ -19,6 +20,7 @@
 #include "asset_pose.hpp"
 #include "detail_refinement.hpp"
 #include "suggest.hpp"
+#include "liquid_tear_resolve.hpp"
 #include "shedding_tear_resolve.hpp"
 #include "surface_attachment.hpp"
 
@@ -36,7 +38,7 @@ const std::vector<std::string> kRootKeys = {"version",   "frames", "output",    
 const std::vector<std::string> kMaterialTypes = {"diffuse", "skin", "water", "rough_dielectric"};
 const std::vector<std::string> kLightTypes = {"rectangle", "sphere"};
 const std::vector<std::string> kShapeTypes = {"sphere", "ellipsoid", "rectangle"};
-const std::vector<std::string> kTearTypes = {"dripping", "shedding"};
+const std::vector<std::string> kTearTypes = {"dripping", "shedding", "liquid"};
 const std::vector<std::string> kDetailPatterns = {"forehead", "eyeCorner", "cheek", "frown", "dimple", "eyePouch"};
 const std::vector<std::string> kSubdivisionSchemes = {"loop", "linear"};
 // Each level quadruples the region's triangles: 4 levels turn one triangle into 256.
@@ -930,6 +932,10 @@ class ShotReader {
       readSheddingTear(v, pointer);
       return;
     }
+    if (*type == "liquid") {
+      readLiquidTear(v, pointer);
+      return;
+    }
     ObjectReader o(c_, v, pointer,
                    {"type", "asset", "part", "start", "startFrame", "alpha", "beta", "lambda", "headAngle", "minTime",
                     "gravity", "material", "rings", "segments"});
@@ -1008,6 +1014,79 @@ class ShotReader {
     if (auto x = o.unsignedInteger("seed")) p.seed = *x;
     readMaterialMember(o, tear.material, tear.materialId);
     if (c_.errorCount() == before && asset) shot_.sheddingTears.push_back(tear);
+  }
+
+  // Issue 5: tear fluid welling at a skin point and running down its flow path (ShotLiquidTear).
+  // Volumes in microlitres, angles in degrees, welling times in frames, the rest in SI units.
+  void readLiquidTear(const Json& v, const std::string& pointer) {
+    ObjectReader o(c_, v, pointer,
+                   {"type", "asset", "part", "source", "material", "gravity", "maxLength", "rate", "wellStart",
+                    "wellEnd", "overflowVolume", "spillVolume", "contactAngles", "filmThickness", "dryingTime",
+                    "hangingContactRadius", "viscosity"});
+    if (!o.ok()) return;
+    const size_t before = c_.errorCount();
+    ShotLiquidTear tear;
+    tear.pointer = pointer;
+    const auto asset = readAssetPart(o, tear.part);
+    if (asset) tear.asset = *asset;
+    if (asset) readAnchor(o, "source", *asset, tear.part, tear.source);
+    if (auto x = o.vec3("gravity")) {
+      if (*x == Vec3::Zero())
+        o.error("gravity", "the gravity direction must not be zero");
+      else
+        tear.gravity = *x;
+    }
+    TearLiquidParams& p = tear.params;
+    WellingSource& source = p.source;
+    if (auto x = o.number("maxLength", Range::above(0))) tear.maxLength = float(*x);
+    if (auto x = o.number("rate", Range::atLeast(0))) source.rate = *x * kMicrolitre;
+    readWellingTimes(o, tear);
+    if (auto x = o.number("overflowVolume", Range::above(0))) source.overflowVolume = *x * kMicrolitre;
+    if (auto x = o.number("spillVolume", Range::above(0))) {
+      if (*x * kMicrolitre > source.overflowVolume)
+        o.error("spillVolume", fmt::format("the spill volume ({} uL) must not exceed the overflow volume ({} uL)", *x,
+                                           source.overflowVolume / kMicrolitre));
+      else
+        source.spillVolume = *x * kMicrolitre;
+    }
+    readContactAngles(o, p.contactAngles);
+    if (auto x = o.number("filmThickness", Range::above(0))) p.filmThickness = *x;
+    if (auto x = o.number("dryingTime", Range::above(0))) p.filmDryingTime = *x;
+    if (auto x = o.number("hangingContactRadius", Range::atLeast(0))) p.hangingContactRadius = *x;
+    if (auto x = o.number("viscosity", Range::above(0))) p.viscosity = *x;
+    readMaterialMember(o, tear.material, tear.materialId);
+    if (c_.errorCount() == before && asset) shot_.liquidTears.push_back(tear);
+  }
+
+  // "wellStart" / "wellEnd": frames (default: from the shot's first frame, for ever). The
+  // simulation starts (t = 0) at the earlier of wellStart and the shot's first frame; the welling
+  // times are stored in seconds since then.
+  void readWellingTimes(ObjectReader& o, ShotLiquidTear& tear) {
+    const auto start = o.number("wellStart", Range::any());
+    const auto end = o.number("wellEnd", Range::any());
+    const double first = double(shot_.frameStart);
+    tear.simulationStartFrame = start ? std::min(*start, first) : first;
+    WellingSource& source = tear.params.source;
+    source.start = ((start ? *start : first) - tear.simulationStartFrame) / shot_.fps;
+    if (end) source.end = (*end - tear.simulationStartFrame) / shot_.fps;
+    if (end && *end < (start ? *start : first))
+      o.error("wellEnd", fmt::format("welling must end at or after it starts: wellEnd {} < {} {}", *end,
+                                     start ? "wellStart" : "the shot's first frame", start ? *start : first));
+  }
+
+  // "contactAngles": [advancing, receding] in degrees, 0 < receding <= advancing < 180.
+  void readContactAngles(ObjectReader& o, ContactAngleHysteresis& angles) {
+    const Json* v = o.find("contactAngles");
+    if (!v) return;
+    const auto x = readVec2(c_, *v, o.at("contactAngles"), Range::open(0, 180), "[advancing, receding]");
+    if (!x) return;
+    if (x->y() > x->x()) {
+      o.error("contactAngles", fmt::format("the receding angle ({} degrees) must not exceed the advancing angle ({} "
+                                           "degrees)", x->y(), x->x()));
+      return;
+    }
+    angles.advancing = double(x->x()) * std::numbers::pi / 180.0;
+    angles.receding = double(x->y()) * std::numbers::pi / 180.0;
   }
 
   // One basic pattern: {"pattern": name, "alpha", "beta", "gamma"} (the object itself for a
@@ -1176,6 +1255,8 @@ Shot loadShot(const std::filesystem::path& path) {
   resolveTearsAndDetails(shot);
   // After the details' surface points, on the assets as they are now (possibly refined).
   for (const SheddingTearProblem& problem : resolveSheddingTears(shot))
+    checker.error(problem.pointer, Anchor::Value, problem.message);
+  for (const LiquidTearProblem& problem : resolveLiquidTears(shot))
     checker.error(problem.pointer, Anchor::Value, problem.message);
   if (checker.errorCount() > 0) throw ShotError(checker.diagnostics());
   return shot;

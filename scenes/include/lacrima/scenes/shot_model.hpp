@@ -18,6 +18,8 @@
 #include "lacrima/geometry/math.hpp"
 #include "lacrima/geometry/region_refinement.hpp"
 #include "lacrima/geometry/shedding_tear.hpp"
+#include "lacrima/geometry/surface_flow.hpp"
+#include "lacrima/geometry/tear_liquid.hpp"
 #include "lacrima/geometry/surface_region.hpp"
 #include "lacrima/materials/material.hpp"
 #include "lacrima/renderer/environment.hpp"
@@ -221,6 +223,33 @@ struct ShotSheddingTear {
   double secondsAt(double frame, double fps) const { return (frame - startFrame) / fps; }
 };
 
+// A liquid tear (issue 5; docs/shot-format.md "Liquid tears"): tear fluid welling at a skin point
+// and running down the flow path from it as beads that stick, slide, leave a drying film, hang and
+// drip (TearLiquidSimulation, tear_liquid.hpp). The path is traced once at load, on a smoothed copy
+// of the part posed at the shot's first frame, and kept in surface coordinates, so its beads ride
+// the posed skin of every frame. The liquid state at a frame is simulated from simulationStartFrame
+// (t = 0: the shot's first frame, or the welling start when that is earlier, so a shot can begin
+// mid-cry) to t = (frame - simulationStartFrame) / fps seconds: a pure function of the frame.
+struct ShotLiquidTear {
+  size_t asset = 0;              // index into Shot::assets
+  std::string part;              // the part the source lies on and the path runs over
+  ShotSurfaceAnchor source;      // as written
+  Vec3 gravity = Vec3(0, -1, 0);  // non-zero; only its direction matters
+  float maxLength = 0.12f;       // metres of flow path at most
+  TearLiquidParams params;       // SI units (the file's uL and degrees converted; welling times from t = 0)
+  double simulationStartFrame = 1.0;  // the frame at t = 0
+  std::string material;
+  uint32_t materialId = 0;
+  std::string pointer;           // the tear in the shot file ("/tears/0"), for problems found resolving it
+  // Resolved by loadShot (liquid_tear_resolve.hpp): the source on the first frame's skin, the flow
+  // path from it (points in the primitive's triangles, piece i from points[i] to arrival[i + 1] in
+  // triangle points[i].triangle, arc lengths on the first frame's real skin), and its stop reason.
+  ShotSurfacePoint sourcePoint;
+  FlowPath path;
+  float smoothedPathLength = 0.0f;  // the path's length on the smoothed skin it was traced on
+  TearLiquidInput input;            // the simulation's input (path samples on the first frame's skin)
+};
+
 // Animated skin detail (seed 004 section 3; docs/shot-format.md "details"): a sum of basic
 // patterns displaced onto the part's posed primitives in an ellipse around a skin point, at
 // frames startFrame..endFrame.
@@ -278,6 +307,7 @@ struct Shot {
   std::vector<ShotShape> shapes;
   std::vector<ShotTear> tears;                  // "dripping" tears
   std::vector<ShotSheddingTear> sheddingTears;  // "shedding" tears
+  std::vector<ShotLiquidTear> liquidTears;      // "liquid" tears
   std::vector<ShotDetail> details;
 
   // Things that load but deserve a look (glTF loader caveats, environment texels that were

@@ -1,0 +1,131 @@
+// The water mesh of a bead draped over the skin; see liquid_bead_mesh.hpp.
+#include "lacrima/geometry/liquid_bead_mesh.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <optional>
+#include <vector>
+
+#include "lacrima/geometry/error.hpp"
+
+namespace lacrima {
+
+namespace {
+
+void validate(const LiquidBeadPlacement& p, const LiquidBeadResolution& r) {
+  const bool finite = p.contact.allFinite() && p.normal.allFinite() && p.along.allFinite();
+  if (!finite || !(p.normal.norm() > 0.0f)) throw InputError("liquid bead: contact, normal and along must be finite, normal non-zero");
+  if (!(p.halfLength > 0.0f) || !(p.halfWidth > 0.0f) || !(p.height > 0.0f) || !std::isfinite(p.halfLength) ||
+      !std::isfinite(p.halfWidth) || !std::isfinite(p.height))
+    throw InputError(fmt::format("liquid bead: halfLength {}, halfWidth {} and height {} must be finite and positive",
+                                 p.halfLength, p.halfWidth, p.height));
+  if (!(p.contactAngle > 0.0f && p.contactAngle < float(std::numbers::pi)))
+    throw InputError(fmt::format("liquid bead: contact angle {} is not in (0, pi)", p.contactAngle));
+  if (!(p.baseOffset >= 0.0f) || !std::isfinite(p.baseOffset))
+    throw InputError(fmt::format("liquid bead: baseOffset {} must be finite and >= 0", p.baseOffset));
+  if (r.domeRings < 2 || r.baseRings < 1 || r.segments < 3)
+    throw InputError(fmt::format("liquid bead: resolution {} dome rings, {} base rings, {} segments is too coarse",
+                                 r.domeRings, r.baseRings, r.segments));
+}
+
+// The skin triangles near the bead that face the bead's side, as double-precision corners.
+struct SkinPatch {
+  std::vector<Vec3d> corners;  // three per triangle
+};
+
+SkinPatch nearbySkin(const TriangleMesh& skin, const Vec3d& centre, const Vec3d& normal, double reach) {
+  SkinPatch patch;
+  const double reach2 = reach * reach;
+  for (size_t t = 0; t + 2 < skin.indices.size(); t += 3) {
+    const Vec3d a = skin.positions[skin.indices[t]].cast<double>(), b = skin.positions[skin.indices[t + 1]].cast<double>(),
+                c = skin.positions[skin.indices[t + 2]].cast<double>();
+    if ((a - centre).squaredNorm() > reach2 && (b - centre).squaredNorm() > reach2 && (c - centre).squaredNorm() > reach2)
+      continue;
+    if ((b - a).cross(c - a).dot(normal) <= 0.0) continue;  // the other side of a fold: not under the bead
+    patch.corners.insert(patch.corners.end(), {a, b, c});
+  }
+  return patch;
+}
+
+// Signed distance along `dir` from `origin` to the skin hit nearest to it (Moller-Trumbore), if any.
+std::optional<double> skinHeight(const SkinPatch& patch, const Vec3d& origin, const Vec3d& dir) {
+  std::optional<double> best;
+  for (size_t i = 0; i < patch.corners.size(); i += 3) {
+    const Vec3d e1 = patch.corners[i + 1] - patch.corners[i], e2 = patch.corners[i + 2] - patch.corners[i];
+    const Vec3d p = dir.cross(e2);
+    const double det = e1.dot(p);
+    if (std::abs(det) < 1e-30) continue;
+    const Vec3d s = origin - patch.corners[i];
+    const double u = s.dot(p) / det;
+    if (u < -1e-9 || u > 1.0 + 1e-9) continue;
+    const Vec3d q = s.cross(e1);
+    const double v = dir.dot(q) / det;
+    if (v < -1e-9 || u + v > 1.0 + 1e-9) continue;
+    const double h = e2.dot(q) / det;
+    if (!best || std::abs(h) < std::abs(*best)) best = h;
+  }
+  return best;
+}
+
+}  // namespace
+
+TriangleMesh makeLiquidBeadMesh(const TriangleMesh& skin, const LiquidBeadPlacement& placement,
+                                const LiquidBeadResolution& resolution) {
+  validate(placement, resolution);
+  const Vec3d n = placement.normal.cast<double>().normalized();
+  Vec3d u = placement.along.cast<double>() - placement.along.cast<double>().dot(n) * n;
+  if (!(u.norm() > 1e-9)) throw InputError("liquid bead: the long axis is parallel to the skin normal");
+  u.normalize();
+  const Vec3d w = n.cross(u);
+  const Vec3d centre = placement.contact.cast<double>();
+  const double theta = placement.contactAngle;
+  const double rho = 1.0 / std::sin(theta), apexHeight = rho * (1.0 - std::cos(theta));
+  const double footprint = std::max(placement.halfLength, placement.halfWidth) * std::max(rho, 1.0);
+  const SkinPatch patch = nearbySkin(skin, centre, n, 2.0 * footprint + 2.0 * placement.height);
+
+  TriangleMesh mesh;
+  mesh.name = "liquid bead";
+  // A vertex at unit-cap radius r, angle phi and unit height z (0 on the base, 1 at the apex).
+  auto addVertex = [&](double r, double phi, double z) {
+    const double x = placement.halfLength * r * std::cos(phi), y = placement.halfWidth * r * std::sin(phi);
+    const Vec3d inPlane = centre + x * u + y * w;
+    const double lift = skinHeight(patch, inPlane, n).value_or(0.0) + placement.baseOffset + placement.height * z;
+    mesh.positions.push_back((inPlane + lift * n).cast<float>());
+    return uint32_t(mesh.positions.size() - 1);
+  };
+  const int segments = resolution.segments;
+  auto phiOf = [segments](int k) { return 2.0 * std::numbers::pi * double(k % segments) / double(segments); };
+
+  // Dome: apex, then rings down to the contact line (ring domeRings is the contact line, z = 0).
+  const uint32_t apex = addVertex(0.0, 0.0, 1.0);
+  std::vector<uint32_t> ringStart;
+  for (int i = 1; i <= resolution.domeRings; ++i) {
+    const double psi = theta * double(i) / double(resolution.domeRings);
+    const double z = i == resolution.domeRings ? 0.0 : rho * (std::cos(psi) - std::cos(theta)) / apexHeight;
+    ringStart.push_back(uint32_t(mesh.positions.size()));
+    for (int k = 0; k < segments; ++k) addVertex(rho * std::sin(psi), phiOf(k), z);
+  }
+  // Base: rings inwards from the contact line, then the centre (all at z = 0: on the skin).
+  for (int j = resolution.baseRings - 1; j >= 1; --j) {
+    ringStart.push_back(uint32_t(mesh.positions.size()));
+    for (int k = 0; k < segments; ++k) addVertex(double(j) / double(resolution.baseRings), phiOf(k), 0.0);
+  }
+  const uint32_t baseCentre = addVertex(0.0, 0.0, 0.0);
+
+  auto at = [&](size_t ring, int k) { return ringStart[ring] + uint32_t(k % segments); };
+  // Seen from outside (+n above the dome), increasing phi runs counter-clockwise about n.
+  for (int k = 0; k < segments; ++k) mesh.indices.insert(mesh.indices.end(), {apex, at(0, k), at(0, k + 1)});
+  for (size_t r = 0; r + 1 < ringStart.size(); ++r)
+    for (int k = 0; k < segments; ++k)
+      mesh.indices.insert(mesh.indices.end(), {at(r, k), at(r + 1, k), at(r + 1, k + 1), at(r, k), at(r + 1, k + 1),
+                                               at(r, k + 1)});
+  const size_t last = ringStart.size() - 1;
+  for (int k = 0; k < segments; ++k) mesh.indices.insert(mesh.indices.end(), {baseCentre, at(last, k + 1), at(last, k)});
+  computeSmoothNormals(mesh, false);
+  return mesh;
+}
+
+}  // namespace lacrima

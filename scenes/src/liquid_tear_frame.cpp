@@ -1,0 +1,118 @@
+// Liquid tears in a frame: the simulation's state at the frame, beads draped over the posed skin,
+// falling drops as moving spheres; see liquid_tear_frame.hpp and lacrima/scenes/liquid_tear.hpp.
+#include "liquid_tear_frame.hpp"
+
+#include <algorithm>
+
+#include "lacrima/geometry/liquid_bead_mesh.hpp"
+#include "lacrima/scenes/liquid_tear.hpp"
+
+namespace lacrima {
+
+double liquidTearSeconds(const Shot& shot, const ShotLiquidTear& tear, double frame) {
+  return std::max(0.0, (frame - tear.simulationStartFrame) / shot.fps);
+}
+
+TearLiquidState liquidTearStateAt(const Shot& shot, const ShotLiquidTear& tear, double frame) {
+  TearLiquidSimulation simulation(tear.input);
+  const double t = liquidTearSeconds(shot, tear, frame);
+  simulation.advanceTo(t);
+  return simulation.state(t);
+}
+
+SurfacePoint liquidTearPathPoint(const ShotLiquidTear& tear, double arcLength, size_t* piece) {
+  const FlowPath& path = tear.path;
+  const size_t pieces = path.points.size() - 1;
+  // The last piece starting at or before s (the last one for s beyond the end).
+  const auto after = std::upper_bound(path.arcLength.begin(), path.arcLength.end(), float(arcLength));
+  const size_t i = std::min(pieces - 1, size_t(std::max<ptrdiff_t>(after - path.arcLength.begin() - 1, 0)));
+  if (piece) *piece = i;
+  const double length = double(path.arcLength[i + 1]) - double(path.arcLength[i]);
+  const double f = std::clamp((arcLength - double(path.arcLength[i])) / length, 0.0, 1.0);
+  // Barycentric coordinates are affine in space: the straight piece in its triangle, exactly.
+  const Vec3d barycentric = (1.0 - f) * path.points[i].barycentric.cast<double>() + f * path.arrival[i + 1].cast<double>();
+  return SurfacePoint{path.points[i].triangle, (barycentric / barycentric.sum()).cast<float>()};
+}
+
+namespace shotfile {
+
+namespace {
+
+// The skin's interpolated vertex normal at a point (the triangle's normal without vertex normals).
+Vec3 skinNormal(const TriangleMesh& skin, const SurfacePoint& p) {
+  const uint32_t* v = &skin.indices[3 * size_t(p.triangle)];
+  if (skin.normals.size() == skin.positions.size()) {
+    const Vec3 n = p.barycentric.x() * skin.normals[v[0]] + p.barycentric.y() * skin.normals[v[1]] +
+                   p.barycentric.z() * skin.normals[v[2]];
+    if (n.squaredNorm() > 1e-12f) return n.normalized();
+  }
+  return triangleNormal(skin, p.triangle);
+}
+
+// The bead's mesh on this skin: at its point of the path, long axis along the path's piece there.
+TriangleMesh beadMesh(const ShotLiquidTear& tear, const BeadView& bead, const TriangleMesh& skin) {
+  size_t piece = 0;
+  const SurfacePoint at = liquidTearPathPoint(tear, bead.arcLength, &piece);
+  const SurfacePoint pieceEnd{tear.path.points[piece].triangle, tear.path.arrival[piece + 1]};
+  LiquidBeadPlacement placement;
+  placement.contact = surfacePosition(skin, at);
+  placement.normal = skinNormal(skin, at);
+  placement.along = surfacePosition(skin, pieceEnd) - surfacePosition(skin, tear.path.points[piece]);
+  if (std::abs(placement.along.normalized().dot(placement.normal)) > 0.999f) placement.along = tear.gravity;
+  placement.halfLength = float(bead.shape.halfLength);
+  placement.halfWidth = float(bead.shape.halfWidth);
+  placement.height = float(bead.shape.height);
+  const ContactAngleHysteresis& angles = tear.params.contactAngles;
+  placement.contactAngle = float(0.5 * (angles.advancing + angles.receding));  // as BeadView's shape
+  placement.baseOffset = kLiquidBeadBaseOffset;
+  return makeLiquidBeadMesh(skin, placement);
+}
+
+template <typename T>
+const T* findById(const std::vector<T>& items, int id, int T::*key) {
+  for (const T& item : items)
+    if (item.*key == id) return &item;
+  return nullptr;
+}
+
+}  // namespace
+
+void addLiquidTear(const Shot& shot, const ShotLiquidTear& tear, double shutterOpen, double shutterClose,
+                   const std::vector<TriangleMesh>& openSkin, const std::vector<TriangleMesh>* closeSkin, Frame& frame) {
+  if (tear.input.path.empty() || openSkin.empty()) return;  // not resolved (not from loadShot)
+  const bool blurred = shutterClose > shutterOpen;
+  // One simulation, advanced to shutter open and then to close: bitwise what two fresh ones give.
+  TearLiquidSimulation simulation(tear.input);
+  const double tOpen = liquidTearSeconds(shot, tear, shutterOpen), tClose = liquidTearSeconds(shot, tear, shutterClose);
+  simulation.advanceTo(tOpen);
+  const TearLiquidState open = simulation.state(tOpen);
+  TearLiquidState close = open;
+  if (blurred) {
+    simulation.advanceTo(tClose);
+    close = simulation.state(tClose);
+  }
+  const size_t primitive = tear.sourcePoint.primitive;
+  const TriangleMesh& skinOpen = openSkin[primitive];
+  const TriangleMesh& skinClose = closeSkin && !closeSkin->empty() ? (*closeSkin)[primitive] : skinOpen;
+  for (const BeadView& bead : open.beads) {
+    MeshInstance instance(beadMesh(tear, bead, skinOpen), tear.materialId);
+    if (const BeadView* later = blurred ? findById(close.beads, bead.id, &BeadView::id) : nullptr) {
+      TriangleMesh atClose = beadMesh(tear, *later, skinClose);
+      if (atClose.positions != instance.mesh.positions) {
+        instance.positionsAtClose = std::move(atClose.positions);
+        instance.normalsAtClose = std::move(atClose.normals);
+      }
+    }
+    frame.meshes.push_back(std::move(instance));
+  }
+  for (const DropView& drop : open.drops) {
+    Sphere sphere(drop.centre.cast<float>(), float(drop.radius), tear.materialId);
+    if (const DropView* later = blurred ? findById(close.drops, drop.beadId, &DropView::beadId) : nullptr)
+      if (later->centre != drop.centre) sphere.centerAtClose = later->centre.cast<float>();
+    frame.spheres.push_back(sphere);
+  }
+}
+
+}  // namespace shotfile
+
+}  // namespace lacrima

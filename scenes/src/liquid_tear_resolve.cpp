@@ -1,0 +1,83 @@
+// Resolving liquid tears at load; see liquid_tear_resolve.hpp.
+#include "liquid_tear_resolve.hpp"
+
+#include <fmt/format.h>
+
+#include <optional>
+
+#include "asset_pose.hpp"
+#include "json_source.hpp"  // childPointer
+#include "lacrima/geometry/error.hpp"
+#include "surface_anchor.hpp"
+
+namespace lacrima::shotfile {
+
+namespace {
+
+// Positions and arc lengths of `path` on `skin` (the path's points are topological, so they are
+// valid on any mesh of the same topology). A piece of zero length on `skin` is dropped by
+// removing its start point: the piece before it then ends where the dropped one did.
+FlowPath onSkin(const FlowPath& traced, const TriangleMesh& skin) {
+  FlowPath path;
+  path.stop = traced.stop;
+  std::optional<Vec3> pendingArrival;  // the end of the piece before a dropped point
+  for (size_t i = 0; i < traced.points.size(); ++i) {
+    const Vec3 position = surfacePosition(skin, traced.points[i]);
+    const bool last = i + 1 == traced.points.size();
+    const float arc = path.positions.empty() ? 0.0f : path.arcLength.back() + (position - path.positions.back()).norm();
+    const bool emptyPieceStarts = !last && surfacePosition(skin, traced.points[i + 1]) == position;
+    if (emptyPieceStarts || (!path.points.empty() && !(arc > path.arcLength.back()))) {
+      if (!pendingArrival) pendingArrival = traced.arrival[i];
+      continue;
+    }
+    path.points.push_back(traced.points[i]);
+    path.arrival.push_back(pendingArrival.value_or(traced.arrival[i]));
+    pendingArrival.reset();
+    path.positions.push_back(position);
+    path.arcLength.push_back(arc);
+  }
+  return path;
+}
+
+void resolveTear(const Shot& shot, ShotLiquidTear& tear, std::vector<LiquidTearProblem>& problems) {
+  tear.sourcePoint = resolveSurfaceAnchor(shot, tear.asset, tear.part, tear.source);
+  const ShotAsset& asset = shot.assets[tear.asset];
+  const TriangleMesh skin = posedPrimitive(asset, assetPoseAt(asset, double(shot.frameStart)), tear.sourcePoint.primitive);
+  const std::vector<uint32_t> weld = findCoincidentVertices(skin);
+  const TriangleAdjacency adjacency = buildTriangleAdjacency(skin, weld);
+  const TriangleMesh smoothed = taubinSmoothed(skin, weld, kLiquidPathSmoothing);
+  const SurfacePoint start{tear.sourcePoint.triangle, tear.sourcePoint.barycentric};
+  FlowPathOptions options;
+  options.maxLength = tear.maxLength;
+  const FlowPath traced = traceFlowPath(smoothed, adjacency, start, tear.gravity, options);
+  tear.smoothedPathLength = traced.length();
+  tear.path = flowPathOnSkin(traced, skin);
+  if (tear.path.points.size() < 2 || tear.path.length() < kMinLiquidPathLength) {
+    problems.push_back({childPointer(tear.pointer, "source"),
+                        fmt::format("the flow path from the source runs only {:.3g} m over part '{}' before it stops "
+                                    "({}); a liquid tear needs at least {} m (move the source or change gravity)",
+                                    tear.path.length(), tear.part, flowStopName(tear.path.stop), kMinLiquidPathLength)});
+    return;
+  }
+  tear.input.path = liquidPathFromFlowPath(tear.path, skin);
+  tear.input.gravityDirection = tear.gravity.cast<double>();
+  tear.input.params = tear.params;
+  try {
+    TearLiquidSimulation check(tear.input);
+  } catch (const InputError& e) {
+    problems.push_back({tear.pointer, e.what()});
+  }
+}
+
+}  // namespace
+
+FlowPath flowPathOnSkin(const FlowPath& traced, const TriangleMesh& skin) { return onSkin(traced, skin); }
+
+std::vector<LiquidTearProblem> resolveLiquidTears(Shot& shot) {
+  std::vector<LiquidTearProblem> problems;
+  for (ShotLiquidTear& tear : shot.liquidTears)
+    if (shot.assets[tear.asset].gltf) resolveTear(shot, tear, problems);
+  return problems;
+}
+
+}  // namespace lacrima::shotfile

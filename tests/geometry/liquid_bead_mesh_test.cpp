@@ -1,0 +1,88 @@
+// The liquid bead mesh: closed and outward, the spherical cap's volume on a flat skin, draped over
+// convex and concave skin without dipping into it, long axis along the given direction.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "geometry/height_field_mesh.hpp"
+#include "lacrima/geometry/error.hpp"
+#include "lacrima/geometry/liquid_bead_mesh.hpp"
+
+namespace lacrima {
+namespace {
+
+using test::heightFieldMesh;
+
+LiquidBeadPlacement placement(float contactAngleDegrees) {
+  LiquidBeadPlacement p;
+  p.contact = Vec3::Zero();
+  p.normal = Vec3::UnitZ();
+  p.along = Vec3(0, -1, 0.3f);  // projected onto the plane: -y
+  p.halfLength = 0.003f;
+  p.halfWidth = 0.002f;
+  p.height = 0.0015f;
+  p.contactAngle = contactAngleDegrees * float(std::numbers::pi) / 180.0f;
+  p.baseOffset = 2e-5f;
+  return p;
+}
+
+// Volume of the unit-base cap of angle theta scaled to the placement's semi-axes and height.
+double capVolume(const LiquidBeadPlacement& p) {
+  const double theta = p.contactAngle, rho = 1.0 / std::sin(theta), eta = rho * (1.0 - std::cos(theta));
+  const double unit = std::numbers::pi * std::pow(rho, 3) * std::pow(1.0 - std::cos(theta), 2) * (2.0 + std::cos(theta)) / 3.0;
+  return unit * p.halfLength * p.halfWidth * p.height / eta;
+}
+
+TEST(LiquidBeadMesh, IsClosedOutwardAndHasTheCapVolumeOnAFlatSkin) {
+  const TriangleMesh skin = heightFieldMesh(20, 0.01f, [](float, float) { return 0.0f; });
+  for (float angle : {40.0f, 80.0f, 110.0f}) {
+    const LiquidBeadPlacement p = placement(angle);
+    const TriangleMesh bead = makeLiquidBeadMesh(skin, p, {24, 3, 64});
+    EXPECT_EQ(bead.name, "liquid bead");
+    EXPECT_EQ(findMeshDefect(bead), "");
+    EXPECT_EQ(findClosedMeshDefect(bead), "");
+    EXPECT_NEAR(signedVolume(bead), capVolume(p), 0.01 * capVolume(p)) << angle;
+    float lowest = 1.0f, highest = -1.0f;
+    for (const Vec3& v : bead.positions) {
+      lowest = std::min(lowest, v.z());
+      highest = std::max(highest, v.z());
+    }
+    EXPECT_NEAR(lowest, p.baseOffset, 1e-7f);
+    EXPECT_NEAR(highest, p.baseOffset + p.height, 1e-7f);
+    // Long axis along -y (the projection of `along`): the footprint is longer in y than in x.
+    const Eigen::AlignedBox3f box = computeBounds(bead);
+    EXPECT_GT(box.sizes().y(), 1.4f * box.sizes().x()) << angle;
+  }
+}
+
+TEST(LiquidBeadMesh, FollowsCurvedSkinWithoutDippingIntoIt) {
+  for (float curvature : {-60.0f, 60.0f}) {  // 1/m: convex (cheek) and concave (a fold)
+    auto height = [curvature](float x, float y) { return 0.5f * curvature * (x * x + y * y); };
+    const TriangleMesh skin = heightFieldMesh(60, 0.01f, height);
+    const LiquidBeadPlacement p = placement(80.0f);
+    const TriangleMesh bead = makeLiquidBeadMesh(skin, p);
+    EXPECT_EQ(findClosedMeshDefect(bead), "");
+    EXPECT_GT(signedVolume(bead), 0.0);
+    for (const Vec3& v : bead.positions) {
+      // The skin's triangles are chords of the analytic surface: they sag below it by at most
+      // curvature d^2 / 8 = 1.7e-6 m for the 0.47 mm cell diagonals here.
+      EXPECT_GE(v.z() - height(v.x(), v.y()), p.baseOffset - 2e-6f) << curvature << " " << v.transpose();
+    }
+  }
+}
+
+TEST(LiquidBeadMesh, RejectsBadPlacements) {
+  const TriangleMesh skin = heightFieldMesh(2, 0.01f, [](float, float) { return 0.0f; });
+  LiquidBeadPlacement p = placement(80.0f);
+  p.height = 0.0f;
+  EXPECT_THROW(makeLiquidBeadMesh(skin, p), InputError);
+  p = placement(80.0f);
+  p.along = Vec3::UnitZ();
+  EXPECT_THROW(makeLiquidBeadMesh(skin, p), InputError);
+  p = placement(180.0f);
+  EXPECT_THROW(makeLiquidBeadMesh(skin, p), InputError);
+}
+
+}  // namespace
+}  // namespace lacrima
