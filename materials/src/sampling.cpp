@@ -25,4 +25,12 @@ Vec3 sampleCosineHemisphere(const Vec2& u) {
   return Vec3(d.x(), d.y(), safeSqrt(1.0f - d.x() * d.x() - d.y() * d.y()));
 }
 
+Vec3 sampleUniformSphere(const Vec2& u) {
+  // z uniform in [-1, 1] (Archimedes' hat-box theorem), phi uniform (pbrt-v4 SampleUniformSphere).
+  const float z = 1.0f - 2.0f * u.x();
+  const float r = safeSqrt(1.0f - z * z);
+  const float phi = 2.0f * kPi * u.y();
+  return Vec3(r * std::cos(phi), r * std::sin(phi), z);
+}
+
 }  // namespace lacrima

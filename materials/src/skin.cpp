@@ -48,7 +48,8 @@ SkinBsdf::SkinBsdf(const SkinParams& params)
       lobeMix_(std::clamp(params.lobeMix, 0.0f, 1.0f)),
       diffuseNorm_(kInvPi / (1.0f - fresnelHemisphericalReflectance(params.ior))),
       poreScale_(params.poreScale),
-      poreDepth_(params.poreDepth > 0.0f && params.poreScale > 0.0f ? params.poreDepth : 0.0f) {}
+      poreDepth_(params.poreDepth > 0.0f && params.poreScale > 0.0f ? params.poreDepth : 0.0f),
+      hasDiffuseLobe_(!params.subsurface) {}
 
 Vec3 SkinBsdf::perturbShadingNormal(const Vec3& position, const Vec3& ns, const Vec3& ng) const {
   return perturbNormalByPores(position, ns, ng, poreScale_, poreDepth_);
@@ -77,6 +78,7 @@ float SkinBsdf::specularPdf(const Vec3& wo, const Vec3& wi) const {
 Color SkinBsdf::eval(const Vec3& wo, const Vec3& wi) const {
   if (!bothAbove(wo, wi)) return Color::Zero();
   // Fresnel-weighted Lambertian base, reciprocal form (Shirley et al. 1997), see skin.hpp.
+  if (!hasDiffuseLobe_) return Color::Constant(specularF(wo, wi));
   const float transO = 1.0f - fresnelDielectric(wo.z(), ior_);
   const float transI = 1.0f - fresnelDielectric(wi.z(), ior_);
   const Color diffuse = albedo_ * (diffuseNorm_ * transO * transI);
@@ -94,6 +96,7 @@ float SkinBsdf::specularProbability(const Vec3& wo) const {
 
 float SkinBsdf::pdf(const Vec3& wo, const Vec3& wi) const {
   if (!bothAbove(wo, wi)) return 0.0f;
+  if (!hasDiffuseLobe_) return specularPdf(wo, wi);
   const float pSpec = specularProbability(wo);
   // One-sample mixture density (Veach 1997 ch. 9, one-sample model).
   return pSpec * specularPdf(wo, wi) + (1.0f - pSpec) * cosineHemispherePdf(wi.z());
@@ -101,7 +104,8 @@ float SkinBsdf::pdf(const Vec3& wo, const Vec3& wi) const {
 
 std::optional<BsdfSample> SkinBsdf::sample(const Vec3& wo, float uLobe, const Vec2& u) const {
   if (wo.z() <= 0.0f) return std::nullopt;
-  const float pSpec = specularProbability(wo);
+  // Without the diffuse lobe (subsurface): always specular, uLobe / 1 picks the lobe.
+  const float pSpec = hasDiffuseLobe_ ? specularProbability(wo) : 1.0f;
   Vec3 wi;
   if (uLobe < pSpec) {
     // Specular: pick a lobe (the broad one with probability w, reusing uLobe rescaled to [0, 1)),

@@ -4,6 +4,10 @@
 #include <limits>
 #include <vector>
 
+#include "lacrima/materials/fresnel.hpp"
+#include "ray_offset.hpp"
+#include "subsurface_walk.hpp"
+
 namespace lacrima {
 
 namespace {
@@ -12,13 +16,6 @@ namespace {
 float powerHeuristic(float pdfA, float pdfB) {
   const float a = pdfA * pdfA, b = pdfB * pdfB;
   return a + b > 0.0f ? a / (a + b) : 0.0f;
-}
-
-// Ray origins are pushed off the surface along the geometric normal, on the side the new ray
-// leaves towards; the offset scales with the coordinates' magnitude (float spacing).
-Vec3 offsetOrigin(const Vec3& position, const Vec3& geometricNormal, const Vec3& direction) {
-  const float scale = 1e-4f * std::max(0.05f, position.cwiseAbs().maxCoeff());
-  return position + (direction.dot(geometricNormal) > 0.0f ? scale : -scale) * geometricNormal;
 }
 
 constexpr int kRussianRouletteDepth = 3;
@@ -51,6 +48,8 @@ PathIntegrator::PathIntegrator(const Frame& frame, const EmbreeScene& scene, con
     : frame_(frame), scene_(scene), lights_(lights), maxDepth_(frame.settings.maxDepth) {
   bsdfs_.reserve(frame.materials.size());
   for (const Material& material : frame.materials) bsdfs_.push_back(makeBsdf(material.params));
+  subsurface_.resize(frame.materials.size());
+  for (size_t id = 0; id < frame.materials.size(); ++id) subsurface_[id] = makeSubsurfaceSkin(frame.materials[id].params);
   media_.reserve(frame.materials.size());
   for (const Material& material : frame.materials) {
     media_.push_back(dielectricMedium(material.params));
@@ -267,6 +266,15 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
     if (depth >= maxDepth_) break;
 
     result += throughput * sampleDirectLight(v, media, sampler, counters);
+    if (subsurface_[hit.materialId]) {  // skin with subsurface: specular lobes or a random walk
+      const Below below = scatterBelowSurface(*subsurface_[hit.materialId], v, throughput, sampler, counters);
+      if (below == Below::Absorbed) break;
+      if (below == Below::Exited) {
+        hit.position = v.position;  // the path goes on from the exit point
+        ng = v.geometricNormal;
+        result += throughput * sampleDirectLight(v, media, sampler, counters);
+      }
+    }
 
     const float uLobe = sampler.get1D();
     const std::optional<BsdfSample> bs = v.bsdf->sample(v.woLocal, uLobe, sampler.get2D());
@@ -300,6 +308,38 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
     if ((throughput <= 0.0f).all()) break;
   }
   return result;
+}
+
+// Random-walk subsurface scattering (subsurface_walk.hpp). The skin's specular lobes are v.bsdf;
+// the Lambertian base they sat on is replaced by the walk. One of the two continues the path: the
+// walk with probability 1 - specularProbability(wo), the same split the skin BSDF samples with.
+std::optional<PathIntegrator::SubsurfaceSkin> PathIntegrator::makeSubsurfaceSkin(const MaterialParams& params) {
+  const auto* skin = std::get_if<SkinParams>(&params);
+  if (!skin || !skin->subsurface) return std::nullopt;
+  return SubsurfaceSkin{subsurfaceMedium(*skin, *skin->subsurface), std::make_shared<SkinBsdf>(*skin),
+                        std::make_shared<SubsurfaceExitBsdf>(skin->ior), skin->ior};
+}
+
+PathIntegrator::Below PathIntegrator::scatterBelowSurface(const SubsurfaceSkin& skin, Vertex& v, Color& throughput,
+                                                          PixelSampler& sampler, PathCounters& counters) const {
+  const float pSpecular = skin.bsdf->specularProbability(v.woLocal);
+  if (sampler.get1D() < pSpecular) {
+    throughput /= pSpecular;
+    return Below::Specular;
+  }
+  // Entry pays the Fresnel transmission of the base it replaces (skin.hpp, subsurface.hpp).
+  const float entry = 1.0f - fresnelDielectric(v.woLocal.z(), skin.ior);
+  const auto exit = walkBelowSurface(scene_, skin.medium, v.position, v.geometricNormal, v.time, sampler, counters.rays);
+  if (!exit) return Below::Absorbed;
+  throughput *= exit->weight * (entry / (1.0f - pSpecular));
+  v.position = exit->position;
+  v.geometricNormal = exit->geometricNormal;
+  v.frame = ShadingFrame::fromNormal(exit->shadingNormal);
+  v.wo = exit->shadingNormal;  // the exit lobe ignores wo; any direction above the surface will do
+  v.woLocal = Vec3(0.0f, 0.0f, 1.0f);
+  v.bsdf = skin.exitBsdf.get();
+  v.entering = true;
+  return Below::Exited;
 }
 
 }  // namespace lacrima

@@ -11,6 +11,8 @@
 #include "light_sampler.hpp"
 #include "lacrima/geometry/sampler.hpp"
 #include "lacrima/materials/bsdf.hpp"
+#include "lacrima/materials/skin.hpp"
+#include "lacrima/materials/subsurface.hpp"
 #include "lacrima/renderer/medium_stack.hpp"
 
 namespace lacrima {
@@ -58,6 +60,20 @@ class PathIntegrator {
   MediumStack mediaAroundCamera() const;
   bool isDielectric(uint32_t materialId) const { return media_[materialId].has_value(); }
 
+  // Subsurface skin (integrator.cpp, subsurface_walk.hpp): what a skin with subsurface needs.
+  struct SubsurfaceSkin {
+    SubsurfaceMedium medium;
+    std::shared_ptr<const SkinBsdf> bsdf;  // for the specular/walk split
+    std::shared_ptr<const Bsdf> exitBsdf;
+    float ior;
+  };
+  enum class Below { Specular, Exited, Absorbed };
+  static std::optional<SubsurfaceSkin> makeSubsurfaceSkin(const MaterialParams& params);
+  // Picks the specular lobes (v unchanged) or a walk: then v becomes the exit vertex with the
+  // exit lobe, and throughput takes the walk's weight. Absorbed ends the path.
+  Below scatterBelowSurface(const SubsurfaceSkin& skin, Vertex& v, Color& throughput, PixelSampler& sampler,
+                            PathCounters& counters) const;
+
   const Frame& frame_;
   const EmbreeScene& scene_;
   const LightSampler& lights_;
@@ -70,6 +86,7 @@ class PathIntegrator {
   // pairBsdfs_[hit * materialCount + other]: dielectric `hit` (priority >= 1) against medium `other`.
   std::vector<std::unique_ptr<Bsdf>> pairBsdfs_;
   MediumStack cameraMedia_;
+  std::vector<std::optional<SubsurfaceSkin>> subsurface_;  // per material; none unless skin with subsurface
 };
 
 }  // namespace lacrima

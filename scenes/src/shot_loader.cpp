@@ -312,7 +312,8 @@ class ShotReader {
       if (auto x = o.color("emission", Range::atLeast(0))) m.emission = *x;
     } else if (*type == "skin") {
       ObjectReader o(c_, v, pointer,
-                     {"type", "albedo", "roughness", "ior", "roughness2", "lobeMix", "poreScale", "poreDepth", "emission"});
+                     {"type", "albedo", "roughness", "ior", "roughness2", "lobeMix", "poreScale", "poreDepth", "subsurface",
+                      "emission"});
       SkinParams p;
       if (auto x = o.color("albedo", unit)) p.albedo = *x;
       if (auto x = o.number("roughness", unit)) p.roughness = float(*x);
@@ -323,6 +324,12 @@ class ShotReader {
         o.error("roughness2", "'roughness2' needs 'lobeMix' (the weight of the second lobe, in [0, 1])", Anchor::Key);
       if (auto x = o.number("poreScale", Range::above(0))) p.poreScale = float(*x);
       if (auto x = o.number("poreDepth", Range::atLeast(0))) p.poreDepth = float(*x);
+      if (const Json* sss = o.find("subsurface")) {  // random-walk subsurface scattering (subsurface.hpp)
+        ObjectReader so(c_, *sss, o.at("subsurface"), {"meanFreePath"});
+        SubsurfaceParams subsurface;
+        if (auto x = so.color("meanFreePath", Range::above(0))) subsurface.meanFreePath = *x;
+        if (so.ok()) p.subsurface = subsurface;
+      }
       m.params = p;
       if (auto x = o.color("emission", Range::atLeast(0))) m.emission = *x;
     } else if (*type == "water") {

@@ -47,6 +47,15 @@ inline std::vector<BsdfCase> chi2Cases() {
       cases.push_back({std::string("skin_dual_") + d.label + "_" + incidence, p, cosO});
     }
   }
+  // Skin with subsurface: the specular lobes alone (the random walk replaces the base).
+  for (const auto& [incidence, cosO] : {std::pair{"normal", 0.99f}, std::pair{"grazing", 0.15f}}) {
+    SkinParams p;
+    p.roughness = 0.3f;
+    p.roughness2 = 0.6f;
+    p.lobeMix = 0.5f;
+    p.subsurface = SubsurfaceParams{};
+    cases.push_back({std::string("skin_subsurface_") + incidence, p, cosO});
+  }
   for (const auto& [label, roughness] : {std::pair{"r02", 0.2f}, std::pair{"r05", 0.5f}, std::pair{"r09", 0.9f}}) {
     for (const auto& [side, sign] : {std::pair{"outside", 1.0f}, std::pair{"inside", -1.0f}}) {
       for (const auto& [incidence, cosO] : {std::pair{"normal", 0.99f}, std::pair{"grazing", 0.15f}}) {

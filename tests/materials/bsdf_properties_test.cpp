@@ -50,6 +50,9 @@ std::vector<NamedParams> propertyMaterials() {
   dual.roughness2 = 0.6f;
   dual.lobeMix = 0.15f;
   m.push_back({"skin_dual", dual, false});
+  SkinParams subsurface = dual;  // the specular lobes alone (subsurface.hpp)
+  subsurface.subsurface = SubsurfaceParams{};
+  m.push_back({"skin_subsurface", subsurface, false});
   for (const float r : {0.2f, 0.5f, 0.9f}) {
     RoughDielectricParams p;
     p.roughness = r;

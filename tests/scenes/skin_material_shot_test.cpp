@@ -57,6 +57,24 @@ TEST(SkinMaterialShot, OutOfRangeValuesNameTheirKey) {
                           "/materials/skin/poreDepth: expected a number >= 0, found -0.001");
 }
 
+TEST(SkinMaterialShot, SubsurfaceIsOffByDefaultAndReadsItsMeanFreePath) {
+  EXPECT_FALSE(skinOf(loadShot(test::writeShot("skin_no_sss.json", shotWithSkin("")))).subsurface);
+  const Shot defaults = loadShot(test::writeShot("skin_sss_defaults.json", shotWithSkin(R"(, "subsurface": {})")));
+  ASSERT_TRUE(skinOf(defaults).subsurface);
+  EXPECT_TRUE((skinOf(defaults).subsurface->meanFreePath == SubsurfaceParams{}.meanFreePath).all());
+  const Shot given = loadShot(
+      test::writeShot("skin_sss.json", shotWithSkin(R"(, "subsurface": {"meanFreePath": [0.002, 0.001, 0.0005]})")));
+  ASSERT_TRUE(skinOf(given).subsurface);
+  EXPECT_TRUE((skinOf(given).subsurface->meanFreePath == Color(0.002f, 0.001f, 0.0005f)).all());
+}
+
+TEST(SkinMaterialShot, BadSubsurfaceNamesItsKey) {
+  test::expectSingleError("skin_sss_zero.json", shotWithSkin(R"(, "subsurface": {"meanFreePath": [0.002, 0, 0.001]})"),
+                          "/materials/skin/subsurface/meanFreePath/1: expected a number > 0, found 0");
+  test::expectSingleError("skin_sss_not_object.json", shotWithSkin(R"(, "subsurface": true)"),
+                          "/materials/skin/subsurface: expected an object, found true");
+}
+
 // The example of the "skin" section of docs/shot-format.md must stay a valid material.
 TEST(SkinMaterialShot, DocExampleLoads) {
   std::ifstream in(test::sourcePath("docs/shot-format.md"));

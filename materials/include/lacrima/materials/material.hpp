@@ -17,6 +17,16 @@ struct DiffuseParams {
   Color albedo = Color(0.5f, 0.5f, 0.5f);
 };
 
+// Subsurface scattering of skin by a random walk below the surface (subsurface.hpp). The mean
+// free path 1/sigma_t per channel, in metres. Defaults: skin1 of Jensen et al. 2001, "A Practical
+// Model for Subsurface Light Transport" (SIGGRAPH), Table 2: sigma_s' = (0.74, 0.88, 1.01) /mm,
+// sigma_a = (0.032, 0.17, 0.48) /mm, so 1/(sigma_s' + sigma_a) = (1.30, 0.95, 0.67) mm; the
+// reduced (transport) coefficients, since the walk scatters isotropically (similarity relation).
+// The single-scattering albedo is not given here: it follows from the skin's albedo.
+struct SubsurfaceParams {
+  Color meanFreePath = Color(1.30e-3f, 0.95e-3f, 0.67e-3f);
+};
+
 // Skin: Lambertian base under one or two GGX specular lobes whose strength follows dielectric
 // Fresnel, optionally with procedural pores that tilt the shading normal (see skin.hpp, pores.hpp).
 // The defaults (lobeMix 0, poreDepth 0) are skin v1: one lobe, no pores.
@@ -28,6 +38,8 @@ struct SkinParams {
   float lobeMix = 0.0f;      // weight of the second lobe in [0, 1]; 0 = single lobe (skin v1)
   float poreScale = 3e-4f;   // metres between neighbouring pores (cell size of the pore lattice)
   float poreDepth = 0.0f;    // metres deep; 0 = no pores
+  // Set: the Lambertian base is replaced by a random walk below the surface (subsurface.hpp).
+  std::optional<SubsurfaceParams> subsurface;
 };
 
 // Smooth dielectric interface (water, tears): Fresnel reflection + refraction, TIR.

@@ -14,6 +14,9 @@ Vec2 sampleUniformDiskConcentric(const Vec2& u);
 // Cosine-weighted direction on the upper hemisphere z > 0 (Malley's method).
 Vec3 sampleCosineHemisphere(const Vec2& u);
 
+// Uniform direction on the unit sphere, density 1 / (4 pi) (pbrt-v4 SampleUniformSphere).
+Vec3 sampleUniformSphere(const Vec2& u);
+
 // Density of sampleCosineHemisphere: cos(theta) / pi (pbrt-v4 SampleCosineHemisphere).
 inline float cosineHemispherePdf(float cosTheta) { return std::max(0.0f, cosTheta) * kInvPi; }
 

@@ -1,6 +1,6 @@
 #pragma once
-// Skin: a Lambertian base under one or two GGX specular reflection lobes (no subsurface transport
-// yet), with optional procedural pores that tilt the shading normal (pores.hpp).
+// Skin: a Lambertian base (or subsurface scattering, subsurface.hpp) under one or two GGX specular
+// reflection lobes, with optional procedural pores that tilt the shading normal (pores.hpp).
 //
 // Parameters (SkinParams):
 //   albedo     - reflectance of the base before the Fresnel loss, clamped to [0, 0.99] (see Energy);
@@ -39,6 +39,10 @@
 // broader lobe with probability w, each lobe by visible-normal sampling (Heitz 2018); else the
 // cosine-weighted diffuse lobe. pdf() is the mixture density (Veach 1997 ch. 9, one-sample
 // model), and sample() returns the full f and the mixture pdf.
+//
+// Subsurface (SkinParams::subsurface set): the BSDF is the specular part alone (eval, pdf and
+// sample); the renderer replaces the Lambertian base by a random walk below the surface, chosen
+// with probability 1 - specularProbability(wo) (subsurface.hpp, renderer/src/subsurface_walk.hpp).
 #include "lacrima/materials/bsdf.hpp"
 #include "lacrima/materials/material.hpp"
 #include "lacrima/materials/microfacet.hpp"
@@ -79,6 +83,7 @@ class SkinBsdf final : public Bsdf {
   float diffuseNorm_;      // 1 / (pi (1 - Fbar))
   float poreScale_;
   float poreDepth_;
+  bool hasDiffuseLobe_;    // false with subsurface: the renderer's random walk replaces the base
 };
 
 }  // namespace lacrima

@@ -1,0 +1,76 @@
+// Random-walk subsurface scattering (Chiang, Kutz & Burley 2016), free-flight sampling after
+// Pharr, Jakob & Humphreys, pbrt-v4 §11.2 and §14.1 (homogeneous medium, spectral MIS).
+#include "subsurface_walk.hpp"
+
+#include <cmath>
+
+#include "lacrima/materials/sampling.hpp"
+#include "ray_offset.hpp"
+
+namespace lacrima {
+
+namespace {
+
+// Channel probabilities proportional to the walk's weight so far (as Cycles' random walk does):
+// a channel that has been absorbed is no longer sampled. Any choice that depends only on the past
+// keeps the one-sample MIS estimator unbiased.
+Color channelProbabilities(const Color& weight) {
+  const float sum = weight.sum();
+  return sum > 0.0f ? Color(weight / sum) : Color::Zero();
+}
+
+// The channel whose cumulative probability passes u; rounding falls back to the last possible one.
+int pickChannel(const Color& probabilities, float u) {
+  int last = 0;
+  float cumulative = 0.0f;
+  for (int c = 0; c < 3; ++c) {
+    if (probabilities[c] <= 0.0f) continue;
+    last = c;
+    cumulative += probabilities[c];
+    if (u < cumulative) return c;
+  }
+  return last;
+}
+
+}  // namespace
+
+std::optional<SubsurfaceExit> walkBelowSurface(const EmbreeScene& scene, const SubsurfaceMedium& medium,
+                                               const Vec3& entry, const Vec3& outwardNormal, float time,
+                                               PixelSampler& sampler, uint64_t& rays) {
+  // Lambertian entry: cosine-distributed about the inward normal (subsurface.hpp).
+  Vec3 direction = ShadingFrame::fromNormal(-outwardNormal).toWorld(sampleCosineHemisphere(sampler.get2D())).normalized();
+  Vec3 position = offsetOrigin(entry, outwardNormal, direction);
+  const Color sigmaS = medium.sigmaS();
+  Color weight = Color::Ones();
+  for (int step = 0; step < kMaxSubsurfaceSteps; ++step) {
+    const Color probabilities = channelProbabilities(weight);
+    if ((probabilities <= 0.0f).all()) return std::nullopt;
+    const int channel = pickChannel(probabilities, sampler.get1D());
+    // Free flight in the chosen channel: t ~ sigma_t exp(-sigma_t t) (pbrt-v4 §11.2.2 SampleExponential).
+    const float distance = -std::log1p(-sampler.get1D()) / medium.sigmaT[channel];
+    SurfaceHit hit;
+    ++rays;
+    if (!scene.intersect(Ray{position, direction, time}, hit)) return std::nullopt;  // an open mesh: lost
+    if (hit.distance <= distance) {
+      // Left the medium: P(flight > d) = sum_c p_c exp(-sigma_t,c d) over the channel mixture.
+      if (hit.lightIndex >= 0) return std::nullopt;
+      const Color transmittance = (-medium.sigmaT * hit.distance).exp();
+      const float pdf = (probabilities * transmittance).sum();
+      if (pdf <= 0.0f) return std::nullopt;
+      weight *= transmittance / pdf;
+      const Vec3 ng = hit.geometricNormal.dot(direction) > 0.0f ? hit.geometricNormal : Vec3(-hit.geometricNormal);
+      const Vec3 ns = hit.shadingNormal.dot(ng) > 0.0f ? hit.shadingNormal : Vec3(-hit.shadingNormal);
+      return SubsurfaceExit{hit.position, ng, ns, weight};
+    }
+    // Scattered: weight sigma_s T(t) / p(t), p(t) = sum_c p_c sigma_t,c exp(-sigma_t,c t) (pbrt-v4 §14.1.3).
+    const Color transmittance = (-medium.sigmaT * distance).exp();
+    const float pdf = (probabilities * medium.sigmaT * transmittance).sum();
+    if (pdf <= 0.0f) return std::nullopt;
+    weight *= sigmaS * transmittance / pdf;
+    position += distance * direction;
+    direction = sampleUniformSphere(sampler.get2D());  // isotropic phase function
+  }
+  return std::nullopt;  // the step cap (kMaxSubsurfaceSteps): absorbed, the documented bias
+}
+
+}  // namespace lacrima

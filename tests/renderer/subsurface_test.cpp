@@ -1,0 +1,134 @@
+// Random-walk subsurface scattering end to end (lacrima/materials/subsurface.hpp,
+// renderer/src/subsurface_walk.hpp): energy conservation in a furnace, the diffuse reflectance of
+// a semi-infinite medium against Chandrasekhar's H-function, determinism. Tolerances are
+// statistical (5 standard errors of the pixel mean, test_scenes.hpp) plus a stated floor.
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+#include "lacrima/geometry/shapes.hpp"
+#include "lacrima/materials/subsurface.hpp"
+#include "lacrima/renderer/render.hpp"
+#include "support/chandrasekhar_h.hpp"
+#include "support/test_scenes.hpp"
+
+namespace lacrima {
+namespace {
+
+using test::lookAt;
+using test::smallSettings;
+
+// Index-matched skin (ior 1: no Fresnel, so no specular reflection and no entry/exit loss) whose
+// base is a random walk with these mean free paths.
+SkinParams indexMatchedSubsurfaceSkin(const Color& albedo, const Color& meanFreePath) {
+  SkinParams skin;
+  skin.albedo = albedo;
+  skin.ior = 1.0f;
+  skin.subsurface = SubsurfaceParams{meanFreePath};
+  return skin;
+}
+
+// Furnace: zero absorption (albedo 1 gives single-scattering albedo 1) in a closed sphere under a
+// uniform environment of radiance 1: every walk leaves again and every exit sees the
+// environment, so the camera sees exactly 1. Per-channel mean free paths differ, so the channel
+// MIS weights are exercised; the sphere is 4-10 mean free paths across, far from the step cap.
+TEST(Subsurface, FurnaceSphereWithoutAbsorptionReturnsTheEnvironment) {
+  Frame frame;
+  frame.materials.push_back(
+      Material{"skin", indexMatchedSubsurfaceSkin(Color::Ones(), Color(0.25f, 0.15f, 0.1f)), Color::Zero()});
+  frame.spheres.push_back(Sphere{Vec3::Zero(), 0.5f, 0});
+  frame.uniformBackground = Color::Ones();
+  frame.camera = lookAt(Vec3(0, 0, 3), Vec3::Zero(), 15.0f);  // every pixel sees the sphere
+  frame.settings = smallSettings(32, 256, 10);
+  const Film film = renderFrame(frame);
+  const test::MeanEstimate e = test::channelMean(film, 0);
+  std::printf("[subsurface] furnace: %.5f +- %.5f (exact 1)\n", e.mean, e.standardError);
+  test::expectMean(film, 1.0, 1e-4);
+}
+
+// The same sphere with absorption (albedo 0.5) must come out darker: the furnace can fail.
+TEST(Subsurface, FurnaceSphereWithAbsorptionIsDarker) {
+  Frame frame;
+  frame.materials.push_back(
+      Material{"skin", indexMatchedSubsurfaceSkin(Color::Constant(0.5f), Color::Constant(0.1f)), Color::Zero()});
+  frame.spheres.push_back(Sphere{Vec3::Zero(), 0.5f, 0});
+  frame.uniformBackground = Color::Ones();
+  frame.camera = lookAt(Vec3(0, 0, 3), Vec3::Zero(), 15.0f);
+  frame.settings = smallSettings(16, 32, 10);
+  const test::MeanEstimate e = test::channelMean(renderFrame(frame), 0);
+  EXPECT_LT(e.mean + 5.0 * e.standardError, 0.9);
+}
+
+// van de Hulst's white-sky albedo of a semi-infinite isotropic medium, A = (1 - s)(1 - 0.139 s) /
+// (1 + 1.17 s), s = sqrt(1 - a): the skin albedo that singleScatteringAlbedoFor maps back to a.
+float skinAlbedoForSingleScatteringAlbedo(double a) {
+  const double s = std::sqrt(1.0 - a);
+  return float((1.0 - s) * (1.0 - 0.139 * s) / (1.0 + 1.17 * s));
+}
+
+// A closed box: top face at y = 0, `half` wide each way, `depth` deep, six rectangles.
+void addBox(Frame& frame, float half, float depth, uint32_t materialId) {
+  const float y = -0.5f * depth;
+  const Vec3 x(2 * half, 0, 0), z(0, 0, 2 * half), h(0, depth, 0);
+  for (const auto& [center, u, v] :
+       {std::tuple{Vec3(0, 0, 0), x, z}, std::tuple{Vec3(0, -depth, 0), x, z}, std::tuple{Vec3(half, y, 0), h, z},
+        std::tuple{Vec3(-half, y, 0), h, z}, std::tuple{Vec3(0, y, half), x, h}, std::tuple{Vec3(0, y, -half), x, h}})
+    frame.meshes.push_back(MeshInstance{makeRectangle(center, u, v), materialId});
+}
+
+// Semi-infinite slab: a box thousands of mean free paths wide and deep, index-matched, under a
+// uniform environment of radiance 1. The walk enters in a cosine-distributed direction (which is
+// how light from a uniform sky enters) and leaves through a cosine lobe, so the radiance seen
+// from anywhere above is the white-sky (spherical) albedo
+//   A_diffuse(a) = 1 - 2 sqrt(1 - a) integral_0^1 H(mu) mu dmu
+// computed from the H-function (support/chandrasekhar_h.hpp). R, G, B carry single-scattering
+// albedos 0.5, 0.9, 0.99 and different mean free paths in one render (channel MIS). Floor: 1%
+// of the reference, for the step cap's bias at a = 0.99 and the finite box.
+TEST(Subsurface, SemiInfiniteSlabReflectsTheChandrasekharWhiteSkyAlbedo) {
+  const double singleScattering[3] = {0.5, 0.9, 0.99};
+  Color albedo;
+  for (int c = 0; c < 3; ++c) albedo[c] = skinAlbedoForSingleScatteringAlbedo(singleScattering[c]);
+  const SkinParams skin = indexMatchedSubsurfaceSkin(albedo, Color(0.02f, 0.01f, 0.005f));
+  for (int c = 0; c < 3; ++c)
+    ASSERT_NEAR(subsurfaceMedium(skin, *skin.subsurface).singleScatteringAlbedo[c], singleScattering[c], 1e-4);
+  Frame frame;
+  frame.materials.push_back(Material{"skin", skin, Color::Zero()});
+  addBox(frame, 50.0f, 50.0f, 0);
+  frame.uniformBackground = Color::Ones();
+  frame.camera = lookAt(Vec3(0, 2, 1), Vec3::Zero(), 10.0f);
+  frame.settings = smallSettings(24, 64, 10);
+  const Film film = renderFrame(frame);
+  for (int c = 0; c < 3; ++c) {
+    const double reference = test::semiInfiniteWhiteSkyAlbedo(singleScattering[c]);
+    const test::MeanEstimate e = test::channelMean(film, c);
+    std::printf("[subsurface] a = %.2f: rendered %.4f +- %.4f, H-function white-sky albedo %.4f\n",
+                singleScattering[c], e.mean, e.standardError, reference);
+    EXPECT_NEAR(e.mean, reference, 5.0 * e.standardError + 0.01 * reference) << "channel " << c;
+  }
+}
+
+TEST(Subsurface, OneAndTwoThreadsGiveBitwiseEqualFilms) {
+  Frame frame;
+  SkinParams skin;
+  skin.subsurface = SubsurfaceParams{Color(0.05f, 0.03f, 0.02f)};
+  frame.materials.push_back(Material{"skin", skin, Color::Zero()});
+  frame.spheres.push_back(Sphere{Vec3::Zero(), 0.5f, 0});
+  AreaLight light;
+  light.center = Vec3(0, 2, 0);
+  light.edgeU = Vec3(1, 0, 0);
+  light.edgeV = Vec3(0, 0, 1);  // emits downwards
+  light.radiance = Color::Constant(5.0f);
+  frame.lights.push_back(light);
+  frame.uniformBackground = Color(0.1f, 0.1f, 0.2f);
+  frame.camera = lookAt(Vec3(0, 0.5f, 3), Vec3::Zero(), 25.0f);
+  frame.settings = smallSettings(24, 8, 6);
+  frame.settings.threads = 1;
+  const Film one = renderFrame(frame);
+  frame.settings.threads = 2;
+  const Film two = renderFrame(frame);
+  ASSERT_EQ(one.rgba.size(), two.rgba.size());
+  EXPECT_EQ(std::memcmp(one.rgba.data(), two.rgba.data(), one.rgba.size() * sizeof(float)), 0);
+}
+
+}  // namespace
+}  // namespace lacrima
