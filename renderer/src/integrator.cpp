@@ -55,6 +55,7 @@ PathIntegrator::PathIntegrator(const Frame& frame, const EmbreeScene& scene, con
     media_.push_back(dielectricMedium(material.params));
     if (media_.back() && media_.back()->priority > 0) nested_ = true;
   }
+  for (const auto& medium : media_) dielectricIndex_.push_back(medium ? medium->ior : 0.0f);
   if (!nested_) return;
   // Every real interface a path can meet, built once: dielectric `hit` of priority >= 1 against
   // each medium that can surround it.
@@ -329,7 +330,8 @@ PathIntegrator::Below PathIntegrator::scatterBelowSurface(const SubsurfaceSkin& 
   }
   // Entry pays the Fresnel transmission of the base it replaces (skin.hpp, subsurface.hpp).
   const float entry = 1.0f - fresnelDielectric(v.woLocal.z(), skin.ior);
-  const auto exit = walkBelowSurface(scene_, skin.medium, v.position, v.geometricNormal, v.time, sampler, counters.rays);
+  const auto exit = walkBelowSurface(scene_, skin.medium, dielectricIndex_, v.position, v.geometricNormal, v.time,
+                                     sampler, counters.rays);
   if (!exit) return Below::Absorbed;
   throughput *= exit->weight * (entry / (1.0f - pSpecular));
   v.position = exit->position;

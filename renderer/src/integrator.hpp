@@ -87,6 +87,7 @@ class PathIntegrator {
   std::vector<std::unique_ptr<Bsdf>> pairBsdfs_;
   MediumStack cameraMedia_;
   std::vector<std::optional<SubsurfaceSkin>> subsurface_;  // per material; none unless skin with subsurface
+  std::vector<float> dielectricIndex_;  // per material: a dielectric's index, 0 if opaque (subsurface walks)
 };
 
 }  // namespace lacrima

@@ -32,16 +32,53 @@ int pickChannel(const Color& probabilities, float u) {
   return last;
 }
 
+enum class FlightEnd { Scattered, Surface, Lost };
+
+// Follows a free flight of length `distance`: Surface when it meets a surface that ends the walk
+// first (hit.distance then counts from ray.origin), Scattered when it does not. Surfaces of
+// dielectrics (a drop sitting on the skin reaches into it) are crossed as if absent. Lost when nothing is hit (an open mesh) or too many surfaces were crossed.
+FlightEnd flyToSurface(const EmbreeScene& scene, const std::vector<float>& dielectricIndex, Ray ray, float distance,
+                       SurfaceHit& hit, uint64_t& rays) {
+  constexpr int kMaxCrossed = 16;
+  float travelled = 0.0f;
+  for (int crossed = 0; crossed <= kMaxCrossed; ++crossed) {
+    ++rays;
+    if (!scene.intersect(ray, hit)) return FlightEnd::Lost;
+    if (travelled + hit.distance > distance) return FlightEnd::Scattered;
+    if (hit.lightIndex >= 0 || dielectricIndex[hit.materialId] == 0.0f) {
+      hit.distance += travelled;
+      return FlightEnd::Surface;
+    }
+    const Vec3 next = offsetOrigin(hit.position, hit.geometricNormal, ray.direction);
+    travelled += (next - ray.origin).dot(ray.direction);
+    ray.origin = next;
+  }
+  return FlightEnd::Lost;
+}
+
+// The refractive index of what lies outside the skin at a surface point: the first surface along
+// the outward normal decides; a dielectric's surface seen from inside means the point is under
+// it (a drop on the skin), anything else means air (1).
+float outsideIndex(const EmbreeScene& scene, const std::vector<float>& dielectricIndex, const Vec3& position,
+                   const Vec3& outwardNormal, float time, uint64_t& rays) {
+  SurfaceHit hit;
+  ++rays;
+  if (!scene.intersect(Ray{offsetOrigin(position, outwardNormal, outwardNormal), outwardNormal, time}, hit)) return 1.0f;
+  const bool leavesIt = hit.geometricNormal.dot(outwardNormal) > 0.0f;
+  return hit.lightIndex < 0 && leavesIt && dielectricIndex[hit.materialId] > 0.0f ? dielectricIndex[hit.materialId] : 1.0f;
+}
+
 }  // namespace
 
 std::optional<SubsurfaceExit> walkBelowSurface(const EmbreeScene& scene, const SubsurfaceMedium& medium,
-                                               const Vec3& entry, const Vec3& outwardNormal, float time,
+                                               const std::vector<float>& dielectricIndex, const Vec3& entry, const Vec3& outwardNormal, float time,
                                                PixelSampler& sampler, uint64_t& rays) {
   // Lambertian entry: cosine-distributed about the inward normal (subsurface.hpp).
   Vec3 direction = ShadingFrame::fromNormal(-outwardNormal).toWorld(sampleCosineHemisphere(sampler.get2D())).normalized();
   Vec3 position = offsetOrigin(entry, outwardNormal, direction);
   const Color sigmaS = medium.sigmaS();
   Color weight = Color::Ones();
+  const float entryIndex = outsideIndex(scene, dielectricIndex, entry, outwardNormal, time, rays);
   for (int step = 0; step < kMaxSubsurfaceSteps; ++step) {
     const Color probabilities = channelProbabilities(weight);
     if ((probabilities <= 0.0f).all()) return std::nullopt;
@@ -49,9 +86,9 @@ std::optional<SubsurfaceExit> walkBelowSurface(const EmbreeScene& scene, const S
     // Free flight in the chosen channel: t ~ sigma_t exp(-sigma_t t) (pbrt-v4 §11.2.2 SampleExponential).
     const float distance = -std::log1p(-sampler.get1D()) / medium.sigmaT[channel];
     SurfaceHit hit;
-    ++rays;
-    if (!scene.intersect(Ray{position, direction, time}, hit)) return std::nullopt;  // an open mesh: lost
-    if (hit.distance <= distance) {
+    const FlightEnd end = flyToSurface(scene, dielectricIndex, Ray{position, direction, time}, distance, hit, rays);
+    if (end == FlightEnd::Lost) return std::nullopt;
+    if (end == FlightEnd::Surface) {
       // Left the medium: P(flight > d) = sum_c p_c exp(-sigma_t,c d) over the channel mixture.
       if (hit.lightIndex >= 0) return std::nullopt;
       const Color transmittance = (-medium.sigmaT * hit.distance).exp();
@@ -60,6 +97,10 @@ std::optional<SubsurfaceExit> walkBelowSurface(const EmbreeScene& scene, const S
       weight *= transmittance / pdf;
       const Vec3 ng = hit.geometricNormal.dot(direction) > 0.0f ? hit.geometricNormal : Vec3(-hit.geometricNormal);
       const Vec3 ns = hit.shadingNormal.dot(ng) > 0.0f ? hit.shadingNormal : Vec3(-hit.shadingNormal);
+      // Radiance scales with the square of the index of the medium it is in (L / n^2 is conserved,
+      // pbrt-v4 §9.5.2): a walk from under a drop out into air, or back, carries that ratio.
+      const float ratio = entryIndex / outsideIndex(scene, dielectricIndex, hit.position, ng, time, rays);
+      weight *= ratio * ratio;
       return SubsurfaceExit{hit.position, ng, ns, weight};
     }
     // Scattered: weight sigma_s T(t) / p(t), p(t) = sum_c p_c sigma_t,c exp(-sigma_t,c t) (pbrt-v4 §14.1.3).

@@ -2,6 +2,7 @@
 // The random walk below a subsurface skin (lacrima/materials/subsurface.hpp for the model).
 #include <cstdint>
 #include <optional>
+#include <vector>
 
 #include "embree_scene.hpp"
 #include "lacrima/geometry/sampler.hpp"
@@ -27,11 +28,15 @@ struct SubsurfaceExit {
 // Walks from `entry` (a surface point whose geometric normal `outwardNormal` points away from the
 // medium) into the medium: a cosine-distributed entry direction, exponential free flights with
 // one-sample MIS over the channels, isotropic scattering. The walk ends at the first surface it
-// meets from inside, whatever that surface is (an eyeball inside the head ends it too). Nothing
-// when it ends on a light, escapes an open mesh, or reaches kMaxSubsurfaceSteps. `rays` counts
-// the ray queries.
+// meets from inside (an eyeball inside the head ends it too), except surfaces of dielectrics
+// (dielectricIndex[materialId] > 0: their refractive index; 0 for opaque materials), which it
+// crosses as if absent, since a drop sitting on the skin reaches into it. When the skin at the
+// entry or the exit lies under a dielectric (a drop), the weight carries (n_entry / n_exit)^2,
+// the radiance scaling between the two media; the skin's own Fresnel stays that against air.
+// Nothing when it ends on a light, escapes an open mesh, or reaches kMaxSubsurfaceSteps. `rays`
+// counts the ray queries.
 std::optional<SubsurfaceExit> walkBelowSurface(const EmbreeScene& scene, const SubsurfaceMedium& medium,
-                                               const Vec3& entry, const Vec3& outwardNormal, float time,
+                                               const std::vector<float>& dielectricIndex, const Vec3& entry, const Vec3& outwardNormal, float time,
                                                PixelSampler& sampler, uint64_t& rays);
 
 }  // namespace lacrima

@@ -46,6 +46,26 @@ TEST(Subsurface, FurnaceSphereWithoutAbsorptionReturnsTheEnvironment) {
   test::expectMean(film, 1.0, 1e-4);
 }
 
+// A water drop half sunk into the furnace sphere: the walk crosses the drop's surfaces below the
+// skin as if absent, and a walk between skin under the drop and skin in air carries the radiance
+// ratio (n_entry / n_exit)^2. Water and walk are lossless, so the camera still sees exactly 1
+// (without the ratio it saw 0.785 here: the skin under a drop went grey).
+TEST(Subsurface, FurnaceSphereWithASunkenWaterDropReturnsTheEnvironment) {
+  Frame frame;
+  frame.materials.push_back(
+      Material{"skin", indexMatchedSubsurfaceSkin(Color::Ones(), Color::Constant(0.1f)), Color::Zero()});
+  frame.materials.push_back(Material{"water", SmoothDielectricParams{}, Color::Zero()});
+  frame.spheres.push_back(Sphere{Vec3::Zero(), 0.5f, 0});
+  frame.spheres.push_back(Sphere{Vec3(0, 0, 0.45f), 0.2f, 1});
+  frame.uniformBackground = Color::Ones();
+  frame.camera = lookAt(Vec3(0, 0, 3), Vec3(0, 0, 0.45f), 7.0f);  // the drop and the skin around it
+  frame.settings = smallSettings(24, 128, 100);
+  const Film film = renderFrame(frame);
+  const test::MeanEstimate e = test::channelMean(film, 0);
+  std::printf("[subsurface] furnace with drop: %.5f +- %.5f (exact 1)\n", e.mean, e.standardError);
+  test::expectMean(film, 1.0, 1e-3);
+}
+
 // The same sphere with absorption (albedo 0.5) must come out darker: the furnace can fail.
 TEST(Subsurface, FurnaceSphereWithAbsorptionIsDarker) {
   Frame frame;
