@@ -4,6 +4,8 @@
 #include <limits>
 #include <vector>
 
+#include "lacrima/materials/wet_skin.hpp"
+
 namespace lacrima {
 
 namespace {
@@ -19,6 +21,15 @@ float powerHeuristic(float pdfA, float pdfB) {
 Vec3 offsetOrigin(const Vec3& position, const Vec3& geometricNormal, const Vec3& direction) {
   const float scale = 1e-4f * std::max(0.05f, position.cwiseAbs().maxCoeff());
   return position + (direction.dot(geometricNormal) > 0.0f ? scale : -scale) * geometricNormal;
+}
+
+// Wet skin (MeshInstance::wetness, materials/wet_skin.hpp): a skin hit under a water film shades
+// with the skin's BSDF under that film, built in `storage` (on the stack, no allocation per hit).
+const Bsdf* underSkinFilm(const Bsdf* bsdf, const Material& material, float filmThickness,
+                          std::optional<WetSkinBsdf>& storage) {
+  if (!(filmThickness > 0.0f) || !std::holds_alternative<SkinParams>(material.params)) return bsdf;
+  storage.emplace(static_cast<const SkinBsdf&>(*bsdf), wetFilmCoverage(filmThickness));
+  return &*storage;
 }
 
 constexpr int kRussianRouletteDepth = 3;
@@ -248,6 +259,8 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
     v.bsdf = bsdfs_[hit.materialId].get();
     if (nested_ && isDielectric(hit.materialId))
       v.bsdf = interfaceBsdf(hit.materialId, classifyInterface(media, hit.materialId, frontFacing).otherMaterial);
+    std::optional<WetSkinBsdf> wetSkin;  // v.bsdf may point here for this bounce
+    v.bsdf = underSkinFilm(v.bsdf, material, hit.wetness, wetSkin);
     if (!v.bsdf->isTransmissive()) {
       // Opaque surfaces are two-sided: shade the side the ray arrives from.
       if (!frontFacing) { ng = -ng; ns = -ns; }
