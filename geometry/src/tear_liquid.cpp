@@ -205,6 +205,11 @@ double TearLiquidSimulation::filmThicknessAt(double s) const {
   return cellThickness(cellAt(s));
 }
 
+double TearLiquidSimulation::filmWidthAt(double s) const {
+  if (!(s >= 0.0 && s <= pathLength_)) return 0.0;
+  return cellWidth_[cellAt(s)];
+}
+
 // Wetness met by the bead's front contact line (ignoring film the bead laid itself).
 double TearLiquidSimulation::wetnessAhead(const Bead& bead, int id) const {
   const size_t cell = cellAt(std::min(bead.arcLength + baseRadius(bead.volume), pathLength_));

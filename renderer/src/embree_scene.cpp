@@ -13,6 +13,13 @@ namespace lacrima {
 
 namespace {
 
+// Hits interpolate MeshInstance::wetness per vertex: it must be empty or one value per vertex.
+void checkWetness(const MeshInstance& instance) {
+  if (!instance.wetness.empty() && instance.wetness.size() != instance.mesh.vertexCount())
+    throw std::invalid_argument(fmt::format("mesh '{}': {} wetness values for {} vertices", instance.mesh.name,
+                                            instance.wetness.size(), instance.mesh.vertexCount()));
+}
+
 void reportEmbreeError(void*, RTCError code, const char* message) {
   // Embree errors here are programming errors (bad buffers), not user input: fail loudly.
   throw std::runtime_error(fmt::format("Embree error {}: {}", int(code), message ? message : ""));
@@ -51,6 +58,7 @@ EmbreeScene::EmbreeScene(const Frame& frame, int threads) : frame_(&frame), thre
 
   for (uint32_t i = 0; i < frame.meshes.size(); ++i) {
     const MeshInstance& instance = frame.meshes[i];
+    checkWetness(instance);
     meshGeometry_.push_back(addMesh(instance.mesh, Kind::Mesh, i, instance.moves() ? &instance.positionsAtClose : nullptr));
   }
   for (uint32_t i = 0; i < frame.spheres.size(); ++i) {
@@ -185,6 +193,7 @@ void EmbreeScene::refitTo(const Frame& frame) {
   frame_ = &frame;
   for (size_t i = 0; i < frame.meshes.size(); ++i) {
     const MeshInstance& instance = frame.meshes[i];
+    checkWetness(instance);
     moveMesh(instance.mesh, instance.moves() ? &instance.positionsAtClose : nullptr, meshGeometry_[i]);
   }
   for (size_t i = 0; i < frame.spheres.size(); ++i) {
@@ -248,6 +257,8 @@ void EmbreeScene::surfaceOfMesh(const MeshInstance& instance, float time, const 
   } else {
     hit.shadingNormal = hit.geometricNormal;
   }
+  const std::vector<float>& film = instance.wetness;
+  hit.wetness = film.empty() ? 0.0f : w * film[tri[0]] + u * film[tri[1]] + v * film[tri[2]];
 }
 
 bool EmbreeScene::intersect(const Ray& ray, SurfaceHit& hit) const {
@@ -276,6 +287,7 @@ bool EmbreeScene::intersect(const Ray& ray, SurfaceHit& hit) const {
       break;
     case Kind::Sphere:
     case Kind::SphereLight: {
+      hit.wetness = 0.0f;
       const bool isLight = record.kind == Kind::SphereLight;
       const Vec3 center = isLight ? frame_->lights[record.index].center : frame_->spheres[record.index].centerAt(ray.time);
       const float radius = isLight ? frame_->lights[record.index].radius : frame_->spheres[record.index].radius;

@@ -19,6 +19,7 @@ struct SurfaceHit {
   Vec3 shadingNormal;    // unit; interpolated vertex normal when the mesh has normals
   uint32_t materialId = 0;
   int lightIndex = -1;   // >= 0 when the surface is an area light (emits, does not reflect)
+  float wetness = 0.0f;  // film thickness (m) interpolated from MeshInstance::wetness; 0 = dry
 };
 
 // One Embree device and scene that can follow the frames of a shot. The BVH is two-level

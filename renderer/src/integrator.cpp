@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "lacrima/materials/fresnel.hpp"
+#include "lacrima/materials/wet_skin.hpp"
 #include "ray_offset.hpp"
 #include "subsurface_walk.hpp"
 
@@ -16,6 +17,15 @@ namespace {
 float powerHeuristic(float pdfA, float pdfB) {
   const float a = pdfA * pdfA, b = pdfB * pdfB;
   return a + b > 0.0f ? a / (a + b) : 0.0f;
+}
+
+// Wet skin (MeshInstance::wetness, materials/wet_skin.hpp): a skin hit under a water film shades
+// with the skin's BSDF under that film, built in `storage` (on the stack, no allocation per hit).
+const Bsdf* underSkinFilm(const Bsdf* bsdf, const Material& material, float filmThickness,
+                          std::optional<WetSkinBsdf>& storage) {
+  if (!(filmThickness > 0.0f) || !std::holds_alternative<SkinParams>(material.params)) return bsdf;
+  storage.emplace(static_cast<const SkinBsdf&>(*bsdf), wetFilmCoverage(filmThickness));
+  return &*storage;
 }
 
 constexpr int kRussianRouletteDepth = 3;
@@ -248,6 +258,8 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
     v.bsdf = bsdfs_[hit.materialId].get();
     if (nested_ && isDielectric(hit.materialId))
       v.bsdf = interfaceBsdf(hit.materialId, classifyInterface(media, hit.materialId, frontFacing).otherMaterial);
+    std::optional<WetSkinBsdf> wetSkin;  // v.bsdf may point here for this bounce
+    v.bsdf = underSkinFilm(v.bsdf, material, hit.wetness, wetSkin);
     if (!v.bsdf->isTransmissive()) {
       // Opaque surfaces are two-sided: shade the side the ray arrives from.
       if (!frontFacing) { ng = -ng; ns = -ns; }
@@ -267,8 +279,9 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
     if (depth >= maxDepth_) break;
 
     result += throughput * sampleDirectLight(v, media, sampler, counters);
-    if (subsurface_[hit.materialId]) {  // skin with subsurface: specular lobes or a random walk
-      const Below below = scatterBelowSurface(*subsurface_[hit.materialId], v, throughput, sampler, counters);
+    if (subsurface_[hit.materialId]) {  // skin with subsurface: v.bsdf's lobes or a random walk
+      const float dryFraction = 1.0f - (wetSkin ? wetSkin->coverage() : 0.0f);
+      const Below below = scatterBelowSurface(*subsurface_[hit.materialId], v, dryFraction, throughput, sampler, counters);
       if (below == Below::Absorbed) break;
       if (below == Below::Exited) {
         hit.position = v.position;  // the path goes on from the exit point
@@ -311,9 +324,12 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
   return result;
 }
 
-// Random-walk subsurface scattering (subsurface_walk.hpp). The skin's specular lobes are v.bsdf;
-// the Lambertian base they sat on is replaced by the walk. One of the two continues the path: the
-// walk with probability 1 - specularProbability(wo), the same split the skin BSDF samples with.
+// Random-walk subsurface scattering (subsurface_walk.hpp). v.bsdf holds the skin's specular lobes
+// (and, under a tear film, the wet layer of wet_skin.hpp, whose base stays Lambertian); the walk
+// replaces the Lambertian base of the dry fraction. One of the two continues the path: v.bsdf
+// with probability pB = c + (1 - c) specularProbability(wo) (c = film coverage), else the walk,
+// weighted (1 - c)(1 - F(cos_o)) / (1 - pB). Each branch divides by its probability, so the sum
+// is unbiased, and NEE with v.bsdf pairs with the v.bsdf branch's MIS weights.
 std::optional<PathIntegrator::SubsurfaceSkin> PathIntegrator::makeSubsurfaceSkin(const MaterialParams& params) {
   const auto* skin = std::get_if<SkinParams>(&params);
   if (!skin || !skin->subsurface) return std::nullopt;
@@ -321,19 +337,20 @@ std::optional<PathIntegrator::SubsurfaceSkin> PathIntegrator::makeSubsurfaceSkin
                         std::make_shared<SubsurfaceExitBsdf>(skin->ior), skin->ior};
 }
 
-PathIntegrator::Below PathIntegrator::scatterBelowSurface(const SubsurfaceSkin& skin, Vertex& v, Color& throughput,
-                                                          PixelSampler& sampler, PathCounters& counters) const {
-  const float pSpecular = skin.bsdf->specularProbability(v.woLocal);
-  if (sampler.get1D() < pSpecular) {
-    throughput /= pSpecular;
-    return Below::Specular;
+PathIntegrator::Below PathIntegrator::scatterBelowSurface(const SubsurfaceSkin& skin, Vertex& v, float dryFraction,
+                                                          Color& throughput, PixelSampler& sampler,
+                                                          PathCounters& counters) const {
+  const float pSurface = 1.0f - dryFraction * (1.0f - skin.bsdf->specularProbability(v.woLocal));
+  if (sampler.get1D() < pSurface) {
+    throughput /= pSurface;
+    return Below::Surface;
   }
   // Entry pays the Fresnel transmission of the base it replaces (skin.hpp, subsurface.hpp).
   const float entry = 1.0f - fresnelDielectric(v.woLocal.z(), skin.ior);
   const auto exit = walkBelowSurface(scene_, skin.medium, dielectricIndex_, v.position, v.geometricNormal, v.time,
                                      sampler, counters.rays);
   if (!exit) return Below::Absorbed;
-  throughput *= exit->weight * (entry / (1.0f - pSpecular));
+  throughput *= exit->weight * (dryFraction * entry / (1.0f - pSurface));
   v.position = exit->position;
   v.geometricNormal = exit->geometricNormal;
   v.frame = ShadingFrame::fromNormal(exit->shadingNormal);

@@ -67,12 +67,13 @@ class PathIntegrator {
     std::shared_ptr<const Bsdf> exitBsdf;
     float ior;
   };
-  enum class Below { Specular, Exited, Absorbed };
+  enum class Below { Surface, Exited, Absorbed };
   static std::optional<SubsurfaceSkin> makeSubsurfaceSkin(const MaterialParams& params);
-  // Picks the specular lobes (v unchanged) or a walk: then v becomes the exit vertex with the
-  // exit lobe, and throughput takes the walk's weight. Absorbed ends the path.
-  Below scatterBelowSurface(const SubsurfaceSkin& skin, Vertex& v, Color& throughput, PixelSampler& sampler,
-                            PathCounters& counters) const;
+  // Picks v.bsdf's lobes (Surface: v unchanged) or a walk below the dry fraction of the skin:
+  // then v becomes the exit vertex with the exit lobe, and throughput takes the walk's weight.
+  // Absorbed ends the path.
+  Below scatterBelowSurface(const SubsurfaceSkin& skin, Vertex& v, float dryFraction, Color& throughput,
+                            PixelSampler& sampler, PathCounters& counters) const;
 
   const Frame& frame_;
   const EmbreeScene& scene_;

@@ -71,6 +71,16 @@ void addAssetMeshes(const Shot& shot, size_t a, const PosedAssets& open, const P
   }
 }
 
+// The index in frame.meshes of asset a's primitive (addAssetMeshes adds every asset's visible
+// primitives first, in order); -1 for a hidden primitive.
+int assetMeshIndex(const Shot& shot, const PosedAssets& open, size_t a, size_t primitive) {
+  int index = 0;
+  for (size_t b = 0; b <= a; ++b)
+    for (size_t i = 0; i < open[b].size() && (b < a || i < primitive); ++i)
+      index += shot.assets[b].primitiveMaterials[i] >= 0 ? 1 : 0;
+  return shot.assets[a].primitiveMaterials[primitive] >= 0 ? index : -1;
+}
+
 // The shape's center at a time: its keys, moved with the skin when it is attached.
 Vec3 shapeCenterAt(const ShotShape& shape, double frame, const PosedAssets& posed) {
   Vec3 center = shape.centerCurve ? shape.centerCurve->evaluate(float(frame)) : shape.center;
@@ -255,7 +265,8 @@ Frame buildFrame(const Shot& shot, int frameNumber) {
     addSheddingTear(shot, tear, frameNumber, shutter, open, closePtr, frame);
   for (const ShotLiquidTear& tear : shot.liquidTears)
     shotfile::addLiquidTear(shot, tear, shutter.open, shutter.close, open[tear.asset],
-                            closePtr ? &(*closePtr)[tear.asset] : nullptr, frame);
+                            closePtr ? &(*closePtr)[tear.asset] : nullptr,
+                            assetMeshIndex(shot, open, tear.asset, tear.sourcePoint.primitive), frame);
 
   frame.lights = shot.lights;
   for (size_t i = 0; i < frame.lights.size() && i < shot.lightCenterCurves.size(); ++i)

@@ -6,6 +6,7 @@
 
 #include "lacrima/geometry/liquid_bead_mesh.hpp"
 #include "lacrima/scenes/liquid_tear.hpp"
+#include "liquid_tear_film.hpp"
 
 namespace lacrima {
 
@@ -78,7 +79,8 @@ const T* findById(const std::vector<T>& items, int id, int T::*key) {
 }  // namespace
 
 void addLiquidTear(const Shot& shot, const ShotLiquidTear& tear, double shutterOpen, double shutterClose,
-                   const std::vector<TriangleMesh>& openSkin, const std::vector<TriangleMesh>* closeSkin, Frame& frame) {
+                   const std::vector<TriangleMesh>& openSkin, const std::vector<TriangleMesh>* closeSkin, int skinMesh,
+                   Frame& frame) {
   if (tear.input.path.empty() || openSkin.empty()) return;  // not resolved (not from loadShot)
   const bool blurred = shutterClose > shutterOpen;
   // One simulation, advanced to shutter open and then to close: bitwise what two fresh ones give.
@@ -86,12 +88,14 @@ void addLiquidTear(const Shot& shot, const ShotLiquidTear& tear, double shutterO
   const double tOpen = liquidTearSeconds(shot, tear, shutterOpen), tClose = liquidTearSeconds(shot, tear, shutterClose);
   simulation.advanceTo(tOpen);
   const TearLiquidState open = simulation.state(tOpen);
+  const size_t primitive = tear.sourcePoint.primitive;
+  // The wet trail, as at shutter open (it dries over seconds: no blur).
+  if (skinMesh >= 0) addLiquidTearFilm(tear, simulation, openSkin[primitive], frame.meshes[size_t(skinMesh)].wetness);
   TearLiquidState close = open;
   if (blurred) {
     simulation.advanceTo(tClose);
     close = simulation.state(tClose);
   }
-  const size_t primitive = tear.sourcePoint.primitive;
   const TriangleMesh& skinOpen = openSkin[primitive];
   const TriangleMesh& skinClose = closeSkin && !closeSkin->empty() ? (*closeSkin)[primitive] : skinOpen;
   for (const BeadView& bead : open.beads) {

@@ -13,7 +13,10 @@ inline constexpr float kLiquidBeadBaseOffset = 2e-5f;  // metres
 // close when given) and its falling drops (spheres, centerAtClose at shutter close) at the frame
 // whose shutter opens at frame `open` and closes at `close` (fractional frames; equal: no blur).
 // openSkin / closeSkin: the asset's posed primitives (closeSkin null or empty: as at open).
+// skinMesh: the index in frame.meshes of the primitive the tear runs over (-1: not rendered); its
+// wetness gets the tear's wet trail at shutter open (liquid_tear_film.hpp).
 void addLiquidTear(const Shot& shot, const ShotLiquidTear& tear, double shutterOpen, double shutterClose,
-                   const std::vector<TriangleMesh>& openSkin, const std::vector<TriangleMesh>* closeSkin, Frame& frame);
+                   const std::vector<TriangleMesh>& openSkin, const std::vector<TriangleMesh>* closeSkin, int skinMesh,
+                   Frame& frame);
 
 }  // namespace lacrima::shotfile

@@ -1,13 +1,15 @@
 #pragma once
 // The non-delta BSDF configurations exercised by the statistical tests: every family, several
 // roughness values, light arriving from outside and (for the dielectric) from inside, near normal
-// (|cos| = 0.99) and grazing (|cos| = 0.15) incidence.
+// (|cos| = 0.99) and grazing (|cos| = 0.15) incidence. Wet skin (wet_skin.hpp) is skin params
+// with a film coverage > 0.
 #include <functional>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "lacrima/materials/material.hpp"
+#include "lacrima/materials/wet_skin.hpp"
 #include "test_support.hpp"
 
 namespace lacrima::test {
@@ -16,7 +18,14 @@ struct BsdfCase {
   std::string name;
   MaterialParams params;
   float cosThetaO;  // negative: wo inside the medium (below the surface)
+  float wetCoverage = 0.0f;  // > 0: a WetSkinBsdf over the SkinParams with this film coverage
 };
+
+// makeBsdf, or the wet skin when wetCoverage > 0 (params must then be SkinParams).
+inline std::unique_ptr<Bsdf> makeCaseBsdf(const MaterialParams& params, float wetCoverage) {
+  if (wetCoverage > 0.0f) return std::make_unique<WetSkinBsdf>(SkinBsdf(std::get<SkinParams>(params)), wetCoverage);
+  return makeBsdf(params);
+}
 
 inline Vec3 caseWo(const BsdfCase& c) { return directionFromCosPhi(c.cosThetaO, 0.3); }
 
@@ -55,6 +64,15 @@ inline std::vector<BsdfCase> chi2Cases() {
     p.lobeMix = 0.5f;
     p.subsurface = SubsurfaceParams{};
     cases.push_back({std::string("skin_subsurface_") + incidence, p, cosO});
+  }
+  // Wet skin: half and fully covered, over a dual-lobe skin.
+  for (const auto& [label, coverage] : {std::pair{"c05", 0.5f}, std::pair{"c1", 1.0f}}) {
+    for (const auto& [incidence, cosO] : {std::pair{"normal", 0.99f}, std::pair{"grazing", 0.15f}}) {
+      SkinParams p;
+      p.roughness2 = 0.6f;
+      p.lobeMix = 0.3f;
+      cases.push_back({std::string("wet_skin_") + label + "_" + incidence, p, cosO, coverage});
+    }
   }
   for (const auto& [label, roughness] : {std::pair{"r02", 0.2f}, std::pair{"r05", 0.5f}, std::pair{"r09", 0.9f}}) {
     for (const auto& [side, sign] : {std::pair{"outside", 1.0f}, std::pair{"inside", -1.0f}}) {

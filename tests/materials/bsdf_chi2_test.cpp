@@ -37,7 +37,7 @@ class BsdfChi2 : public ::testing::TestWithParam<test::BsdfCase> {};
 
 TEST_P(BsdfChi2, SampleMatchesPdf) {
   const test::BsdfCase& c = GetParam();
-  const auto bsdf = makeBsdf(c.params);
+  const auto bsdf = test::makeCaseBsdf(c.params, c.wetCoverage);
   const Vec3 wo = test::caseWo(c);
   test::Chi2Options options;
   options.testCount = test::kChi2TestCount;

@@ -22,6 +22,7 @@ struct NamedParams {
   std::string name;
   MaterialParams params;
   bool twoSided;  // light may arrive from below (dielectrics)
+  float wetCoverage = 0.0f;  // > 0: wet skin (bsdf_cases.hpp makeCaseBsdf)
 };
 
 std::vector<NamedParams> propertyMaterials() {
@@ -53,6 +54,14 @@ std::vector<NamedParams> propertyMaterials() {
   SkinParams subsurface = dual;  // the specular lobes alone (subsurface.hpp)
   subsurface.subsurface = SubsurfaceParams{};
   m.push_back({"skin_subsurface", subsurface, false});
+  // Wet skin: white bases (tightest energy bound) and the default skin, half and fully covered.
+  for (const float coverage : {0.5f, 1.0f}) {
+    SkinParams white;
+    white.albedo = Color(1.0f, 1.0f, 1.0f);
+    white.roughness = 0.1f;
+    m.push_back({"wet_skin_white_c" + std::to_string(coverage), white, false, coverage});
+    m.push_back({"wet_skin_c" + std::to_string(coverage), SkinParams{}, false, coverage});
+  }
   for (const float r : {0.2f, 0.5f, 0.9f}) {
     RoughDielectricParams p;
     p.roughness = r;
@@ -80,7 +89,7 @@ Vec3 randomWo(test::TestRng& rng, bool twoSided) {
 
 TEST(BsdfConsistency, SampleAgreesWithEvalAndPdf) {
   for (const auto& m : propertyMaterials()) {
-    const auto bsdf = makeBsdf(m.params);
+    const auto bsdf = test::makeCaseBsdf(m.params, m.wetCoverage);
     test::TestRng rng(1234);
     double maxErrF = 0.0;
     double maxErrPdf = 0.0;
@@ -138,7 +147,7 @@ TEST(BsdfReciprocity, ReflectionIsSymmetricAndTransmissionScalesWithEtaSquared) 
   // eta_o and eta_i the refractive indices on the sides of wo and wi, for the radiance BTDF
   // (Walter's eq. 21 has n_o^2 in its numerator). Reflection is the case eta_o = eta_i.
   for (const auto& m : propertyMaterials()) {
-    const auto bsdf = makeBsdf(m.params);
+    const auto bsdf = test::makeCaseBsdf(m.params, m.wetCoverage);
     test::TestRng rng(99);
     double maxErr = 0.0;
     int nonzero = 0;
@@ -227,7 +236,7 @@ McAlbedo monteCarloAlbedo(const Bsdf& bsdf, const Vec3& wo, bool physical, uint6
 
 TEST(BsdfEnergy, DirectionalAlbedoAtMostOne) {
   for (const auto& m : propertyMaterials()) {
-    const auto bsdf = makeBsdf(m.params);
+    const auto bsdf = test::makeCaseBsdf(m.params, m.wetCoverage);
     std::vector<float> cosines = {1.0f, 0.8f, 0.5f, 0.25f, 0.1f, 0.03f};
     if (m.twoSided) {
       for (int i = 0, n = int(cosines.size()); i < n; ++i) cosines.push_back(-cosines[i]);
@@ -262,7 +271,7 @@ TEST(BsdfEnergy, DielectricSamplerCoversTheWholeSupport) {
   // implies pdf > 0 for random pairs.
   for (const auto& m : propertyMaterials()) {
     if (!m.twoSided) continue;
-    const auto bsdf = makeBsdf(m.params);
+    const auto bsdf = test::makeCaseBsdf(m.params, m.wetCoverage);
     test::TestRng rng(17);
     for (int k = 0; k < 100000; ++k) {
       const Vec3 wo = rng.sphere();

@@ -8,6 +8,7 @@
 
 #include "lacrima/geometry/shapes.hpp"
 #include "lacrima/materials/subsurface.hpp"
+#include "lacrima/materials/wet_skin.hpp"
 #include "lacrima/renderer/render.hpp"
 #include "support/chandrasekhar_h.hpp"
 #include "support/test_scenes.hpp"
@@ -125,6 +126,45 @@ TEST(Subsurface, SemiInfiniteSlabReflectsTheChandrasekharWhiteSkyAlbedo) {
                 singleScattering[c], e.mean, e.standardError, reference);
     EXPECT_NEAR(e.mean, reference, 5.0 * e.standardError + 0.01 * reference) << "channel " << c;
   }
+}
+
+// Directional albedo of a BSDF at wo (midpoint rule in (cos theta, phi)).
+Color directionalAlbedo(const Bsdf& bsdf, const Vec3& wo) {
+  constexpr int kCos = 1000, kPhi = 360;
+  Color sum = Color::Zero();
+  for (int i = 0; i < kCos; ++i) {
+    const float c = (i + 0.5f) / kCos, s = std::sqrt(1.0f - c * c);
+    for (int j = 0; j < kPhi; ++j) {
+      const float phi = 2.0f * kPi * (j + 0.5f) / kPhi;
+      sum += bsdf.eval(wo, Vec3(s * std::cos(phi), s * std::sin(phi), c)) * c;
+    }
+  }
+  return sum * (2.0f * kPi / (float(kCos) * kPhi));
+}
+
+// Under a tear film of coverage c (wet_skin.hpp) the walk serves the dry fraction only: the slab
+// reflects (1 - c) A_diffuse(a) + c E_wet(wo), E_wet the wet layer's directional albedo (its base
+// stays Lambertian). Floor 1%: E_wet varies slightly over the 10-degree view.
+TEST(Subsurface, WetSlabMixesTheWalkAndTheWetLayerByCoverage) {
+  const double singleScattering = 0.9;
+  const SkinParams skin = indexMatchedSubsurfaceSkin(Color::Constant(skinAlbedoForSingleScatteringAlbedo(singleScattering)),
+                                                     Color::Constant(0.01f));
+  const float film = 1.5e-6f, coverage = wetFilmCoverage(film);
+  Frame frame;
+  frame.materials.push_back(Material{"skin", skin, Color::Zero()});
+  addBox(frame, 50.0f, 50.0f, 0);
+  frame.meshes.front().wetness.assign(frame.meshes.front().mesh.positions.size(), film);  // the top face
+  frame.uniformBackground = Color::Ones();
+  frame.camera = lookAt(Vec3(0, 2, 1), Vec3::Zero(), 10.0f);
+  frame.settings = smallSettings(24, 64, 10);
+  const Film rendered = renderFrame(frame);
+  const Vec3 wo = Vec3(0, 2, 1).normalized();  // local: the top face's normal is +y
+  const Color wet = directionalAlbedo(WetSkinBsdf(SkinBsdf(skin), 1.0f), Vec3(0, wo.z(), wo.y()));
+  const double expected = (1.0 - coverage) * test::semiInfiniteWhiteSkyAlbedo(singleScattering) + coverage * wet[0];
+  const test::MeanEstimate e = test::channelMean(rendered, 0);
+  std::printf("[subsurface] wet slab, coverage %.3f: rendered %.4f +- %.4f, expected %.4f\n", coverage, e.mean,
+              e.standardError, expected);
+  EXPECT_NEAR(e.mean, expected, 5.0 * e.standardError + 0.01 * expected);
 }
 
 TEST(Subsurface, OneAndTwoThreadsGiveBitwiseEqualFilms) {

@@ -28,13 +28,7 @@ const std::string kTear =
        "rate": 10, "overflowVolume": 10, "spillVolume": 8}])";
 constexpr int kFrames = 72;  // 3 s at 24 fps
 
-std::string tearWith(const std::string& from, const std::string& to) {
-  std::string s = kTear;
-  const size_t at = s.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  s.replace(at, from.size(), to);
-  return s;
-}
+std::string tearWith(const std::string& from, const std::string& to) { return test::replaced(kTear, from, to); }
 
 Shot loadTearShot(const std::string& name, const std::string& tear = kTear, const std::string& cameraExtra = "",
                   const std::string& asset = "") {

@@ -28,13 +28,7 @@ const std::string kTear =
        "startFrame": 2, "material": "water", "width": 0.004, "thickness": 0.0006, "start": 0.002, "speed": 0.05,
        "headLength": 0.002, "sampleSpacing": 0.001, "acrossSamples": 5, "skinRoughness": 0.3, "seed": 7}])";
 
-std::string tearWith(const std::string& from, const std::string& to) {
-  std::string s = kTear;
-  const size_t at = s.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  s.replace(at, from.size(), to);
-  return s;
-}
+std::string tearWith(const std::string& from, const std::string& to) { return test::replaced(kTear, from, to); }
 
 const MeshInstance* findMesh(const Frame& frame, const std::string& name) {
   for (const MeshInstance& m : frame.meshes)

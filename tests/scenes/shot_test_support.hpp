@@ -64,6 +64,14 @@ inline std::string ictFaceShot(const std::string& extra, const std::string& came
          (asset.empty() ? "" : ", " + asset) + "}]" + (extra.empty() ? "" : ",\n  " + extra) + "\n}\n";
 }
 
+// `text` with its first `from` replaced by `to` (a test failure when `from` is not in it).
+inline std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const size_t at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << "'" << from << "' is not in the text";
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
+}
+
 inline std::string firstLineOf(const std::string& s) { return s.substr(0, s.find('\n')); }
 
 // A shot that must fail with exactly one problem; `pointerAndMessage` is its JSON pointer and

@@ -193,15 +193,11 @@ TEST(DetailShot, SumOfPatternsAndAShutterBlurTheStillFace) {
 
 
 std::string tearWith(const std::string& from, const std::string& to) {
-  std::string s = kTear;
-  s.replace(s.find(from), from.size(), to);
-  return ictFaceShot(s);
+  return ictFaceShot(test::replaced(kTear, from, to));
 }
 
 std::string detailWith(const std::string& from, const std::string& to) {
-  std::string s = detail("1");
-  s.replace(s.find(from), from.size(), to);
-  return ictFaceShot(s);
+  return ictFaceShot(test::replaced(detail("1"), from, to));
 }
 
 TEST(DetailShot, PatternOriginMovesThePatternWithinTheSameRegion) {

@@ -197,6 +197,9 @@ class TearLiquidSimulation {
 
   // Film thickness (m) at arc length s; 0 off the path.
   double filmThicknessAt(double arcLength) const;
+  // Width (m) of the film at arc length s: the widest bead base that wetted its cell; 0 off the
+  // path or where no film was laid.
+  double filmWidthAt(double arcLength) const;
   // The state for rendering at time t, which must lie in the current step: advanceTo(t) first
   // (InputError otherwise). Beads are as of the last step; drops are placed at exactly t.
   TearLiquidState state(double t) const;

@@ -30,6 +30,10 @@ struct MeshInstance {
   // when the mesh does not move; normals at close are optional (the open normals otherwise).
   std::vector<Vec3> positionsAtClose;
   std::vector<Vec3> normalsAtClose;
+  // Water film on skin (a tear's wet trail): thickness in metres per vertex, interpolated
+  // barycentrically at a hit; empty = dry. Read only for skin materials, which then shade as
+  // wet skin (materials/wet_skin.hpp); the same at shutter open and close.
+  std::vector<float> wetness;
   bool moves() const { return !positionsAtClose.empty(); }
 };
 

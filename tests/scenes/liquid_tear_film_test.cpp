@@ -1,0 +1,138 @@
+// The wet trail of liquid tears on the skin mesh (MeshInstance::wetness, liquid_tear_film.hpp):
+// dry before the first bead, film along the path behind a sliding bead and none far from it,
+// drying after the bead has passed, and frames independent of their order.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <limits>
+
+#include "lacrima/geometry/surface_point.hpp"
+#include "lacrima/scenes/liquid_tear.hpp"
+#include "shot_test_support.hpp"
+
+namespace lacrima {
+namespace {
+
+using test::ictFaceShot;
+using test::writeShot;
+
+// One overflow at 1 s (frame 25; welling stops at frame 26): 14 uL run 7 cm down the cheek within
+// half a second and hang there; the film dries in 2 s so that drying shows within the shot.
+const std::string kTear =
+    R"("tears": [{"type": "liquid", "asset": "face", "part": "M_Face", "source": {"landmark": 39}, "material": "water",
+       "rate": 14, "overflowVolume": 14, "spillVolume": 14, "wellEnd": 26, "dryingTime": 2}])";
+constexpr int kFrames = 72;
+
+Shot loadFilmShot(const std::string& name) { return loadShot(writeShot(name, ictFaceShot(kTear, "", "", kFrames))); }
+
+// The skin the tear runs over, as rendered in the frame.
+const MeshInstance& skinOf(const Frame& frame, const Shot& shot) {
+  const std::string name = "face/" + shot.assets[0].gltf->primitives[shot.liquidTears[0].sourcePoint.primitive].name;
+  for (const MeshInstance& m : frame.meshes)
+    if (m.mesh.name == name) return m;
+  ADD_FAILURE() << "no mesh " << name;
+  return frame.meshes.front();
+}
+
+// The skin vertex nearest to a point.
+size_t nearestVertex(const TriangleMesh& mesh, const Vec3& p) {
+  size_t best = 0;
+  float bestDistance = std::numeric_limits<float>::infinity();
+  for (size_t v = 0; v < mesh.positions.size(); ++v) {
+    const float d = (mesh.positions[v] - p).squaredNorm();
+    if (d < bestDistance) {
+      bestDistance = d;
+      best = v;
+    }
+  }
+  return best;
+}
+
+// Arc length of the single bead at a frame (the test tear has one), or -1 without one.
+double beadArcLength(const Shot& shot, int frame) {
+  const TearLiquidState state = liquidTearStateAt(shot, shot.liquidTears[0], frame);
+  return state.beads.empty() ? -1.0 : state.beads.front().arcLength;
+}
+
+// A frame in which the bead has run at least 2 cm down the path.
+int frameAfterTheBeadRan(const Shot& shot) {
+  for (int f = 25; f <= kFrames; ++f)
+    if (beadArcLength(shot, f) > 0.02) return f;
+  ADD_FAILURE() << "the bead never ran 2 cm";
+  return kFrames;
+}
+
+TEST(LiquidTearFilm, SkinIsDryBeforeTheFirstBead) {
+  const Shot shot = loadFilmShot("film_dry.json");
+  ASSERT_LT(beadArcLength(shot, 20), 0.0);
+  EXPECT_TRUE(skinOf(buildFrame(shot, 20), shot).wetness.empty());
+}
+
+TEST(LiquidTearFilm, TrailBehindTheBeadIsWetAndFarSkinDry) {
+  const Shot shot = loadFilmShot("film_trail.json");
+  const int f = frameAfterTheBeadRan(shot);
+  const Frame frame = buildFrame(shot, f);
+  const MeshInstance& skin = skinOf(frame, shot);
+  ASSERT_EQ(skin.wetness.size(), skin.mesh.vertexCount());
+  const ShotLiquidTear& tear = shot.liquidTears[0];
+  const TearLiquidState state = liquidTearStateAt(shot, tear, f);
+  // Skin vertices on the trail, 0.5 to 1.5 cm behind the bead: wet, about as thick as the film.
+  const double bead = beadArcLength(shot, f);
+  int onTrail = 0;
+  for (double s = bead - 0.015; s < bead - 0.005; s += 0.002) {
+    const size_t v = nearestVertex(skin.mesh, surfacePosition(skin.mesh, liquidTearPathPoint(tear, s)));
+    const double distance = (skin.mesh.positions[v] - surfacePosition(skin.mesh, liquidTearPathPoint(tear, s))).norm();
+    if (distance > 1e-3) continue;  // the vertex is too far off the path to be in the film's flat part
+    ++onTrail;
+    EXPECT_GT(skin.wetness[v], 5e-6f) << "s " << s;
+    EXPECT_LE(skin.wetness[v], float(tear.params.filmThickness) * 1.0001f) << "s " << s;
+  }
+  EXPECT_GE(onTrail, 2);
+  // Skin more than 2 cm from every point of the path is dry.
+  std::vector<Vec3> path;
+  for (double s = 0.0; s <= tear.path.length(); s += 5e-4) path.push_back(surfacePosition(skin.mesh, liquidTearPathPoint(tear, s)));
+  int far = 0, wetCount = 0;
+  for (size_t v = 0; v < skin.mesh.positions.size(); ++v) {
+    if (skin.wetness[v] > 0.0f) ++wetCount;
+    float nearest = std::numeric_limits<float>::infinity();
+    for (const Vec3& p : path) nearest = std::min(nearest, (skin.mesh.positions[v] - p).norm());
+    if (nearest < 0.02f) continue;
+    ++far;
+    EXPECT_EQ(skin.wetness[v], 0.0f) << "vertex " << v;
+  }
+  EXPECT_GT(far, 1000);
+  EXPECT_GT(wetCount, 5);
+  std::printf("[ film ] frame %d: bead at s = %.1f mm, %d wet skin vertices, film %.1f um at the source\n", f,
+              bead * 1e3, wetCount, state.sampleFilmThickness.front() * 1e6);
+}
+
+TEST(LiquidTearFilm, TrailDriesAfterTheBeadHasPassed) {
+  const Shot shot = loadFilmShot("film_drying.json");
+  const int f = frameAfterTheBeadRan(shot);
+  const Frame firstFrame = buildFrame(shot, f);
+  const MeshInstance& first = skinOf(firstFrame, shot);
+  ASSERT_FALSE(first.wetness.empty());
+  const size_t v = size_t(std::max_element(first.wetness.begin(), first.wetness.end()) - first.wetness.begin());
+  float previous = first.wetness[v];
+  for (int later = f + 6; later <= std::min(f + 30, kFrames); later += 6) {
+    const Frame frame = buildFrame(shot, later);
+    const float now = skinOf(frame, shot).wetness.at(v);
+    EXPECT_GT(now, 0.0f) << "frame " << later;
+    EXPECT_LT(now, previous) << "frame " << later;
+    previous = now;
+  }
+  // Drying is exp(-t / 2 s): after up to 1.25 s clearly thinner, not gone.
+  EXPECT_LT(previous, 0.8f * first.wetness[v]);
+}
+
+TEST(LiquidTearFilm, AFrameAloneEqualsTheSameFrameInASequence) {
+  const Shot shot = loadFilmShot("film_alone.json");
+  const std::vector<float> alone = skinOf(buildFrame(shot, 40), shot).wetness;
+  ASSERT_FALSE(alone.empty());
+  const Shot sequenceShot = loadFilmShot("film_sequence.json");
+  for (int f : {10, 30, 35}) buildFrame(sequenceShot, f);
+  EXPECT_EQ(skinOf(buildFrame(sequenceShot, 40), sequenceShot).wetness, alone);
+}
+
+}  // namespace
+}  // namespace lacrima
