@@ -281,7 +281,8 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
     result += throughput * sampleDirectLight(v, media, sampler, counters);
     if (subsurface_[hit.materialId]) {  // skin with subsurface: v.bsdf's lobes or a random walk
       const float dryFraction = 1.0f - (wetSkin ? wetSkin->coverage() : 0.0f);
-      const Below below = scatterBelowSurface(*subsurface_[hit.materialId], v, dryFraction, throughput, sampler, counters);
+      const Below below =
+          scatterBelowSurface(*subsurface_[hit.materialId], v, dryFraction, throughput, sampler, counters);
       if (below == Below::Absorbed) break;
       if (below == Below::Exited) {
         hit.position = v.position;  // the path goes on from the exit point

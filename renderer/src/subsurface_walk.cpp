@@ -36,7 +36,8 @@ enum class FlightEnd { Scattered, Surface, Lost };
 
 // Follows a free flight of length `distance`: Surface when it meets a surface that ends the walk
 // first (hit.distance then counts from ray.origin), Scattered when it does not. Surfaces of
-// dielectrics (a drop sitting on the skin reaches into it) are crossed as if absent. Lost when nothing is hit (an open mesh) or too many surfaces were crossed.
+// dielectrics (a drop sitting on the skin reaches into it) are crossed as if absent. Lost when
+// nothing is hit (an open mesh) or too many surfaces were crossed.
 FlightEnd flyToSurface(const EmbreeScene& scene, const std::vector<float>& dielectricIndex, Ray ray, float distance,
                        SurfaceHit& hit, uint64_t& rays) {
   constexpr int kMaxCrossed = 16;
@@ -63,18 +64,21 @@ float outsideIndex(const EmbreeScene& scene, const std::vector<float>& dielectri
                    const Vec3& outwardNormal, float time, uint64_t& rays) {
   SurfaceHit hit;
   ++rays;
-  if (!scene.intersect(Ray{offsetOrigin(position, outwardNormal, outwardNormal), outwardNormal, time}, hit)) return 1.0f;
-  const bool leavesIt = hit.geometricNormal.dot(outwardNormal) > 0.0f;
-  return hit.lightIndex < 0 && leavesIt && dielectricIndex[hit.materialId] > 0.0f ? dielectricIndex[hit.materialId] : 1.0f;
+  const Ray probe{offsetOrigin(position, outwardNormal, outwardNormal), outwardNormal, time};
+  if (!scene.intersect(probe, hit) || hit.lightIndex >= 0) return 1.0f;
+  const bool underDielectric = dielectricIndex[hit.materialId] > 0.0f && hit.geometricNormal.dot(outwardNormal) > 0.0f;
+  return underDielectric ? dielectricIndex[hit.materialId] : 1.0f;
 }
 
 }  // namespace
 
 std::optional<SubsurfaceExit> walkBelowSurface(const EmbreeScene& scene, const SubsurfaceMedium& medium,
-                                               const std::vector<float>& dielectricIndex, const Vec3& entry, const Vec3& outwardNormal, float time,
+                                               const std::vector<float>& dielectricIndex, const Vec3& entry,
+                                               const Vec3& outwardNormal, float time,
                                                PixelSampler& sampler, uint64_t& rays) {
   // Lambertian entry: cosine-distributed about the inward normal (subsurface.hpp).
-  Vec3 direction = ShadingFrame::fromNormal(-outwardNormal).toWorld(sampleCosineHemisphere(sampler.get2D())).normalized();
+  const Vec3 entryDirection = sampleCosineHemisphere(sampler.get2D());
+  Vec3 direction = ShadingFrame::fromNormal(-outwardNormal).toWorld(entryDirection).normalized();
   Vec3 position = offsetOrigin(entry, outwardNormal, direction);
   const Color sigmaS = medium.sigmaS();
   Color weight = Color::Ones();

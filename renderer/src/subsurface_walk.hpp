@@ -36,7 +36,8 @@ struct SubsurfaceExit {
 // Nothing when it ends on a light, escapes an open mesh, or reaches kMaxSubsurfaceSteps. `rays`
 // counts the ray queries.
 std::optional<SubsurfaceExit> walkBelowSurface(const EmbreeScene& scene, const SubsurfaceMedium& medium,
-                                               const std::vector<float>& dielectricIndex, const Vec3& entry, const Vec3& outwardNormal, float time,
+                                               const std::vector<float>& dielectricIndex, const Vec3& entry,
+                                               const Vec3& outwardNormal, float time,
                                                PixelSampler& sampler, uint64_t& rays);
 
 }  // namespace lacrima

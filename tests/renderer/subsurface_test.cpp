@@ -147,8 +147,8 @@ Color directionalAlbedo(const Bsdf& bsdf, const Vec3& wo) {
 // stays Lambertian). Floor 1%: E_wet varies slightly over the 10-degree view.
 TEST(Subsurface, WetSlabMixesTheWalkAndTheWetLayerByCoverage) {
   const double singleScattering = 0.9;
-  const SkinParams skin = indexMatchedSubsurfaceSkin(Color::Constant(skinAlbedoForSingleScatteringAlbedo(singleScattering)),
-                                                     Color::Constant(0.01f));
+  const Color albedo = Color::Constant(skinAlbedoForSingleScatteringAlbedo(singleScattering));
+  const SkinParams skin = indexMatchedSubsurfaceSkin(albedo, Color::Constant(0.01f));
   const float film = 1.5e-6f, coverage = wetFilmCoverage(film);
   Frame frame;
   frame.materials.push_back(Material{"skin", skin, Color::Zero()});

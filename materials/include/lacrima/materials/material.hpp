@@ -18,11 +18,12 @@ struct DiffuseParams {
 };
 
 // Subsurface scattering of skin by a random walk below the surface (subsurface.hpp). The mean
-// free path 1/sigma_t per channel, in metres. Defaults: skin1 of Jensen et al. 2001, "A Practical
-// Model for Subsurface Light Transport" (SIGGRAPH), Table 2: sigma_s' = (0.74, 0.88, 1.01) /mm,
-// sigma_a = (0.032, 0.17, 0.48) /mm, so 1/(sigma_s' + sigma_a) = (1.30, 0.95, 0.67) mm; the
-// reduced (transport) coefficients, since the walk scatters isotropically (similarity relation).
-// The single-scattering albedo is not given here: it follows from the skin's albedo.
+// free path 1/sigma_t per channel, in metres. Defaults: Jensen et al. 2001, "A Practical Model for
+// Subsurface Light Transport" (SIGGRAPH), measured coefficients, row Skin1: sigma_s' =
+// (0.74, 0.88, 1.01) /mm, sigma_a = (0.032, 0.17, 0.48) /mm, so 1/(sigma_s' + sigma_a) =
+// (1.30, 0.95, 0.67) mm; the reduced (transport) coefficients, since the walk scatters
+// isotropically (similarity relation). The single-scattering albedo is not given here: it
+// follows from the skin's albedo.
 struct SubsurfaceParams {
   Color meanFreePath = Color(1.30e-3f, 0.95e-3f, 0.67e-3f);
 };
