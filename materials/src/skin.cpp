@@ -116,13 +116,7 @@ std::optional<BsdfSample> SkinBsdf::sample(const Vec3& wo, float uLobe, const Ve
   } else {
     wi = sampleCosineHemisphere(u);
   }
-  if (wi.z() <= 0.0f) return std::nullopt;  // reflected below the horizon: lost to masking
-  BsdfSample s;
-  s.wi = wi;
-  s.f = eval(wo, wi);
-  s.pdf = pdf(wo, wi);
-  if (s.pdf == 0.0f) return std::nullopt;
-  return s;
+  return mixtureReflectionSample(*this, wo, wi);
 }
 
 }  // namespace lacrima

@@ -126,13 +126,7 @@ std::optional<BsdfSample> WetSkinBsdf::sample(const Vec3& wo, float uLobe, const
     if (!s) return std::nullopt;
     wi = s->wi;
   }
-  if (wi.z() <= 0.0f) return std::nullopt;  // reflected below the horizon: lost to masking
-  BsdfSample s;
-  s.wi = wi;
-  s.f = eval(wo, wi);
-  s.pdf = pdf(wo, wi);
-  if (s.pdf == 0.0f) return std::nullopt;
-  return s;
+  return mixtureReflectionSample(*this, wo, wi);
 }
 
 }  // namespace lacrima

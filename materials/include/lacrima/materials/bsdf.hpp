@@ -47,4 +47,17 @@ class Bsdf {
   virtual Color albedo() const = 0;
 };
 
+// The sample of a one-sample mixture of reflection lobes: wi was drawn by one lobe, but the
+// value and density are the whole mixture's (eval, pdf), so that MIS sees the mixture. Nothing
+// when wi is below the horizon (lost to masking) or the mixture's density there is 0.
+inline std::optional<BsdfSample> mixtureReflectionSample(const Bsdf& bsdf, const Vec3& wo, const Vec3& wi) {
+  if (wi.z() <= 0.0f) return std::nullopt;
+  BsdfSample s;
+  s.wi = wi;
+  s.f = bsdf.eval(wo, wi);
+  s.pdf = bsdf.pdf(wo, wi);
+  if (s.pdf == 0.0f) return std::nullopt;
+  return s;
+}
+
 }  // namespace lacrima
