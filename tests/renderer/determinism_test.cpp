@@ -5,9 +5,12 @@
 
 #include "lacrima/geometry/shapes.hpp"
 #include "lacrima/renderer/render.hpp"
+#include "support/test_scenes.hpp"
 
 namespace lacrima {
 namespace {
+
+using test::bitwiseEqual;
 
 Frame smallMixedScene() {
   Frame frame;
@@ -31,10 +34,6 @@ Frame smallMixedScene() {
   frame.settings.samplesPerPixel = 4;
   frame.settings.seed = 3;
   return frame;
-}
-
-bool bitwiseEqual(const std::vector<float>& a, const std::vector<float>& b) {
-  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
 }
 
 TEST(Determinism, OneAndTwoThreadsGiveBitwiseEqualFilms) {

@@ -274,14 +274,8 @@ Frame floorUnderNestedBalls(int waterPriority) {
   frame.meshes.push_back(test::largeFloor(0));
   frame.spheres.push_back(Sphere{Vec3(0, 1, 0), 0.5f, 1});
   frame.spheres.push_back(Sphere{Vec3(0, 1, 0), 0.25f, 2});
-  AreaLight light;
-  light.shape = AreaLight::Shape::Sphere;
-  light.center = Vec3(0, kLightHeight, 0);
-  light.radius = kLightRadius;
-  // As transparent_shadows_test.cpp: the unshadowed floor's radiance is 1.
-  const float sin2 = (kLightRadius / kLightHeight) * (kLightRadius / kLightHeight);
-  light.radiance = Color::Constant(1.0f / (kAlbedo * sin2));
-  frame.lights.push_back(light);
+  // The unshadowed floor's radiance is 1.
+  frame.lights.push_back(test::sphereLightGivingUnitFloor(kAlbedo, kLightRadius, kLightHeight));
   frame.camera = test::lookAt(Vec3(2, 1, 0), Vec3::Zero(), 0.5f);
   frame.settings = test::smallSettings(12, 64, 1);
   return frame;

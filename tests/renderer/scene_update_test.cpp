@@ -13,6 +13,8 @@
 namespace lacrima {
 namespace {
 
+using test::bitwiseEqual;
+
 constexpr int kFrameCount = 4;
 
 // Floor, a skin ellipsoid that breathes and wobbles from frame to frame (same triangles), a
@@ -51,10 +53,6 @@ Frame deformingBlurredScene(int frameIndex) {
   const Frame next = deformingScene(frameIndex + 1);
   frame.meshes[1].positionsAtClose = next.meshes[1].mesh.positions;
   return frame;
-}
-
-bool bitwiseEqual(const std::vector<float>& a, const std::vector<float>& b) {
-  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
 }
 
 void expectBitwiseEqualFilms(const Film& a, const Film& b, int frameIndex) {

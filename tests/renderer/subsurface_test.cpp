@@ -11,6 +11,7 @@
 #include "lacrima/materials/wet_skin.hpp"
 #include "lacrima/renderer/render.hpp"
 #include "support/chandrasekhar_h.hpp"
+#include "support/bsdf_albedo.hpp"
 #include "support/test_scenes.hpp"
 
 namespace lacrima {
@@ -128,19 +129,8 @@ TEST(Subsurface, SemiInfiniteSlabReflectsTheChandrasekharWhiteSkyAlbedo) {
   }
 }
 
-// Directional albedo of a BSDF at wo (midpoint rule in (cos theta, phi)).
-Color directionalAlbedo(const Bsdf& bsdf, const Vec3& wo) {
-  constexpr int kCos = 1000, kPhi = 360;
-  Color sum = Color::Zero();
-  for (int i = 0; i < kCos; ++i) {
-    const float c = (i + 0.5f) / kCos, s = std::sqrt(1.0f - c * c);
-    for (int j = 0; j < kPhi; ++j) {
-      const float phi = 2.0f * kPi * (j + 0.5f) / kPhi;
-      sum += bsdf.eval(wo, Vec3(s * std::cos(phi), s * std::sin(phi), c)) * c;
-    }
-  }
-  return sum * (2.0f * kPi / (float(kCos) * kPhi));
-}
+// Directional albedo of a BSDF at wo (1000x360 quadrature cells).
+Color directionalAlbedo(const Bsdf& bsdf, const Vec3& wo) { return test::directionalAlbedo(bsdf, wo, 1000, 360); }
 
 // Under a tear film of coverage c (wet_skin.hpp) the walk serves the dry fraction only: the slab
 // reflects (1 - c) A_diffuse(a) + c E_wet(wo), E_wet the wet layer's directional albedo (its base
@@ -182,12 +172,7 @@ TEST(Subsurface, OneAndTwoThreadsGiveBitwiseEqualFilms) {
   frame.uniformBackground = Color(0.1f, 0.1f, 0.2f);
   frame.camera = lookAt(Vec3(0, 0.5f, 3), Vec3::Zero(), 25.0f);
   frame.settings = smallSettings(24, 8, 6);
-  frame.settings.threads = 1;
-  const Film one = renderFrame(frame);
-  frame.settings.threads = 2;
-  const Film two = renderFrame(frame);
-  ASSERT_EQ(one.rgba.size(), two.rgba.size());
-  EXPECT_EQ(std::memcmp(one.rgba.data(), two.rgba.data(), one.rgba.size() * sizeof(float)), 0);
+  test::expectThreadCountIndependent(frame);
 }
 
 }  // namespace

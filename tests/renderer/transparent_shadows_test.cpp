@@ -21,15 +21,8 @@ Frame floorUnderWaterBall(bool transparentShadows, int maxDepth) {
   frame.materials.push_back(Material{"water", SmoothDielectricParams{kTearIor, Color::Ones()}, Color::Zero()});
   frame.meshes.push_back(test::largeFloor(0));
   frame.spheres.push_back(Sphere{Vec3(0, 1, 0), 0.5f, 1});
-  AreaLight light;
-  light.shape = AreaLight::Shape::Sphere;
-  light.center = Vec3(0, kLightHeight, 0);
-  light.radius = kLightRadius;
-  // A sphere light seen from a point straight below gives E = pi Le sin^2(alpha), sin(alpha) =
-  // r / d, so this radiance makes the unshadowed floor's radiance albedo * Le * sin^2 = 1.
-  const float sin2 = (kLightRadius / kLightHeight) * (kLightRadius / kLightHeight);
-  light.radiance = Color::Constant(1.0f / (kAlbedo * sin2));
-  frame.lights.push_back(light);
+  // The unshadowed floor's radiance is 1.
+  frame.lights.push_back(test::sphereLightGivingUnitFloor(kAlbedo, kLightRadius, kLightHeight));
   // The camera ray passes 0.89 from the ball's centre (radius 0.5): it sees the floor directly.
   frame.camera = test::lookAt(Vec3(2, 1, 0), Vec3::Zero(), 0.5f);
   frame.settings = test::smallSettings(12, 64, maxDepth);

@@ -8,6 +8,7 @@
 
 #include "lacrima/materials/wet_skin.hpp"
 #include "lacrima/renderer/render.hpp"
+#include "support/bsdf_albedo.hpp"
 #include "support/test_scenes.hpp"
 
 namespace lacrima {
@@ -43,19 +44,8 @@ float peakRed(const Film& film) {
   return peak;
 }
 
-// Directional albedo of a BSDF at wo (midpoint rule in (cos theta, phi), fine near the mirror lobe).
-Color directionalAlbedo(const Bsdf& bsdf, const Vec3& wo) {
-  constexpr int kCos = 2000, kPhi = 720;
-  Color sum = Color::Zero();
-  for (int i = 0; i < kCos; ++i) {
-    const float c = (i + 0.5f) / kCos, s = std::sqrt(1.0f - c * c);
-    for (int j = 0; j < kPhi; ++j) {
-      const float phi = 2.0f * kPi * (j + 0.5f) / kPhi;
-      sum += bsdf.eval(wo, Vec3(s * std::cos(phi), s * std::sin(phi), c)) * c;
-    }
-  }
-  return sum * (2.0f * kPi / (float(kCos) * kPhi));
-}
+// Directional albedo of a BSDF at wo (2000x720 quadrature cells).
+Color directionalAlbedo(const Bsdf& bsdf, const Vec3& wo) { return test::directionalAlbedo(bsdf, wo, 2000, 720); }
 
 TEST(WetSkinRender, WetFloorIsDarkerAndMoreSaturatedAsTheBsdfPredicts) {
   const Color dry = meanColor(renderFrame(skinFloor(-1.0f))), wet = meanColor(renderFrame(skinFloor(kTrailFilm)));

@@ -3,7 +3,11 @@
 // large diffuse floor, and the statistical mean check shared by the analytic-scene tests.
 #include <gtest/gtest.h>
 
+#include <cstring>
+#include <vector>
+
 #include "lacrima/renderer/frame.hpp"
+#include "lacrima/renderer/render.hpp"
 #include "support/render_statistics.hpp"
 
 namespace lacrima::test {
@@ -47,6 +51,32 @@ inline void expectMean(const Film& film, double exact, double floor) {
     EXPECT_NEAR(e.mean, exact, 5.0 * e.standardError + floor)
         << "channel " << c << ": mean " << e.mean << " +- " << e.standardError << " over " << e.count << " pixels";
   }
+}
+
+inline bool bitwiseEqual(const std::vector<float>& a, const std::vector<float>& b) {
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
+}
+
+// Renders `frame` with 1 and 2 threads: the beauty must be bitwise the same (determinism).
+inline void expectThreadCountIndependent(Frame frame) {
+  frame.settings.threads = 1;
+  const Film one = renderFrame(frame);
+  frame.settings.threads = 2;
+  const Film two = renderFrame(frame);
+  EXPECT_TRUE(bitwiseEqual(one.rgba, two.rgba));
+}
+
+// A sphere light of radius r at height h above the origin whose radiance makes a floor of
+// albedo `albedo` straight below it reflect radiance 1: a sphere light seen from a point below
+// gives E = pi Le sin^2(alpha), sin(alpha) = r / h, so Le = 1 / (albedo sin^2).
+inline AreaLight sphereLightGivingUnitFloor(float albedo, float radius, float height) {
+  AreaLight light;
+  light.shape = AreaLight::Shape::Sphere;
+  light.center = Vec3(0, height, 0);
+  light.radius = radius;
+  const float sin2 = (radius / height) * (radius / height);
+  light.radiance = Color::Constant(1.0f / (albedo * sin2));
+  return light;
 }
 
 }  // namespace lacrima::test
