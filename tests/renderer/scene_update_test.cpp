@@ -31,18 +31,7 @@ Frame deformingScene(int frameIndex) {
   blob.mesh.normals.clear();  // geometric normals: the wobble would make stored normals wrong
   frame.meshes.push_back(blob);
   frame.spheres.push_back(Sphere{Vec3(-0.4f, 0.35f, 0.2f), 0.35f, 1});
-  AreaLight light;
-  light.center = Vec3(0, 2, 0);
-  light.edgeU = Vec3(1, 0, 0);
-  light.edgeV = Vec3(0, 0, 1);  // emits downwards (u x v = -y)
-  light.radiance = Color::Constant(5.0f);
-  frame.lights.push_back(light);
-  frame.uniformBackground = Color(0.1f, 0.1f, 0.2f);
-  frame.camera.cameraToWorld.translation() = Vec3(0, 0.5f, 3);
-  frame.settings.width = 48;
-  frame.settings.height = 32;
-  frame.settings.samplesPerPixel = 4;
-  frame.settings.seed = 3;
+  test::addTopLightAndView(frame);
   frame.settings.frameNumber = frameIndex + 1;
   return frame;
 }

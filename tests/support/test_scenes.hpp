@@ -53,6 +53,23 @@ inline void expectMean(const Film& film, double exact, double floor) {
   }
 }
 
+// The shared lighting and view of the small determinism scenes: a 1 m square light 2 m up,
+// shining down, a dim blue background, the camera 3 m back, 48x32 at 4 spp, seed 3.
+inline void addTopLightAndView(Frame& frame) {
+  AreaLight light;
+  light.center = Vec3(0, 2, 0);
+  light.edgeU = Vec3(1, 0, 0);
+  light.edgeV = Vec3(0, 0, 1);  // emits downwards (u x v = -y)
+  light.radiance = Color::Constant(5.0f);
+  frame.lights.push_back(light);
+  frame.uniformBackground = Color(0.1f, 0.1f, 0.2f);
+  frame.camera.cameraToWorld.translation() = Vec3(0, 0.5f, 3);
+  frame.settings.width = 48;
+  frame.settings.height = 32;
+  frame.settings.samplesPerPixel = 4;
+  frame.settings.seed = 3;
+}
+
 inline bool bitwiseEqual(const std::vector<float>& a, const std::vector<float>& b) {
   return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
 }
