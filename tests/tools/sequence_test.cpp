@@ -25,25 +25,17 @@
 
 #include "support/run_command.hpp"
 #include "support/test_directory.hpp"
+#include "tools/lacrima_cli_support.hpp"
 
 namespace lacrima {
 namespace {
 
 namespace fs = std::filesystem;
+using test::bytesWithoutRenderTime;
+using test::lacrima;
+using test::readBytes;
+using test::writeSphereShot;
 using namespace std::chrono_literals;
-
-// Built with += throughout: GCC 12 gives a false -Wrestrict for "literal" + std::string&&.
-std::string commandLine(const std::vector<std::string>& args) {
-  std::string command = test::shellQuote(LACRIMA_BINARY);
-  for (const std::string& a : args) {
-    command += ' ';
-    command += test::shellQuote(a);
-  }
-  return command;
-}
-
-// Runs lacrima to completion; output is stdout and stderr interleaved.
-test::CommandResult lacrima(const std::vector<std::string>& args) { return test::runCommand(commandLine(args)); }
 
 // An empty directory of its own for the running test, under LACRIMA_TEST_OUTPUT_DIR.
 fs::path freshDir() { return test::testDirectory("sequence", /*fresh=*/true); }
@@ -76,61 +68,6 @@ std::set<int> renderedFrames(const std::string& output, const std::string& size)
       frames.insert(frame);
   }
   return frames;
-}
-
-// A shot of a water drop and a diffuse ball under a sphere light and a uniform sky (no textures,
-// no meshes: nothing to load, no warnings). Frames 1-frameCount; the frame number changes the
-// noise, so every frame's pixels differ.
-fs::path writeSphereShot(const fs::path& dir, int frameCount) {
-  const fs::path path = dir / "spheres.json";
-  std::ofstream(path) << "{\n"
-                      << "  \"version\": 1,\n"
-                      << "  \"frames\": {\"start\": 1, \"end\": " << frameCount << ", \"fps\": 24},\n"
-                      << "  \"output\": \"out/spheres.####.exr\",\n"
-                      << "  \"render\": {\"width\": 32, \"height\": 18, \"spp\": 2, \"maxDepth\": 8, \"seed\": 5},\n"
-                      << "  \"camera\": {\"position\": [0, 0, 3], \"lookAt\": [0, 0, 0], \"fov\": 30},\n"
-                      << "  \"background\": [0.3, 0.35, 0.4],\n"
-                      << "  \"materials\": {\"water\": {\"type\": \"water\", \"ior\": 1.337},\n"
-                      << "                \"grey\": {\"type\": \"diffuse\", \"albedo\": [0.5, 0.5, 0.5]}},\n"
-                      << "  \"lights\": [{\"type\": \"sphere\", \"center\": [1, 1.5, 2], \"radius\": 0.2, "
-                         "\"power\": 40}],\n"
-                      << "  \"shapes\": [{\"type\": \"sphere\", \"center\": [-0.3, 0, 0], \"radius\": 0.4, "
-                         "\"material\": \"water\"},\n"
-                      << "             {\"type\": \"sphere\", \"center\": [0.4, -0.1, -0.3], \"radius\": 0.35, "
-                         "\"material\": \"grey\"}]\n"
-                      << "}\n";
-  return path;
-}
-
-std::string readBytes(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
-
-// Zeroes the value of the header attribute `name` of type `type` in an EXR's bytes. An EXR
-// attribute is "name\0type\0", a 4-byte little-endian size, then the value.
-void zeroAttributeValue(std::string& bytes, const std::string& name, const std::string& type) {
-  std::string key = name;
-  key += '\0';
-  key += type;
-  key += '\0';
-  const size_t at = bytes.find(key);
-  if (at == std::string::npos || at + key.size() + 4 > bytes.size()) return;
-  uint32_t size = 0;
-  for (int i = 3; i >= 0; --i) size = size << 8 | uint8_t(bytes[at + key.size() + i]);
-  const size_t value = at + key.size() + 4;
-  std::memset(&bytes[value], 0, std::min<size_t>(size, bytes.size() - value));
-}
-
-// The file's bytes without the two values that record when and how long a frame was rendered:
-// lacrima:renderSeconds, and capDate (the date and time OpenImageIO adds to every EXR it writes).
-// They are all that differs between two renders of the same frame; everything else, the rest of
-// the header and the compressed pixels, must then be bitwise equal.
-std::string bytesWithoutRenderTime(const fs::path& path) {
-  std::string bytes = readBytes(path);
-  zeroAttributeValue(bytes, "lacrima:renderSeconds", "float");
-  zeroAttributeValue(bytes, "capDate", "string");
-  return bytes;
 }
 
 // Reads every channel of every pixel: a complete, valid frame of the expected size.

@@ -10,7 +10,6 @@
 #include <filesystem>
 
 #include "commands.hpp"
-#include "frame_check.hpp"
 #include "frame_range.hpp"
 #include "frame_selection.hpp"
 #include "interrupt.hpp"
@@ -19,6 +18,7 @@
 #include "lacrima/renderer/render.hpp"
 #include "lacrima/scenes/shot.hpp"
 #include "progress.hpp"
+#include "render_plan.hpp"
 
 namespace lacrima::cli {
 
@@ -26,26 +26,6 @@ namespace {
 
 // Above this fraction of discarded NaN/Inf samples a frame is a failed render, not a noisy one.
 constexpr double kMaxNonFiniteFraction = 1e-4;
-
-void applyOverrides(const RenderOptions& o, RenderSettings& s) {
-  if (o.spp) s.samplesPerPixel = *o.spp;
-  if (o.width) s.width = *o.width;
-  if (o.height) s.height = *o.height;
-  if (o.threads) s.threads = *o.threads;
-  if (o.maxDepth) s.maxDepth = *o.maxDepth;
-  if (o.seed) s.seed = *o.seed;
-  if (o.floatOutput) s.floatOutput = true;
-}
-
-std::string outputPattern(const RenderOptions& o, const Shot& shot, size_t frameCount) {
-  const std::string pattern = o.outputPattern.empty() ? shot.outputPattern : o.outputPattern;
-  requireFrameField(pattern, frameCount, "rendered");
-  // Frames are always OpenEXR; another extension would mislead, and with --preview a '.png'
-  // output would be overwritten by its own preview.
-  if (lowerExtension(expandFramePattern(pattern, 1)) != ".exr")
-    throw InputError(fmt::format("output '{}': frames are OpenEXR files, the name must end in .exr", pattern));
-  return pattern;
-}
 
 std::string previewOcioConfig(const Shot& shot) {
   return shot.ocioConfig.empty() ? defaultOcioConfig() : shot.ocioConfig.string();
@@ -74,37 +54,21 @@ ExrMetadata metadataFor(const Shot& shot, const Frame& frame, const RenderStats&
   return m;
 }
 
-RenderSettings settingsFor(const RenderOptions& o, const Shot& shot, int frameNumber) {
-  RenderSettings s = shot.render;
-  applyOverrides(o, s);
-  s.frameNumber = frameNumber;
-  return s;
-}
-
-std::filesystem::path previewPathFor(const std::filesystem::path& exrPath) {
-  std::filesystem::path pngPath = exrPath;
-  pngPath.replace_extension(".png");
-  return pngPath;
-}
-
 // --resume: the frames already complete on disk, each announced on stderr. An existing file that
 // cannot be used (truncated, corrupt, other settings) is announced too: it will be rendered again.
 std::vector<int> framesAlreadyComplete(const RenderOptions& o, const Shot& shot, const std::string& pattern,
                                        const std::vector<int>& frames) {
   std::vector<int> complete;
   for (int f : frames) {
-    const std::filesystem::path exrPath = expandFramePattern(pattern, f);
-    std::error_code ec;
-    if (!std::filesystem::exists(exrPath, ec)) continue;
-    std::string why = whyFrameMustBeRendered(exrPath, settingsFor(o, shot, f));
-    if (why.empty() && o.preview && !std::filesystem::exists(previewPathFor(exrPath), ec))
-      why = "its --preview PNG is missing";
+    const std::string why = whyFrameIsNotComplete(o, shot, pattern, f);
+    const std::string exrPath = expandFramePattern(pattern, f);
+    if (why == "missing") continue;
     if (why.empty()) {
-      std::fprintf(stderr, "frame %d: skipped (--resume): %s is complete\n", f, exrPath.string().c_str());
+      std::fprintf(stderr, "frame %d: skipped (--resume): %s is complete\n", f, exrPath.c_str());
       complete.push_back(f);
     } else {
-      std::fprintf(stderr, "frame %d: rendering again (--resume): %s is not usable: %s\n", f,
-                   exrPath.string().c_str(), why.c_str());
+      std::fprintf(stderr, "frame %d: rendering again (--resume): %s is not usable: %s\n", f, exrPath.c_str(),
+                   why.c_str());
     }
   }
   return complete;
@@ -218,7 +182,7 @@ int runRender(const RenderOptions& o) {
     const auto start = std::chrono::steady_clock::now();
     const Shot shot = loadShot(o.shotPath);
     const std::vector<int> frames = selectShotFrames(o.frames, shot);
-    const std::string pattern = outputPattern(o, shot, frames.size());
+    const std::string pattern = resolveOutputPattern(o, shot, frames.size());
     checkPreviewConfig(o, shot);
     printShotWarnings(shot);
     installInterruptHandlers();

@@ -14,6 +14,7 @@ namespace lacrima::cli {
 inline constexpr int kExitOk = 0;
 inline constexpr int kExitRenderFailure = 1;
 inline constexpr int kExitBadInput = 2;
+inline constexpr int kExitFarmInProgress = 3;  // `farm status`: frames still running or pending
 
 struct RenderOptions {
   std::string shotPath;
@@ -34,6 +35,22 @@ struct ExportOptions {
   std::string outputPattern;          // empty: the shot's output pattern with the format's extension
 };
 
+struct FarmSubmitOptions {
+  RenderOptions render;     // shot, --frames, the overrides and --out each task renders with
+  int chunk = 4;            // frames per array task
+  std::string partition;    // empty: the cluster's default
+  int cpusPerTask = 0;      // 0: a whole node per task
+  std::string jobDir;       // empty: next to the output
+  bool dryRun = false;
+};
+
+struct FarmStatusOptions {
+  RenderOptions render;     // shot and --out (to find the job directory)
+  std::string jobDir;
+  bool wait = false;        // poll until nothing runs or waits
+  double pollSeconds = 2.0;
+};
+
 struct BenchOptions {
   std::string shotPath;
   int width = 320, height = 180, spp = 4, threads = 0, repetitions = 3;
@@ -44,6 +61,8 @@ int runCheck(const std::string& shotPath);
 int runInfo(const std::string& path);
 int runBench(const BenchOptions& options);
 int runExport(const ExportOptions& options);
+int runFarmSubmit(const FarmSubmitOptions& options);
+int runFarmStatus(const FarmStatusOptions& options);
 
 // Prints the shot's non-fatal warnings (Shot::warnings) to stderr, one per line:
 // "shot.json:13:27: /environment/file: warning: ...", before any rendering.

@@ -32,6 +32,8 @@ const char* kDescription =
     "  lacrima info face.glb           list primitives, blendshapes and cameras of a glTF\n"
     "  lacrima info frame.0001.exr     list channels and lacrima metadata of a rendered frame\n"
     "  lacrima bench                   renderer and raw Embree throughput on the default shot\n"
+    "  lacrima farm submit shot.json --chunk 6\n"
+    "      the shot's frames as a Slurm array job; `lacrima farm status shot.json` follows it\n"
     "\n"
     "Exit status: 0 success, 1 render failure, 2 bad input (shot file, asset or options).";
 
@@ -79,24 +81,29 @@ const char* kRenderExamples =
     "Exit status: 0 success, 1 render failure (e.g. NaN samples), 2 bad input (shot, asset, options),\n"
     "130 interrupted with frames left to render.";
 
+// The shot and the options that change what a render writes, shared by `render` and `farm submit`.
+void addShotAndOverrides(CLI::App& command, RenderOptions& o) {
+  // No CLI::ExistingFile: loadShot reports a missing shot file as `check` does.
+  command.add_option("shot", o.shotPath, "Shot file (JSON)")->required();
+  command.add_option("--spp,-s", o.spp, "Samples per pixel")->check(integerIn(1, INT_MAX));
+  auto* width = command.add_option("--width", o.width, "Image width in pixels")->check(integerIn(1, 16384));
+  auto* height = command.add_option("--height", o.height, "Image height in pixels")->check(integerIn(1, 16384));
+  width->needs(height);
+  height->needs(width);
+  command.add_option("--seed", o.seed, "Random seed (same seed, same pixels)")
+      ->check(integerIn<uint64_t>(0, std::numeric_limits<uint64_t>::max()));
+  command.add_option("--max-depth", o.maxDepth, "Maximum path depth")->check(integerIn(0, 1000));
+  command.add_option("--out,-o", o.outputPattern, "Output path pattern, #### = frame number (e.g. out/shot.####.exr)");
+  command.add_flag("--preview", o.preview, "Also write an sRGB PNG preview (OCIO, ACES SDR view) next to each EXR");
+  command.add_flag("--float", o.floatOutput, "Write the beauty as 32-bit float instead of half");
+}
+
 void addRender(CLI::App& app, RenderOptions& o) {
   auto* render = app.add_subcommand("render", "Render a shot to an OpenEXR sequence");
   render->footer(kRenderExamples);
-  // No CLI::ExistingFile: loadShot reports a missing shot file as `check` does.
-  render->add_option("shot", o.shotPath, "Shot file (JSON)")->required();
+  addShotAndOverrides(*render, o);
   render->add_option("--frames,-f", o.frames, "Frames to render: 12, 1-48, 1-48x2 or lists like 1,5,10-12");
-  render->add_option("--spp,-s", o.spp, "Samples per pixel")->check(integerIn(1, INT_MAX));
-  auto* width = render->add_option("--width", o.width, "Image width in pixels")->check(integerIn(1, 16384));
-  auto* height = render->add_option("--height", o.height, "Image height in pixels")->check(integerIn(1, 16384));
-  width->needs(height);
-  height->needs(width);
-  render->add_option("--seed", o.seed, "Random seed (same seed, same pixels)")
-      ->check(integerIn<uint64_t>(0, std::numeric_limits<uint64_t>::max()));
   render->add_option("--threads,-t", o.threads, "Worker threads (0 = all cores)")->check(integerIn(0, INT_MAX));
-  render->add_option("--max-depth", o.maxDepth, "Maximum path depth")->check(integerIn(0, 1000));
-  render->add_option("--out,-o", o.outputPattern, "Output path pattern, #### = frame number (e.g. out/shot.####.exr)");
-  render->add_flag("--preview", o.preview, "Also write an sRGB PNG preview (OCIO, ACES SDR view) next to each EXR");
-  render->add_flag("--float", o.floatOutput, "Write the beauty as 32-bit float instead of half");
   render->add_flag("--quiet,-q", o.quiet, "Only print the per-frame summary lines");
   render->add_flag("--resume", o.resume,
                    "Skip frames whose EXR already exists, reads back completely and was rendered with the same "
@@ -145,6 +152,52 @@ void addExport(CLI::App& app, ExportOptions& o) {
   exportCommand->callback([&o] { throw CLI::RuntimeError(runExport(o)); });
 }
 
+const char* kFarmExamples =
+    "Examples:\n"
+    "  lacrima farm submit scenes/shots/tear_closeup.json --chunk 6 --partition render\n"
+    "      the shot's frames as a Slurm array job, 6 frames per task, each task on a whole node\n"
+    "  lacrima farm submit shot.json --frames 1-24 --spp 64 --cpus-per-task 8 --dry-run\n"
+    "      write the sbatch script and chunk list without submitting (look, then `sbatch` it)\n"
+    "  lacrima farm status shot.json --wait\n"
+    "      done / running / pending / failed frames, until nothing runs any more\n"
+    "\n"
+    "Each task runs `lacrima render SHOT --frames <its chunk> --resume` with the overrides given to\n"
+    "submit, so a node writes bitwise the frame a local render writes, and frames go to the shot's\n"
+    "output (or --out) atomically. Submitting again renders only the frames not yet complete on\n"
+    "disk. The job directory (default: <output dir>/<shot>.farm) holds job.json, the sbatch scripts\n"
+    "(job-N.sh), chunk lists, one log per task (logs/<job>_<task>.log) and one exit status per task\n"
+    "(status/<job>_<task>.exit). A single-node test cluster: tools/slurm/cluster.sh.\n"
+    "Exit status: 0 submitted (or nothing to do) / every frame done; 1 sbatch failed / frames failed or\n"
+    "missing; 2 bad input; 3 (status) frames still running or pending.";
+
+void addFarm(CLI::App& app, FarmSubmitOptions& submit, FarmStatusOptions& status) {
+  auto* farm = app.add_subcommand("farm", "Render a shot on a Slurm farm and follow it");
+  farm->footer(kFarmExamples);
+  farm->require_subcommand(1);
+  auto* submitCommand = farm->add_subcommand("submit", "Submit the shot's missing frames as a Slurm array job");
+  submitCommand->footer(kFarmExamples);
+  addShotAndOverrides(*submitCommand, submit.render);
+  submitCommand->add_option("--frames,-f", submit.render.frames, "Frames: 12, 1-48, 1-48x2 or lists like 1,5,10-12");
+  submitCommand->add_option("--chunk", submit.chunk, "Frames per array task (default 4)")->check(integerIn(1, 100000));
+  submitCommand->add_option("--partition,-p", submit.partition, "Slurm partition (default: the cluster's)");
+  submitCommand->add_option("--cpus-per-task", submit.cpusPerTask,
+                            "CPUs per task, the render's threads (default 0: a whole node per task)")
+      ->check(integerIn(0, 100000));
+  submitCommand->add_option("--job-dir", submit.jobDir, "Job directory (default: <output dir>/<shot>.farm)");
+  submitCommand->add_flag("--dry-run", submit.dryRun, "Write the job's files but do not submit");
+  submitCommand->callback([&submit] { throw CLI::RuntimeError(runFarmSubmit(submit)); });
+
+  auto* statusCommand = farm->add_subcommand("status", "Done, running, pending and failed frames of a farm job");
+  statusCommand->footer(kFarmExamples);
+  statusCommand->add_option("shot", status.render.shotPath, "Shot file (JSON)")->required();
+  statusCommand->add_option("--out,-o", status.render.outputPattern, "The --out given to submit, if any");
+  statusCommand->add_option("--job-dir", status.jobDir, "The --job-dir given to submit, if any");
+  statusCommand->add_flag("--wait", status.wait, "Poll until no frame runs or waits, then report");
+  statusCommand->add_option("--poll", status.pollSeconds, "Seconds between polls with --wait (default 2)")
+      ->check(CLI::Range(0.05, 3600.0));
+  statusCommand->callback([&status] { throw CLI::RuntimeError(runFarmStatus(status)); });
+}
+
 void addCheck(CLI::App& app, std::string& shot) {
   auto* check = app.add_subcommand("check", "Validate a shot file and its assets without rendering");
   check->add_option("shot", shot, "Shot file (JSON)")->required();
@@ -178,12 +231,15 @@ int main(int argc, char** argv) {
   RenderOptions renderOptions;
   BenchOptions benchOptions;
   ExportOptions exportOptions;
+  FarmSubmitOptions farmSubmitOptions;
+  FarmStatusOptions farmStatusOptions;
   std::string checkShot, infoFile;
   addRender(app, renderOptions);
   addCheck(app, checkShot);
   addInfo(app, infoFile);
   addBench(app, benchOptions);
   addExport(app, exportOptions);
+  addFarm(app, farmSubmitOptions, farmStatusOptions);
   try {
     app.parse(argc, argv);
   } catch (const CLI::RuntimeError& status) {

@@ -1,0 +1,56 @@
+#include "render_plan.hpp"
+
+#include <fmt/format.h>
+
+#include "frame_check.hpp"
+#include "frame_selection.hpp"
+#include "lacrima/renderer/image_output.hpp"
+#include "lacrima/scenes/shot.hpp"
+
+namespace lacrima::cli {
+
+void applyOverrides(const RenderOptions& o, RenderSettings& s) {
+  if (o.spp) s.samplesPerPixel = *o.spp;
+  if (o.width) s.width = *o.width;
+  if (o.height) s.height = *o.height;
+  if (o.threads) s.threads = *o.threads;
+  if (o.maxDepth) s.maxDepth = *o.maxDepth;
+  if (o.seed) s.seed = *o.seed;
+  if (o.floatOutput) s.floatOutput = true;
+}
+
+RenderSettings settingsFor(const RenderOptions& o, const Shot& shot, int frameNumber) {
+  RenderSettings s = shot.render;
+  applyOverrides(o, s);
+  s.frameNumber = frameNumber;
+  return s;
+}
+
+std::string resolveOutputPattern(const RenderOptions& o, const Shot& shot, size_t frameCount) {
+  const std::string pattern = o.outputPattern.empty() ? shot.outputPattern : o.outputPattern;
+  requireFrameField(pattern, frameCount, "rendered");
+  // Frames are always OpenEXR; another extension would mislead, and with --preview a '.png'
+  // output would be overwritten by its own preview.
+  if (lowerExtension(expandFramePattern(pattern, 1)) != ".exr")
+    throw InputError(fmt::format("output '{}': frames are OpenEXR files, the name must end in .exr", pattern));
+  return pattern;
+}
+
+std::filesystem::path previewPathFor(const std::filesystem::path& exrPath) {
+  std::filesystem::path pngPath = exrPath;
+  pngPath.replace_extension(".png");
+  return pngPath;
+}
+
+std::string whyFrameIsNotComplete(const RenderOptions& o, const Shot& shot, const std::string& pattern,
+                                  int frameNumber) {
+  const std::filesystem::path exrPath = expandFramePattern(pattern, frameNumber);
+  std::error_code ec;
+  if (!std::filesystem::exists(exrPath, ec)) return "missing";
+  std::string why = whyFrameMustBeRendered(exrPath, settingsFor(o, shot, frameNumber));
+  if (why.empty() && o.preview && !std::filesystem::exists(previewPathFor(exrPath), ec))
+    why = "its --preview PNG is missing";
+  return why;
+}
+
+}  // namespace lacrima::cli
