@@ -15,8 +15,8 @@ namespace {
 namespace fs = std::filesystem;
 using namespace lacrima::diff;
 
-// One pair: the output path as given. Several: the directory given, one file per pair named
-// after A's image (or B's when A's is missing): DIR/shot.0012.diff.exr.
+// Two files: the output path as given. Directories or patterns: the directory given, one file
+// per pair named after A's image (or B's when A's is missing): DIR/shot.0012.diff.exr.
 std::string outputFor(const std::string& option, const ImagePair& pair, bool several, const char* suffix) {
   if (!several) return option;
   const fs::path source(pair.a ? *pair.a : *pair.b);
@@ -38,7 +38,8 @@ int runDiff(const DiffOptions& o) {
   try {
     const std::vector<ImagePair> pairs = pairImages(o.a, o.b);
     const CompareOptions options = compareOptions(o);
-    const bool several = pairs.size() > 1;
+    std::error_code ec;
+    const bool several = isFramePattern(o.a) || fs::is_directory(o.a, ec);
     std::vector<PairOutcome> outcomes;
     for (const ImagePair& pair : pairs) {
       outcomes.push_back(comparePair(pair, options, [&](const Image& a, const Image& b, const Comparison& c) {
@@ -46,7 +47,7 @@ int runDiff(const DiffOptions& o) {
         if (!o.flipOut.empty() && c.flip)
           writeFlipImage(outputFor(o.flipOut, pair, several, ".flip.png"), *c.flip, c.width, c.height);
       }));
-      // One image that cannot be used ends a single comparison with just its message.
+      // An image that cannot be used ends a comparison of two files with just its message.
       if (!several && !outcomes.back().error.empty()) throw InputError(outcomes.back().error);
     }
     const Thresholds& t = options.thresholds;

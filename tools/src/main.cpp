@@ -232,7 +232,7 @@ void addDiff(CLI::App& app, DiffOptions& o) {
   diff->add_option("--aov", o.aovs, "Compare only this channel group (beauty, N, albedo, Z, ...); repeatable");
   diff->add_option("--out,-o", o.out, "Write |A-B| as a float EXR here (a directory for several pairs)");
   diff->add_option("--flip-out", o.flipOut, "Write the FLIP error map (magma colours) as PNG here (a directory for several pairs)");
-  diff->add_option("--ppd", o.ppd, "FLIP observer: pixels per degree (default 67.02: 0.7 m from a 0.7 m wide 3840-pixel monitor)")
+  diff->add_option("--ppd", o.ppd, "FLIP observer: pixels per degree (0 or unset: 67.02, 0.7 m from a 0.7 m wide 3840-pixel monitor)")
       ->check(nonNegativeNumber());
   diff->add_flag("--no-flip", o.noFlip, "Skip FLIP (it is the slow part on large images)");
   diff->add_flag("--json", o.json, "Print the report as JSON instead of tables");

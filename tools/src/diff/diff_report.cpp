@@ -106,11 +106,11 @@ bool anyError(const std::vector<PairOutcome>& outcomes) {
 
 std::string formatComparison(const Comparison& c) {
   std::string out = fmt::format("{} vs {}: {} x {}\n", c.pathA, c.pathB, c.width, c.height);
-  out += fmt::format("  {:<9} {:<22} {:>11} {:>11} {:>11}  {:<18} {:>8} {:>18} {:>18}\n", "group", "channels",
+  out += fmt::format("  {:<9} {:<26} {:>11} {:>11} {:>11}  {:<18} {:>8} {:>18} {:>18}\n", "group", "channels",
                      "mean err", "RMS", "max err", "at (x, y) channel", "PSNR dB", "> fail", "> warn");
   for (const GroupMetrics& g : c.groups) {
     const std::string where = g.maxError > 0 ? fmt::format("({}, {}) {}", g.maxX, g.maxY, g.maxChannel) : "-";
-    out += fmt::format("  {:<9} {:<22} {:>11.4g} {:>11.4g} {:>11.4g}  {:<18} {:>8} {:>18} {:>18}\n", g.name,
+    out += fmt::format("  {:<9} {:<26} {:>11.4g} {:>11.4g} {:>11.4g}  {:<18} {:>8} {:>18} {:>18}\n", g.name,
                        joinedChannels(g.channels), g.meanError, g.rmsError, g.maxError, where, psnrText(g.psnr),
                        fmt::format("{} ({:.3g}%)", g.failPixels, g.failPercent),
                        fmt::format("{} ({:.3g}%)", g.warnPixels, g.warnPercent));
