@@ -8,9 +8,7 @@ reason="${1:-}"
 [ -n "$reason" ] || { echo "usage: tools/update_references.sh \"reason for the new references\"" >&2; exit 2; }
 lacrima="${LACRIMA:-$here/build/tools/lacrima}"
 [ -x "$lacrima" ] || { echo "build first (tools/bootstrap.sh build), or set LACRIMA=path/to/lacrima" >&2; exit 2; }
-for shot in "$here"/tests/data/regression/*.json; do
-  name="$(basename "$shot" .json)"
-  "$lacrima" render --quiet "$shot" --out "$here/tests/data/references/$name.exr" --preview
-done
+# The same renders as the regression tests: every shot of tests/data/regression, with PNG previews.
+"$lacrima" test-suite "$here/tests/data/regression" --references "$here/tests/data/references" --update
 echo "$(date -u +%Y-%m-%d) $(git -C "$here" rev-parse --short HEAD): $reason" >> "$here/tests/data/references/CHANGES.txt"
 echo "references updated; review the PNGs in tests/data/references/ and commit them with the reason."

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace lacrima {
 struct Shot;
@@ -56,7 +57,29 @@ struct BenchOptions {
   int width = 320, height = 180, spp = 4, threads = 0, repetitions = 3;
 };
 
+struct DiffOptions {
+  std::string a, b;  // files, directories or frame patterns (name.####.exr)
+  double fail = 1e-6, failPercent = 0.0, warn = 1e-6, warnPercent = 0.0;
+  std::optional<double> maxMeanError;
+  std::vector<std::string> aovs;  // channel groups to compare; empty: all
+  std::string out;                // difference EXR (a directory when several pairs)
+  std::string flipOut;            // FLIP error PNG (a directory when several pairs)
+  bool json = false;
+  bool noFlip = false;
+  double ppd = 0;  // 0: FLIP's default observer
+};
+
+struct TestSuiteOptions {
+  std::string directory;          // regression shots (*.json) and their thresholds.json
+  std::string references;         // empty: <directory>/../references
+  std::string out;                // renders, difference and FLIP images; empty: a temporary directory
+  std::vector<std::string> shots;  // names to run; empty: all
+  bool update = false;            // render into the references instead of comparing
+};
+
 int runRender(const RenderOptions& options);
+int runDiff(const DiffOptions& options);
+int runTestSuite(const TestSuiteOptions& options);
 int runCheck(const std::string& shotPath);
 int runInfo(const std::string& path);
 int runBench(const BenchOptions& options);

@@ -4,6 +4,7 @@
 
 #include <charconv>
 #include <climits>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -32,10 +33,14 @@ const char* kDescription =
     "  lacrima info face.glb           list primitives, blendshapes and cameras of a glTF\n"
     "  lacrima info frame.0001.exr     list channels and lacrima metadata of a rendered frame\n"
     "  lacrima bench                   renderer and raw Embree throughput on the default shot\n"
+    "  lacrima diff a.exr b.exr        compare two images (or directories, or frame sequences)\n"
+    "  lacrima test-suite tests/data/regression\n"
+    "      render the regression shots and compare them with their reference images\n"
     "  lacrima farm submit shot.json --chunk 6\n"
     "      the shot's frames as a Slurm array job; `lacrima farm status shot.json` follows it\n"
     "\n"
-    "Exit status: 0 success, 1 render failure, 2 bad input (shot file, asset or options).";
+    "Exit status: 0 success, 1 render failure, 2 bad input (shot file, asset or options);\n"
+    "diff and test-suite: 0 pass, 1 warn, 2 fail or bad input; farm status: 3 frames still running.";
 
 // An option value as the error message shows it: numbers bare, anything else quoted.
 std::string describeArgument(const std::string& text) {
@@ -222,6 +227,97 @@ void addBench(CLI::App& app, BenchOptions& o) {
   bench->callback([&o] { throw CLI::RuntimeError(runBench(o)); });
 }
 
+
+// Non-negative real numbers, with a message in the style of integerIn's.
+CLI::Validator nonNegativeNumber() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        char* end = nullptr;
+        const double value = text.empty() ? -1.0 : std::strtod(text.c_str(), &end);
+        if (!text.empty() && end == text.c_str() + text.size() && value >= 0.0 && std::isfinite(value))
+          return std::string();
+        return fmt::format("expected a number >= 0, found {}", describeArgument(text));
+      },
+      "NUMBER >= 0");
+}
+
+const char* kDiffExamples =
+    "A and B are two images (OpenEXR with all its AOV channels, PNG, ...), two directories (images\n"
+    "paired by file name) or two frame patterns (shot.####.exr: frames paired by number). A frame on\n"
+    "one side only fails the comparison.\n"
+    "\n"
+    "Metrics, per channel group (beauty = R,G,B,A; each AOV such as N, albedo, Z): mean absolute\n"
+    "error, RMS, the largest difference with its pixel and channel, PSNR (peak 1.0) and the pixels\n"
+    "over the thresholds. FLIP (NVIDIA's perceptual error, 0 = identical, 1 = as different as\n"
+    "possible) of the beauty: HDR-FLIP for float images, LDR-FLIP for 8-bit ones.\n"
+    "\n"
+    "Thresholds work as in OIIO's idiff: a pixel fails when any channel differs by more than --fail,\n"
+    "and the comparison FAILS when more than --failpercent % of the pixels fail (or the mean error\n"
+    "exceeds --max-mean); it WARNS when more than --warnpercent % differ by more than --warn.\n"
+    "The defaults (1e-6, 0 %) ask for identical images.\n"
+    "\n"
+    "Examples:\n"
+    "  lacrima diff ref.exr new.exr\n"
+    "      the table of every channel group, FLIP, PASS/WARN/FAIL\n"
+    "  lacrima diff ref.exr new.exr --fail 0.05 --failpercent 0.5 --warn 0.005 --aov beauty\n"
+    "      tolerate noise: fail when over 0.5 % of the beauty's pixels differ by more than 0.05\n"
+    "  lacrima diff old/shot.####.exr new/shot.####.exr --out diffs --flip-out diffs --json\n"
+    "      a whole sequence: per frame and overall, |A-B| EXRs and FLIP maps into diffs/, JSON report\n"
+    "\n"
+    "Exit status: 0 pass, 1 warn, 2 fail (also: a missing frame, an unreadable file, different sizes\n"
+    "or channels, bad options). See docs/diff.md.";
+
+void addDiff(CLI::App& app, DiffOptions& o) {
+  auto* diff = app.add_subcommand("diff", "Compare two images, directories or frame sequences (metrics, FLIP)");
+  diff->footer(kDiffExamples);
+  diff->add_option("a", o.a, "Reference: an image, a directory or a frame pattern (name.####.exr)")->required();
+  diff->add_option("b", o.b, "Test: the same kind as A")->required();
+  diff->add_option("--fail", o.fail, "A pixel fails when a channel differs by more than this (default 1e-6)")
+      ->check(nonNegativeNumber());
+  diff->add_option("--failpercent", o.failPercent, "Fail when more than this % of pixels fail (default 0)")
+      ->check(nonNegativeNumber());
+  diff->add_option("--warn", o.warn, "A pixel warns when a channel differs by more than this (default 1e-6)")
+      ->check(nonNegativeNumber());
+  diff->add_option("--warnpercent", o.warnPercent, "Warn when more than this % of pixels warn (default 0)")
+      ->check(nonNegativeNumber());
+  diff->add_option("--max-mean", o.maxMeanError, "Also fail when a group's mean absolute error exceeds this")
+      ->check(nonNegativeNumber());
+  diff->add_option("--aov", o.aovs, "Compare only this channel group (beauty, N, albedo, Z, ...); repeatable");
+  diff->add_option("--out,-o", o.out, "Write |A-B| as a float EXR here (a directory for several pairs)");
+  diff->add_option("--flip-out", o.flipOut, "Write the FLIP error map (magma colours) as PNG here (a directory for several pairs)");
+  diff->add_option("--ppd", o.ppd, "FLIP observer: pixels per degree (0 or unset: 67.02, 0.7 m from a 0.7 m wide 3840-pixel monitor)")
+      ->check(nonNegativeNumber());
+  diff->add_flag("--no-flip", o.noFlip, "Skip FLIP (it is the slow part on large images)");
+  diff->add_flag("--json", o.json, "Print the report as JSON instead of tables");
+  diff->callback([&o] { throw CLI::RuntimeError(runDiff(o)); });
+}
+
+const char* kTestSuiteExamples =
+    "Renders every shot file DIR/*.json (in-process, as `lacrima render` does) and compares the\n"
+    "render with REFDIR/<shot>.exr using DIR/thresholds.json (per-shot thresholds over a default;\n"
+    "see docs/diff.md). Shots that do not pass leave their render, |A-B| EXR and FLIP PNG in --out.\n"
+    "\n"
+    "Examples:\n"
+    "  lacrima test-suite tests/data/regression\n"
+    "      the project's image regression (references in tests/data/references)\n"
+    "  lacrima test-suite tests/data/regression --shot face_liquid_tear --out /tmp/suite\n"
+    "      one shot, its images kept in /tmp/suite\n"
+    "  lacrima test-suite tests/data/regression --update\n"
+    "      render new references (with PNG previews) instead; tools/update_references.sh records why\n"
+    "\n"
+    "Exit status: 0 all pass, 1 a shot warns, 2 a shot fails (or its render fails, or bad input).";
+
+void addTestSuite(CLI::App& app, TestSuiteOptions& o) {
+  auto* suite = app.add_subcommand("test-suite", "Render regression shots and compare them with their references");
+  suite->footer(kTestSuiteExamples);
+  suite->add_option("directory", o.directory, "Directory of regression shots (*.json) and thresholds.json")->required();
+  suite->add_option("--references,-r", o.references, "Reference images (default: DIR/../references)");
+  suite->add_option("--out,-o", o.out, "Where renders and difference images go (default: a temporary directory)");
+  suite->add_option("--shot", o.shots, "Run only this shot (file name without .json); repeatable");
+  suite->add_flag("--update", o.update, "Render the references instead of comparing with them");
+  suite->callback([&o] { throw CLI::RuntimeError(runTestSuite(o)); });
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -231,6 +327,8 @@ int main(int argc, char** argv) {
   RenderOptions renderOptions;
   BenchOptions benchOptions;
   ExportOptions exportOptions;
+  DiffOptions diffOptions;
+  TestSuiteOptions testSuiteOptions;
   FarmSubmitOptions farmSubmitOptions;
   FarmStatusOptions farmStatusOptions;
   std::string checkShot, infoFile;
@@ -239,6 +337,8 @@ int main(int argc, char** argv) {
   addInfo(app, infoFile);
   addBench(app, benchOptions);
   addExport(app, exportOptions);
+  addDiff(app, diffOptions);
+  addTestSuite(app, testSuiteOptions);
   addFarm(app, farmSubmitOptions, farmStatusOptions);
   try {
     app.parse(argc, argv);
