@@ -18,6 +18,9 @@ packages=(cmake ninja-build g++ pkg-config
   libtinygltf-dev libeigen3-dev nlohmann-json3-dev libcli11-dev libfmt-dev
   libgtest-dev libgmock-dev libbenchmark-dev)
 
+# The farm test brings up a single-node Slurm cluster (tools/slurm/cluster.sh).
+[ "$mode" = test ] && packages+=(slurm-wlm munge)
+
 install_missing_packages() {
   local missing=()
   for p in "${packages[@]}"; do
