@@ -354,15 +354,18 @@ TEST(SequenceInterrupt, SecondInterruptAbandonsTheFrameAtOnce) {
 // pixels of an uninterrupted render.
 TEST(SequenceInterrupt, KilledRendersNeverLeaveABrokenFrameAndResumeMatchesAnUninterruptedRun) {
   const fs::path dir = freshDir();
-  constexpr int kFrames = 5;
+  constexpr int kFrames = 24;
+  constexpr int kKills = 10;
   const fs::path shot = writeSphereShot(dir, kFrames);
-  const SlowRender small{128, 72, 48};  // about half a second for the five frames, start-up included
+  const SlowRender small{96, 54, 24};  // about 50 ms a frame: the 24 frames take a second or two
   const fs::path reference = dir / "reference", killed = dir / "killed";
   ASSERT_EQ(lacrima(slowRenderArgs(shot, reference, small)).exitStatus, 0);
 
+  // Kills at moments drawn with a fixed seed, from start-up (scene load, first frame) to
+  // mid-write; each run resumes the last, so the kills spread over the whole sequence.
   std::mt19937 random(20240611);
-  std::uniform_int_distribution<int> moment(100, 500);  // milliseconds after the start: mid-sequence
-  for (int attempt = 0; attempt < 4; ++attempt) {
+  std::uniform_int_distribution<int> moment(20, 400);  // milliseconds after the start
+  for (int attempt = 0; attempt < kKills; ++attempt) {
     std::vector<std::string> args = slowRenderArgs(shot, killed, small);
     args.push_back("--resume");
     BackgroundRender render(args, dir / ("log" + std::to_string(attempt) + ".txt"));
@@ -373,6 +376,7 @@ TEST(SequenceInterrupt, KilledRendersNeverLeaveABrokenFrameAndResumeMatchesAnUni
     for (int f : framesOnDisk(killed, kFrames))
       EXPECT_TRUE(isCompleteFrame(killed / frameName(f), small.width, small.height)) << "attempt " << attempt;
   }
+  EXPECT_LT(framesOnDisk(killed, kFrames).size(), size_t(kFrames)) << "the kills came too late to test anything";
 
   std::vector<std::string> args = slowRenderArgs(shot, killed, small);
   args.push_back("--resume");
@@ -380,6 +384,99 @@ TEST(SequenceInterrupt, KilledRendersNeverLeaveABrokenFrameAndResumeMatchesAnUni
   ASSERT_EQ(resume.exitStatus, 0) << resume.output;
   for (int f = 1; f <= kFrames; ++f)
     EXPECT_TRUE(bytesWithoutRenderTime(killed / frameName(f)) == bytesWithoutRenderTime(reference / frameName(f)))
+        << "frame " << f;
+}
+
+// ---- output that cannot be written ---------------------------------------------------------------
+
+// A tmpfs mounted on `dir` (needs root) for the life of the object: a small or read-only disk.
+class TmpfsMount {
+ public:
+  TmpfsMount(const fs::path& dir, const std::string& options) : dir_(dir) {
+    fs::create_directories(dir_);
+    const auto run = test::runCommand("mount -t tmpfs -o " + options + " tmpfs " + test::shellQuote(dir_.string()));
+    mounted_ = run.exitStatus == 0;
+    output_ = run.output;
+  }
+  ~TmpfsMount() {
+    if (mounted_) test::runCommand("umount " + test::shellQuote(dir_.string()));
+  }
+  bool mounted() const { return mounted_; }
+  const std::string& output() const { return output_; }
+  bool remount(const std::string& options) {
+    return test::runCommand("mount -o remount," + options + " " + test::shellQuote(dir_.string())).exitStatus == 0;
+  }
+
+ private:
+  fs::path dir_;
+  bool mounted_ = false;
+  std::string output_;
+};
+
+std::vector<std::string> smallRenderArgs(const fs::path& shot, const fs::path& out) {
+  return {"render", shot.string(), "--out", (out / "spheres.####.exr").string(), "--width", "64", "--height", "36",
+          "--quiet"};
+}
+
+TEST(SequenceOutput, AnOutputDirectoryThatCannotBeMadeIsAnErrorBeforeRendering) {
+  const fs::path dir = freshDir();
+  const fs::path shot = writeSphereShot(dir, 2);
+  std::ofstream(dir / "a_file") << "not a directory\n";
+  const auto run = lacrima(smallRenderArgs(shot, dir / "a_file"));
+  EXPECT_EQ(run.exitStatus, 2);
+  EXPECT_EQ(run.output, "output directory '" + (dir / "a_file").string() + "' cannot be created: Not a directory\n");
+}
+
+TEST(SequenceOutput, AReadOnlyOrFullDiskIsAnErrorBeforeRendering) {
+  ASSERT_EQ(geteuid(), 0u) << "mounting a small tmpfs needs root";
+  const fs::path dir = freshDir();
+  const fs::path shot = writeSphereShot(dir, 2);
+  {
+    TmpfsMount readOnly(dir / "ro", "size=1m,ro");
+    ASSERT_TRUE(readOnly.mounted()) << readOnly.output();
+    const auto run = lacrima(smallRenderArgs(shot, dir / "ro"));
+    EXPECT_EQ(run.exitStatus, 2);
+    EXPECT_EQ(run.output, "output directory '" + (dir / "ro").string() + "' is not writable: Read-only file system\n");
+  }
+  TmpfsMount tiny(dir / "tiny", "size=8k");
+  ASSERT_TRUE(tiny.mounted()) << tiny.output();
+  const auto run = lacrima(smallRenderArgs(shot, dir / "tiny"));
+  EXPECT_EQ(run.exitStatus, 2);
+  EXPECT_EQ(run.output, "output directory '" + (dir / "tiny").string() + "' has 8 KB free, a frame needs about 25 KB\n");
+}
+
+// The disk fills in the middle of the sequence: the frame that does not fit is not left behind
+// (not even its temporary file), the run stops and says what is complete, and --resume after
+// making room completes the sequence as an uninterrupted render would.
+TEST(SequenceOutput, ADiskThatFillsUpStopsTheRunCleanlyAndResumeCompletesIt) {
+  ASSERT_EQ(geteuid(), 0u) << "mounting a small tmpfs needs root";
+  const fs::path dir = freshDir();
+  constexpr int kFrames = 6;
+  const fs::path shot = writeSphereShot(dir, kFrames);
+  ASSERT_EQ(lacrima(smallRenderArgs(shot, dir / "reference")).exitStatus, 0);
+  TmpfsMount disk(dir / "disk", "size=40k");  // room for 3 of these frames (about 12 KB each)
+  ASSERT_TRUE(disk.mounted()) << disk.output();
+  const auto full = lacrima(smallRenderArgs(shot, dir / "disk"));
+  EXPECT_EQ(full.exitStatus, 1) << full.output;
+  const std::vector<int> written = framesOnDisk(dir / "disk", kFrames);
+  ASSERT_FALSE(written.empty()) << full.output;
+  ASSERT_LT(written.size(), size_t(kFrames)) << full.output;
+  const int stopped = written.back() + 1;
+  EXPECT_TRUE(contains(full.output, "lacrima: frame " + std::to_string(stopped) + " rendered but NOT written: ")) << full.output;
+  EXPECT_TRUE(contains(full.output, "lacrima: stopped: frame " + std::to_string(stopped) +
+                                        " could not be written (make room or fix the output first). Frames complete: 1-" +
+                                        std::to_string(stopped - 1)))
+      << full.output;
+  EXPECT_TRUE(temporaryFilesIn(dir / "disk").empty()) << full.output;
+  for (int f : written) EXPECT_TRUE(isCompleteFrame(dir / "disk" / frameName(f), 64, 36));
+
+  ASSERT_TRUE(disk.remount("size=1m"));
+  std::vector<std::string> args = smallRenderArgs(shot, dir / "disk");
+  args.push_back("--resume");
+  const auto resume = lacrima(args);
+  ASSERT_EQ(resume.exitStatus, 0) << resume.output;
+  for (int f = 1; f <= kFrames; ++f)
+    EXPECT_TRUE(bytesWithoutRenderTime(dir / "disk" / frameName(f)) == bytesWithoutRenderTime(dir / "reference" / frameName(f)))
         << "frame " << f;
 }
 

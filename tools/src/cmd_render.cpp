@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 
 #include "commands.hpp"
 #include "frame_range.hpp"
@@ -17,6 +18,7 @@
 #include "lacrima/renderer/image_output.hpp"
 #include "lacrima/renderer/render.hpp"
 #include "lacrima/scenes/shot.hpp"
+#include "output_check.hpp"
 #include "progress.hpp"
 #include "render_plan.hpp"
 
@@ -74,6 +76,18 @@ std::vector<int> framesAlreadyComplete(const RenderOptions& o, const Shot& shot,
   return complete;
 }
 
+// The distinct directories the frames go to (a pattern may put the frame number in a directory).
+std::vector<std::filesystem::path> outputDirectories(const std::string& pattern, const std::vector<int>& frames) {
+  std::vector<std::filesystem::path> directories;
+  for (int f : frames) {
+    std::filesystem::path directory = std::filesystem::path(expandFramePattern(pattern, f)).parent_path();
+    if (directory.empty()) directory = ".";
+    if (std::find(directories.begin(), directories.end(), directory) == directories.end())
+      directories.push_back(directory);
+  }
+  return directories;
+}
+
 // Said once, as soon as the render notices the first Ctrl-C / SIGTERM.
 void announceStopAfterFrame(int frameNumber) {
   static std::atomic<bool> announced{false};
@@ -82,7 +96,9 @@ void announceStopAfterFrame(int frameNumber) {
                isatty(STDERR_FILENO) ? "\r\033[K" : "", frameNumber);
 }
 
-enum class FrameOutcome { Written, Failed, Abandoned };
+// NotWritten: the frame rendered but its file could not be written (disk full, directory gone):
+// the next frames would fail the same way, so the run stops.
+enum class FrameOutcome { Written, Failed, NotWritten, Abandoned };
 
 // Renders and writes one frame. `seconds` receives the render time (also for a failed frame).
 FrameOutcome renderOneFrame(Renderer& renderer, const RenderOptions& o, const Shot& shot, const std::string& pattern,
@@ -120,12 +136,17 @@ FrameOutcome renderOneFrame(Renderer& renderer, const RenderOptions& o, const Sh
   // Signals only set flags, so an interrupt cannot cut these writes short: they complete (and
   // rename their temporary file into place) before the loop looks at the flags again.
   const std::filesystem::path exrPath = expandFramePattern(pattern, frameNumber);
-  writeExr(exrPath, film, metadataFor(shot, frame, stats), s.floatOutput);
   std::string previewNote;
-  if (o.preview) {
-    const std::filesystem::path pngPath = previewPathFor(exrPath);
-    writePreviewPng(pngPath, film, previewOcioConfig(shot));
-    previewNote = " + " + pngPath.filename().string();
+  try {
+    writeExr(exrPath, film, metadataFor(shot, frame, stats), s.floatOutput);
+    if (o.preview) {
+      const std::filesystem::path pngPath = previewPathFor(exrPath);
+      writePreviewPng(pngPath, film, previewOcioConfig(shot));
+      previewNote = " + " + pngPath.filename().string();
+    }
+  } catch (const InputError& e) {
+    std::fprintf(stderr, "lacrima: frame %d rendered but NOT written: %s\n", frameNumber, e.what());
+    return FrameOutcome::NotWritten;
   }
   std::fprintf(stderr, "frame %d: %dx%d, %d spp, %s (scene %s %.3f s), %srays/s, %llu NaN/Inf samples discarded -> %s%s\n",
                frameNumber, s.width, s.height, s.samplesPerPixel, formatDuration(stats.seconds).c_str(),
@@ -140,6 +161,7 @@ struct SequenceTally {
   std::vector<int> complete;  // on disk when the run ends: skipped or rendered
   std::vector<int> failed;
   int rendered = 0, skipped = 0;
+  std::optional<int> notWritten;  // the frame whose file could not be written; the run stopped there
   double renderSeconds = 0;  // of every frame rendered (or failed) in this run
 
   int framesDone() const { return int(complete.size() + failed.size()); }
@@ -166,13 +188,14 @@ void printSummary(const std::vector<int>& frames, const SequenceTally& tally, do
                formatDuration(wallSeconds).c_str());
 }
 
-void printResumeHint(const std::vector<int>& frames, const SequenceTally& tally) {
+// why: what stopped the run, and what to do before resuming ("stopped by an interrupt.").
+void printStopHint(const std::vector<int>& frames, const SequenceTally& tally, const char* why) {
   std::vector<int> complete = tally.complete;
   std::sort(complete.begin(), complete.end());
   std::fprintf(stderr,
-               "lacrima: stopped by an interrupt. Frames complete: %s; not rendered: %s.\n"
+               "lacrima: %s Frames complete: %s; not rendered: %s.\n"
                "lacrima: run the same command with --resume to render the rest.\n",
-               formatFrameList(complete).c_str(), formatFrameList(framesNotDone(frames, tally)).c_str());
+               why, formatFrameList(complete).c_str(), formatFrameList(framesNotDone(frames, tally)).c_str());
 }
 
 }  // namespace
@@ -191,6 +214,9 @@ int runRender(const RenderOptions& o) {
     if (o.resume) tally.complete = framesAlreadyComplete(o, shot, pattern, frames);
     tally.skipped = int(tally.complete.size());
     const std::vector<int> toRender = framesNotDone(frames, tally);
+    if (!toRender.empty())
+      checkOutputDirectories(outputDirectories(pattern, toRender),
+                             estimatedFrameBytes(settingsFor(o, shot, toRender.front()), o.preview), toRender.size());
     Renderer renderer;  // keeps the Embree scene from frame to frame (refit when the topology stays)
     for (size_t i = 0; i < toRender.size() && !stopRequested(); ++i) {
       const int frameNumber = toRender[i];
@@ -201,6 +227,10 @@ int runRender(const RenderOptions& o) {
       const FrameOutcome outcome =
           renderOneFrame(renderer, o, shot, pattern, frameNumber, index, int(frames.size()), sequence, seconds);
       if (outcome == FrameOutcome::Abandoned) break;
+      if (outcome == FrameOutcome::NotWritten) {
+        tally.notWritten = frameNumber;
+        break;
+      }
       tally.renderSeconds += seconds;
       if (outcome == FrameOutcome::Written) {
         tally.complete.push_back(frameNumber);
@@ -213,8 +243,14 @@ int runRender(const RenderOptions& o) {
 
     // An interrupt that came after the last frame stopped nothing: the run is simply complete.
     if (stopRequested() && !framesNotDone(frames, tally).empty()) {
-      printResumeHint(frames, tally);
+      printStopHint(frames, tally, "stopped by an interrupt.");
       return kExitInterrupted;
+    }
+    if (tally.notWritten) {
+      const std::string why = fmt::format("stopped: frame {} could not be written (make room or fix the output first).",
+                                          *tally.notWritten);
+      printStopHint(frames, tally, why.c_str());
+      return kExitRenderFailure;
     }
     if (!tally.failed.empty()) {
       std::fprintf(stderr, "lacrima: %zu of %zu frames failed\n", tally.failed.size(), frames.size());
