@@ -124,7 +124,7 @@ bool PathIntegrator::traceCausticSeed(const Vertex& v, const LightSample& light,
     SurfaceHit hit;
     ++counters.rays;
     if (!scene_.intersect(Ray{position, direction, v.time}, hit) || hit.distance >= remaining) return seed.count > 0;
-    if (hit.lightIndex >= 0 || !isDielectric(hit.materialId)) return seed.count = 0, true;
+    if (hit.lightIndex >= 0 || !isDielectric(hit.materialId)) break;  // opaque
     const bool entering = direction.dot(hit.geometricNormal) < 0.0f;
     const InterfaceCrossing crossing = nested_ ? classifyInterface(media, hit.materialId, entering) : InterfaceCrossing{};
     if (!crossing.isFalse) {
@@ -138,7 +138,8 @@ bool PathIntegrator::traceCausticSeed(const Vertex& v, const LightSample& light,
     remaining -= (next - position).dot(direction);
     position = next;
   }
-  return seed.count = 0, true;
+  seed.count = 0;  // blocked (or too many surfaces, as the straight shadow gives up)
+  return true;
 }
 
 // Every segment of the solved chain must reach the next chain point (or the light) without

@@ -4,6 +4,7 @@
 #include <unsupported/Eigen/AutoDiff>
 
 #include <Eigen/LU>
+#include <type_traits>
 
 namespace lacrima {
 
@@ -23,18 +24,29 @@ Eigen::Matrix<S, 3, 1> unit(const Eigen::Matrix<S, 3, 1>& v) {
   return v / sqrt(v.dot(v));
 }
 
-// The patch's point and normal at its current parameters, both differentiable in the two
-// derivative slots starting at `slot`.
-void evaluateActive(const SurfacePatch& patch, int slot, Ad3& position, Ad3& normal) {
-  const Ad u(patch.uv.x(), 6, slot), v(patch.uv.y(), 6, slot + 1);
-  patch.evaluate(u, v, position, normal);
+// The patch's point and normal at its current parameters. With S = Ad both are differentiable
+// in the two derivative slots starting at `slot`; with S = double they are plain values.
+template <class S>
+void evaluateAt(const SurfacePatch& patch, int slot, Eigen::Matrix<S, 3, 1>& position, Eigen::Matrix<S, 3, 1>& normal) {
+  if constexpr (std::is_same_v<S, double>) {
+    patch.evaluate(patch.uv.x(), patch.uv.y(), position, normal);
+  } else {
+    const S u(patch.uv.x(), 6, slot), v(patch.uv.y(), 6, slot + 1);
+    patch.evaluate(u, v, position, normal);
+  }
 }
 
-// The endpoint moved by (a, b) in its tangent frame, a and b differentiable in slots kNext.
-Ad3 activeEndpoint(const ManifoldEndpoint& end) {
-  const Ad a(0.0, 6, kNext), b(0.0, 6, kNext + 1);
-  const Ad3 moved = end.point.cast<Ad>() + end.tangentS.cast<Ad>() * a + end.tangentT.cast<Ad>() * b;
-  return end.atInfinity ? unit(moved) : moved;
+// The endpoint moved by (a, b) in its tangent frame, a and b differentiable in slots kNext (at
+// a = b = 0, so the plain value is the endpoint itself).
+template <class S>
+Eigen::Matrix<S, 3, 1> endpointAt(const ManifoldEndpoint& end) {
+  if constexpr (std::is_same_v<S, double>) {
+    return end.point;
+  } else {
+    const S a(0.0, 6, kNext), b(0.0, 6, kNext + 1);
+    const Eigen::Matrix<S, 3, 1> moved = end.point.cast<S>() + end.tangentS.cast<S>() * a + end.tangentT.cast<S>() * b;
+    return end.atInfinity ? unit(moved) : moved;
+  }
 }
 
 // The constraint of vertex i (Hanika et al. 2015 sec. 4, eq. 5, refraction with indices scaled
@@ -42,25 +54,26 @@ Ad3 activeEndpoint(const ManifoldEndpoint& end) {
 // tangent frame is built from a fixed reference direction (the patch's edgeU) projected onto the
 // tangent plane, so that it depends on the normal alone: h . s = h . t = 0 exactly when h is
 // parallel to n, whatever the frame, and the frame's own derivative is exact.
-Eigen::Matrix<Ad, 2, 1> vertexConstraint(const Vec3d& x0, const SpecularChain& chain, const ManifoldEndpoint& end,
-                                         int i) {
-  Ad3 previous, position, normal, next, unused;
-  if (i == 0) previous = x0.cast<Ad>();
-  else evaluateActive(chain.vertices[i - 1].patch, kPrevious, previous, unused);
-  evaluateActive(chain.vertices[i].patch, kSelf, position, normal);
-  Ad3 wOut;
+template <class S>
+Eigen::Matrix<S, 2, 1> vertexConstraint(const Vec3d& x0, const SpecularChain& chain, const ManifoldEndpoint& end, int i) {
+  using V3 = Eigen::Matrix<S, 3, 1>;
+  V3 previous, position, normal, next, unused;
+  if (i == 0) previous = x0.cast<S>();
+  else evaluateAt<S>(chain.vertices[i - 1].patch, kPrevious, previous, unused);
+  evaluateAt<S>(chain.vertices[i].patch, kSelf, position, normal);
+  V3 wOut;
   if (i + 1 < chain.count) {
-    evaluateActive(chain.vertices[i + 1].patch, kNext, next, unused);
-    wOut = unit(Ad3(next - position));
+    evaluateAt<S>(chain.vertices[i + 1].patch, kNext, next, unused);
+    wOut = unit(V3(next - position));
   } else {
-    next = activeEndpoint(end);
-    wOut = end.atInfinity ? next : unit(Ad3(next - position));
+    next = endpointAt<S>(end);
+    wOut = end.atInfinity ? next : unit(V3(next - position));
   }
-  const Ad3 wIn = unit(Ad3(previous - position));
-  const Ad3 h = unit(Ad3(wIn + wOut * Ad(chain.vertices[i].eta)));
-  const Ad3 reference = chain.vertices[i].patch.edgeU.normalized().cast<Ad>();
-  const Ad3 s = unit(Ad3(reference - normal * normal.dot(reference)));
-  const Ad3 t = normal.cross(s);
+  const V3 wIn = unit(V3(previous - position));
+  const V3 h = unit(V3(wIn + wOut * S(chain.vertices[i].eta)));
+  const V3 reference = chain.vertices[i].patch.edgeU.normalized().cast<S>();
+  const V3 s = unit(V3(reference - normal * normal.dot(reference)));
+  const V3 t = normal.cross(s);
   return {s.dot(h), t.dot(h)};
 }
 
@@ -80,7 +93,7 @@ Linearization linearize(const Vec3d& x0, const SpecularChain& chain, const Manif
   const int n = 2 * chain.count;
   Linearization l{ChainVector::Zero(n), ChainMatrix::Zero(n, n), EndpointMatrix::Zero(n, 2)};
   for (int i = 0; i < chain.count; ++i) {
-    const Eigen::Matrix<Ad, 2, 1> c = vertexConstraint(x0, chain, end, i);
+    const Eigen::Matrix<Ad, 2, 1> c = vertexConstraint<Ad>(x0, chain, end, i);
     for (int row = 0; row < 2; ++row) {
       const int r = 2 * i + row;
       const Derivatives& d = c[row].derivatives();
@@ -120,6 +133,13 @@ std::optional<SpecularChain> steppedChain(const Vec3d& x0, const SpecularChain& 
 // The constraints' Euclidean norm: unlike the largest component, it does not depend on the
 // tangent frames, which change when a sphere patch is rebased.
 double constraintNorm(const ChainVector& v) { return v.norm(); }
+
+// The same without derivatives (cheap: for trying steps).
+double constraintNorm(const Vec3d& x0, const SpecularChain& chain, const ManifoldEndpoint& end) {
+  double sum = 0.0;
+  for (int i = 0; i < chain.count; ++i) sum += vertexConstraint<double>(x0, chain, end, i).squaredNorm();
+  return std::sqrt(sum);
+}
 
 // A converged chain must refract at every vertex: w_in and w_out on opposite sides of the
 // normal. (h parallel to n has "reflection-like" roots as well, which are not light paths.)
@@ -173,7 +193,7 @@ SurfacePatch SurfacePatch::rebased() const {
 }
 
 double manifoldConstraintError(const Vec3d& x0, const SpecularChain& chain, const ManifoldEndpoint& end) {
-  return constraintNorm(linearize(x0, chain, end).constraints);
+  return constraintNorm(x0, chain, end);
 }
 
 // Newton's method with step halving (Hanika et al. 2015 sec. 4.2, alg. 1): a step is accepted
@@ -193,11 +213,10 @@ bool solveSpecularChain(const Vec3d& x0, SpecularChain& chain, const ManifoldEnd
     for (;;) {
       const std::optional<SpecularChain> moved = steppedChain(x0, chain, step, scale, projection);
       if (moved) {
-        Linearization next = linearize(x0, *moved, end);
-        const double nextError = constraintNorm(next.constraints);
+        const double nextError = constraintNorm(x0, *moved, end);
         if (nextError < error) {
           chain = *moved;
-          l = next;
+          l = linearize(x0, chain, end);
           error = nextError;
           scale = std::min(1.0, 2.0 * scale);
           break;
@@ -229,7 +248,7 @@ double manifoldGeometryTerm(const Vec3d& x0, const SpecularChain& chain, const M
   const double det = dU.topRows<2>().determinant();
 
   Ad3 p1, n1;
-  evaluateActive(chain.vertices[0].patch, kSelf, p1, n1);
+  evaluateAt<Ad>(chain.vertices[0].patch, kSelf, p1, n1);
   Vec3d dpdu, dpdv;
   for (int axis = 0; axis < 3; ++axis) {
     dpdu[axis] = p1[axis].derivatives()[kSelf];

@@ -99,9 +99,9 @@ class StayOnPatch final : public ManifoldProjection {
 };
 
 struct ManifoldSolverOptions {
-  int maxIterations = 40;
+  int maxIterations = 20;
   double tolerance = 1e-7;     // on |h_tangent|, i.e. about the angle (radians) Snell's law is off
-  double minStepScale = 1e-4;  // give up when step halving gets below this
+  double minStepScale = 1.0 / 64;  // give up when step halving gets below this
 };
 
 // Solves the chain's constraints by Newton's method from the seed `chain` (its vertices' patches
