@@ -43,7 +43,7 @@ class EmbreeProjection final : public ManifoldProjection {
   EmbreeProjection(const EmbreeScene& scene, float time, PathCounters& counters)
       : scene_(scene), time_(time), counters_(counters) {}
 
-  std::optional<SurfacePatch> project(int, const SurfacePatch& moved, const Vec3d& from) const override {
+  std::optional<SurfacePatch> project(const SurfacePatch& moved, const Vec3d& from) const override {
     const Vec3d target = moved.position();
     const Vec3d direction = (target - from).normalized();
     const float step = 1e-4f * std::max(0.05f, from.cast<float>().cwiseAbs().maxCoeff());  // as offsetOrigin

@@ -121,7 +121,7 @@ std::optional<SpecularChain> steppedChain(const Vec3d& x0, const SpecularChain& 
     if (patch.kind == SurfacePatch::Kind::Sphere) {
       moved.vertices[i].patch = patch.rebased();
     } else {
-      const std::optional<SurfacePatch> projected = projection.project(i, patch, from);
+      const std::optional<SurfacePatch> projected = projection.project(patch, from);
       if (!projected) return std::nullopt;
       moved.vertices[i].patch = *projected;
     }

@@ -137,6 +137,16 @@ TEST(Caustics, EnvironmentCausticAgreesWithBruteForcePathTracing) {
   expectAgreement(scene, 256, 16384, 6);
 }
 
+// A drop sunk into the floor (centre 4 mm above it): the floor under the cap lies inside the
+// water, so the light sample's seed crosses one interface, water -> air (eta = 1 / 1.337), and
+// the radiance there carries the n^2 of the denser medium. The cap's focal length (about 4 cm)
+// lies far below the floor: one refracted path per light point.
+TEST(Caustics, SunkDropAgreesWithBruteForcePathTracing) {
+  DropScene scene;
+  scene.dropHeight = 0.004f;
+  expectAgreement(scene, 256, 8192, 6);
+}
+
 TEST(Caustics, RendersTheSameWithAnyThreadCount) {
   DropScene scene;
   scene.dropHeight = kFocusHeight;

@@ -82,20 +82,20 @@ struct SpecularChain {
   int count = 0;
 };
 
-// Moves vertex `index` onto the scene's surface after a Newton step (Hanika sec. 4.2: the step
-// is taken in the tangent plane and projected back). `moved` is the vertex's patch at its new
-// parameters, `from` the (already projected) previous chain point. Nothing when the surface is
-// not found there, which halves the step.
+// Moves a triangle vertex onto the scene's surface after a Newton step (Hanika sec. 4.2: the
+// step is taken in the tangent plane and projected back). `moved` is the vertex's patch at its
+// new parameters, `from` the (already projected) previous chain point. Nothing when the surface
+// is not found there, which halves the step.
 class ManifoldProjection {
  public:
   virtual ~ManifoldProjection() = default;
-  virtual std::optional<SurfacePatch> project(int index, const SurfacePatch& moved, const Vec3d& from) const = 0;
+  virtual std::optional<SurfacePatch> project(const SurfacePatch& moved, const Vec3d& from) const = 0;
 };
 
 // Keeps a moved vertex on its own patch: exact for planes and for spheres (unit tests).
 class StayOnPatch final : public ManifoldProjection {
  public:
-  std::optional<SurfacePatch> project(int, const SurfacePatch& moved, const Vec3d&) const override { return moved; }
+  std::optional<SurfacePatch> project(const SurfacePatch& moved, const Vec3d&) const override { return moved; }
 };
 
 struct ManifoldSolverOptions {
