@@ -274,6 +274,9 @@ bool EmbreeScene::intersect(const Ray& ray, SurfaceHit& hit) const {
   const GeometryRecord& record = records_[rayHit.hit.geomID];
   hit.distance = rayHit.ray.tfar;
   hit.lightIndex = -1;
+  hit.geometryId = rayHit.hit.geomID;
+  hit.primitiveId = rayHit.hit.primID;
+  hit.barycentric = Vec2(rayHit.hit.u, rayHit.hit.v);
   switch (record.kind) {
     case Kind::Mesh: {
       const MeshInstance& instance = frame_->meshes[record.index];
@@ -302,6 +305,42 @@ bool EmbreeScene::intersect(const Ray& ray, SurfaceHit& hit) const {
     }
   }
   return true;
+}
+
+SurfacePatch EmbreeScene::patchOf(const SurfaceHit& hit, float time) const {
+  const GeometryRecord& record = records_[hit.geometryId];
+  if (record.kind == Kind::Sphere) {
+    const Sphere& sphere = frame_->spheres[record.index];
+    const Vec3d center = sphere.centerAt(time).cast<double>();
+    return SurfacePatch::sphere(center, sphere.radius, (hit.position.cast<double>() - center).normalized(), hit.geometryId);
+  }
+  // A mesh triangle at the ray's time, as surfaceOfMesh interpolates it.
+  const MeshInstance& instance = frame_->meshes[record.index];
+  const TriangleMesh& mesh = instance.mesh;
+  const uint32_t* tri = &mesh.indices[3 * size_t(hit.primitiveId)];
+  const double t = time;
+  const auto positionAt = [&](uint32_t i) -> Vec3d {
+    const Vec3d open = mesh.positions[i].cast<double>();
+    return instance.moves() ? Vec3d((1.0 - t) * open + t * instance.positionsAtClose[i].cast<double>()) : open;
+  };
+  const auto normalAt = [&](uint32_t i) -> Vec3d {
+    const Vec3d open = mesh.normals[i].cast<double>();
+    return instance.normalsAtClose.empty() ? open : Vec3d((1.0 - t) * open + t * instance.normalsAtClose[i].cast<double>());
+  };
+  SurfacePatch patch;
+  patch.origin = positionAt(tri[0]);
+  patch.edgeU = positionAt(tri[1]) - patch.origin;
+  patch.edgeV = positionAt(tri[2]) - patch.origin;
+  if (mesh.normals.empty()) {
+    patch.normal = patch.edgeU.cross(patch.edgeV).normalized();  // flat: the normal does not vary
+  } else {
+    patch.normal = normalAt(tri[0]);
+    patch.normalU = normalAt(tri[1]) - patch.normal;
+    patch.normalV = normalAt(tri[2]) - patch.normal;
+  }
+  patch.uv = hit.barycentric.cast<double>();
+  patch.surfaceId = hit.geometryId;
+  return patch;
 }
 
 bool EmbreeScene::occluded(const Vec3& origin, const Vec3& direction, float maxDistance, float time) const {

@@ -9,6 +9,7 @@
 
 #include "lacrima/renderer/camera.hpp"
 #include "lacrima/renderer/frame.hpp"
+#include "lacrima/renderer/specular_manifold.hpp"
 
 namespace lacrima {
 
@@ -20,6 +21,9 @@ struct SurfaceHit {
   uint32_t materialId = 0;
   int lightIndex = -1;   // >= 0 when the surface is an area light (emits, does not reflect)
   float wetness = 0.0f;  // film thickness (m) interpolated from MeshInstance::wetness; 0 = dry
+  unsigned geometryId = 0;   // Embree's: which mesh, sphere or light
+  unsigned primitiveId = 0;  // the triangle of a mesh
+  Vec2 barycentric = Vec2::Zero();  // Embree's (u, v) on that triangle
 };
 
 // One Embree device and scene that can follow the frames of a shot. The BVH is two-level
@@ -45,6 +49,11 @@ class EmbreeScene {
   // True when anything blocks the segment origin + t * direction, 0 < t < maxDistance.
   // time: the shutter time of the path, as in Ray::time.
   bool occluded(const Vec3& origin, const Vec3& direction, float maxDistance, float time = 0.0f) const;
+
+  // The local parametrisation of the surface at `hit` (a mesh or a sphere, not a light) at
+  // shutter time `time`, for manifold next-event estimation (specular_manifold.hpp). The
+  // parameters are Embree's barycentrics; surfaceId is hit.geometryId.
+  SurfacePatch patchOf(const SurfaceHit& hit, float time) const;
 
   RTCScene handle() const { return scene_; }
 

@@ -39,20 +39,8 @@ constexpr int kMaxProbeSurfaces = 256;
 }  // namespace
 
 bool PathIntegrator::countedByTransparentShadows(bool chainAfterNonSpecular, int crossings) const {
-  return frame_.settings.transparentShadows && chainAfterNonSpecular && crossings > 0;
+  return frame_.settings.causticsMode() != Caustics::Off && chainAfterNonSpecular && crossings > 0;
 }
-
-struct PathIntegrator::Vertex {
-  Vec3 position;
-  Vec3 geometricNormal;  // oriented as the shading frame's side (see orientNormals)
-  ShadingFrame frame;
-  uint32_t materialId;
-  bool entering;         // arrived on the geometric normal's side (into a dielectric's medium)
-  Vec3 wo;               // world, towards the previous vertex
-  Vec3 woLocal;
-  const Bsdf* bsdf;
-  float time;            // shutter time of the path
-};
 
 PathIntegrator::PathIntegrator(const Frame& frame, const EmbreeScene& scene, const LightSampler& lights)
     : frame_(frame), scene_(scene), lights_(lights), maxDepth_(frame.settings.maxDepth) {
@@ -147,17 +135,24 @@ Color PathIntegrator::sampleDirectLight(const Vertex& v, const MediumStack& medi
   const bool geometricReflect = light.direction.dot(v.geometricNormal) * v.wo.dot(v.geometricNormal) > 0.0f;
   const bool shadingReflect = wiLocal.z() * v.woLocal.z() > 0.0f;
   if (geometricReflect != shadingReflect) return Color::Zero();
+  // A shadow ray through a (rough) dielectric starts in the media on the far side.
+  MediumStack shadowMedia = media;
+  if (!geometricReflect) crossInterface(shadowMedia, v.materialId, v.entering);
 
   const Color f = v.bsdf->eval(v.woLocal, wiLocal) * absCosTheta(wiLocal);
   if ((f <= 0.0f).all()) return Color::Zero();
   const Vec3 origin = offsetOrigin(v.position, v.geometricNormal, light.direction);
   const float maxDistance = std::isinf(light.distance) ? light.distance : light.distance * (1.0f - 1e-4f);
-  // A shadow ray through a (rough) dielectric starts in the media on the far side.
-  MediumStack shadowMedia = media;
-  if (!geometricReflect) crossInterface(shadowMedia, v.materialId, v.entering);
+  ++counters.rays;
+  const bool blocked = scene_.occluded(origin, light.direction, maxDistance, v.time);
+  // MNEE seeds its chain with this straight shadow ray (so a sample whose straight direction
+  // is below the surface, f = 0 above, finds no caustic either).
+  if (blocked && frame_.settings.causticsMode() == Caustics::Mnee)
+    if (const std::optional<Color> caustic = manifoldDirectLight(v, light, shadowMedia, counters)) return *caustic;
   bool crossedDielectric = false;
-  const Color transmittance = shadowTransmittance(Ray{origin, light.direction, v.time}, maxDistance, shadowMedia,
-                                                  crossedDielectric, counters);
+  const Color transmittance =
+      blocked ? shadowTransmittance(Ray{origin, light.direction, v.time}, maxDistance, shadowMedia, crossedDielectric, counters)
+              : Color::Ones();
   if ((transmittance <= 0.0f).all()) return Color::Zero();
   // Through a dielectric, only this strategy counts the path (the BSDF strategy drops it, see
   // radiance()), so it takes the full weight.
@@ -170,16 +165,15 @@ Color PathIntegrator::sampleDirectLight(const Vertex& v, const MediumStack& medi
 // reaches skin under a drop or the iris under the cornea only through BSDF-sampled paths that
 // happen to hit a small light after refraction, which leaves those regions black and speckled.
 // The straight line ignores refraction: the shadow of a drop is a soft, slightly dimmed shadow
-// instead of a focused caustic (the bias, documented in docs/shot-format.md). Caustics need
-// manifold next-event estimation (a later issue).
+// instead of a focused caustic (the bias, documented in docs/shot-format.md). Caustics::Mnee
+// replaces it by the refracted connection (mnee_direct_light.cpp) for 1 or 2 interfaces and
+// keeps it as the fallback for more.
 // Nested dielectrics: false interfaces cost nothing (the BSDF path skips them too, so it stays
 // the other MIS strategy); real ones transmit with the pair of indices present there.
 Color PathIntegrator::shadowTransmittance(const Ray& shadowRay, float maxDistance, MediumStack media,
                                           bool& crossedDielectric, PathCounters& counters) const {
   const Vec3& direction = shadowRay.direction;
-  ++counters.rays;
-  if (!scene_.occluded(shadowRay.origin, direction, maxDistance, shadowRay.time)) return Color::Ones();
-  if (!frame_.settings.transparentShadows) return Color::Zero();
+  if (frame_.settings.causticsMode() == Caustics::Off) return Color::Zero();
   Color transmittance = Color::Ones();
   Vec3 position = shadowRay.origin;
   float remaining = maxDistance;

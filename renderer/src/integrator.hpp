@@ -14,6 +14,7 @@
 #include "lacrima/materials/skin.hpp"
 #include "lacrima/materials/subsurface.hpp"
 #include "lacrima/renderer/medium_stack.hpp"
+#include "lacrima/renderer/specular_manifold.hpp"
 
 namespace lacrima {
 
@@ -42,11 +43,22 @@ class PathIntegrator {
 
   Color sampleDirectLight(const Vertex& vertex, const MediumStack& media, PixelSampler& sampler,
                           PathCounters& counters) const;
-  // What reaches the shading point along shadowRay within maxDistance (see integrator.cpp);
-  // media: the media the shadow ray starts in.
+  // What reaches the shading point along shadowRay, known to be blocked, within maxDistance
+  // (see integrator.cpp); media: the media the shadow ray starts in.
   Color shadowTransmittance(const Ray& shadowRay, float maxDistance, MediumStack media, bool& crossedDielectric,
                             PathCounters& counters) const;
   bool countedByTransparentShadows(bool chainAfterNonSpecular, int crossings) const;
+
+  // Manifold next-event estimation (mnee_direct_light.cpp): the light sample's contribution
+  // through the 1 or 2 smooth dielectric interfaces its straight shadow ray crosses; nothing
+  // when that ray crosses none, or more than 2 (the caller then goes on as without caustics).
+  std::optional<Color> manifoldDirectLight(const Vertex& v, const LightSample& light, const MediumStack& shadowMedia,
+                                           PathCounters& counters) const;
+  struct CausticSeed;  // mnee_direct_light.cpp
+  bool traceCausticSeed(const Vertex& v, const LightSample& light, MediumStack media, CausticSeed& seed,
+                        PathCounters& counters) const;
+  bool causticChainIsVisible(const Vertex& v, const LightSample& light, const CausticSeed& seed,
+                             const SpecularChain& chain, MediumStack media, PathCounters& counters) const;
 
   // Nested dielectrics: the first surface along ray that is not a false interface (ray's origin
   // moves past the skipped ones, media follows them); Lost when too many were skipped.
@@ -89,6 +101,18 @@ class PathIntegrator {
   MediumStack cameraMedia_;
   std::vector<std::optional<SubsurfaceSkin>> subsurface_;  // per material; none unless skin with subsurface
   std::vector<float> dielectricIndex_;  // per material: a dielectric's index, 0 if opaque (subsurface walks)
+};
+
+struct PathIntegrator::Vertex {
+  Vec3 position;
+  Vec3 geometricNormal;  // oriented as the shading frame's side (see orientNormals)
+  ShadingFrame frame;
+  uint32_t materialId;
+  bool entering;         // arrived on the geometric normal's side (into a dielectric's medium)
+  Vec3 wo;               // world, towards the previous vertex
+  Vec3 woLocal;
+  const Bsdf* bsdf;
+  float time;            // shutter time of the path
 };
 
 }  // namespace lacrima

@@ -50,6 +50,7 @@ LightSample LightSampler::sample(const Vec3& point, float uSelect, const Vec2& u
   if (chosen < int(lights_.size())) {
     const AreaLight& light = lights_[chosen];
     s = light.shape == AreaLight::Shape::Rectangle ? sampleRectangle(light, point, u) : sampleSphere(light, point, u);
+    s.lightIndex = chosen;
   } else {
     const EnvironmentSample e = environment_->sample(u);
     s.direction = e.direction;
@@ -79,6 +80,7 @@ LightSample LightSampler::sampleRectangle(const AreaLight& light, const Vec3& po
   s.distance = distance;
   s.radiance = light.radiance;
   s.pdf = distance2 / (absCos * rectangleArea(light));
+  s.normal = normal;
   return s;
 }
 
@@ -102,6 +104,7 @@ LightSample LightSampler::sampleSphere(const AreaLight& light, const Vec3& point
   s.distance = distance;
   s.radiance = light.radiance;
   s.pdf = 1.0f / (2.0f * kPi * oneMinusCos);
+  s.normal = (point + distance * direction - light.center).normalized();
   return s;
 }
 

@@ -14,6 +14,8 @@ struct LightSample {
   float distance = 0;  // to the light surface (infinity for the environment)
   Color radiance = Color::Zero();
   float pdf = 0.0f;    // solid angle, including the light selection probability
+  Vec3 normal = Vec3::Zero();  // the light surface's unit normal at the sampled point (area lights)
+  int lightIndex = -1;         // the area light sampled; -1 for the environment
 };
 
 class LightSampler {

@@ -36,6 +36,7 @@ const std::vector<std::string> kRootKeys = {"version",   "frames", "output",    
                                             "materials", "lights", "assets",      "shapes",
                                             "tears",     "details"};
 const std::vector<std::string> kMaterialTypes = {"diffuse", "skin", "water", "rough_dielectric"};
+const std::vector<std::string> kCausticsModes = {"mnee", "straight", "off"};  // order of readCaustics' modes
 const std::vector<std::string> kLightTypes = {"rectangle", "sphere"};
 const std::vector<std::string> kShapeTypes = {"sphere", "ellipsoid", "rectangle"};
 const std::vector<std::string> kTearTypes = {"dripping", "shedding", "liquid"};
@@ -267,7 +268,7 @@ class ShotReader {
   bool readRender(const Json& v) {
     const size_t before = c_.errorCount();
     ObjectReader o(c_, v, "/render", {"width", "height", "spp", "maxDepth", "seed", "threads", "floatOutput",
-                                           "transparentShadows"});
+                                           "transparentShadows", "caustics"});
     RenderSettings& s = shot_.render;
     if (auto x = o.integer("width", Range::closed(1, 16384), true)) s.width = int(*x);
     if (auto x = o.integer("height", Range::closed(1, 16384), true)) s.height = int(*x);
@@ -277,7 +278,29 @@ class ShotReader {
     if (auto x = o.integer("threads", Range::atLeast(0))) s.threads = int(*x);
     if (auto x = o.boolean("floatOutput")) s.floatOutput = *x;
     if (auto x = o.boolean("transparentShadows")) s.transparentShadows = *x;
+    readCaustics(o, s);
     return c_.errorCount() == before;
+  }
+
+  // "caustics": "mnee" | "straight" | "off" (docs/shot-format.md, "Caustics"). The older
+  // "transparentShadows": false means "off"; with another explicit mode it is a contradiction.
+  void readCaustics(ObjectReader& o, RenderSettings& s) {
+    const auto mode = o.string("caustics");
+    if (!mode) return;
+    const auto it = std::find(kCausticsModes.begin(), kCausticsModes.end(), *mode);
+    if (it == kCausticsModes.end()) {
+      const std::string suggestion = didYouMean(*mode, kCausticsModes);
+      o.error("caustics", suggestion.empty() ? fmt::format("unknown caustics mode '{}' (expected one of {})", *mode,
+                                                           quotedList(kCausticsModes))
+                                             : fmt::format("unknown caustics mode '{}'{}", *mode, suggestion));
+      return;
+    }
+    static constexpr Caustics modes[] = {Caustics::Mnee, Caustics::Straight, Caustics::Off};
+    s.caustics = modes[it - kCausticsModes.begin()];
+    if (!s.transparentShadows && s.caustics != Caustics::Off)
+      o.error("caustics", fmt::format("'{}' contradicts \"transparentShadows\": false (which means \"off\"); give "
+                                      "only \"caustics\"",
+                                      *mode));
   }
 
   // ---- materials ---------------------------------------------------------------------------

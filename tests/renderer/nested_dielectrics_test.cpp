@@ -278,6 +278,7 @@ Frame floorUnderNestedBalls(int waterPriority) {
   frame.lights.push_back(test::sphereLightGivingUnitFloor(kAlbedo, kLightRadius, kLightHeight));
   frame.camera = test::lookAt(Vec3(2, 1, 0), Vec3::Zero(), 0.5f);
   frame.settings = test::smallSettings(12, 64, 1);
+  frame.settings.caustics = Caustics::Straight;  // the straight shadow ray is what this checks
   return frame;
 }
 

@@ -1,4 +1,4 @@
-// Transparent shadows (integrator.cpp): a shadow ray crosses smooth dielectrics straight, keeping
+// Transparent shadows (integrator.cpp, Caustics::Straight): a shadow ray crosses smooth dielectrics straight, keeping
 // their Fresnel transmission, and BSDF paths that reach a light through them are not counted a
 // second time. Scene: a Lambertian floor, a water ball above it, a small sphere light straight
 // above both; the camera looks obliquely at the floor point under the ball's centre.
@@ -27,6 +27,7 @@ Frame floorUnderWaterBall(bool transparentShadows, int maxDepth) {
   frame.camera = test::lookAt(Vec3(2, 1, 0), Vec3::Zero(), 0.5f);
   frame.settings = test::smallSettings(12, 64, maxDepth);
   frame.settings.transparentShadows = transparentShadows;
+  frame.settings.caustics = Caustics::Straight;  // the straight shadow this file tests (caustics_test.cpp: MNEE)
   return frame;
 }
 

@@ -72,6 +72,14 @@ struct AreaLight {
   bool twoSided = false;
 };
 
+// How light reaches a diffuse or glossy point through smooth dielectrics (drops, tears, the
+// cornea) on the way to a light; see docs/shot-format.md, "Caustics".
+enum class Caustics {
+  Off,       // plain path tracing: only BSDF-sampled paths find it (unbiased, very noisy)
+  Straight,  // transparent shadows: shadow rays go straight through, Fresnel-weighted (no focusing)
+  Mnee,      // manifold next-event estimation: the refracted connection, focused caustics
+};
+
 struct RenderSettings {
   int width = 640;
   int height = 360;
@@ -81,9 +89,10 @@ struct RenderSettings {
   int threads = 0;         // 0 = all cores
   int frameNumber = 1;     // part of the random key
   bool floatOutput = false;  // EXR beauty as float instead of half
-  // Shadow rays pass straight through smooth dielectrics (drops, cornea) with their Fresnel
-  // transmission instead of being blocked; see integrator.cpp for the estimator and its bias.
+  Caustics caustics = Caustics::Mnee;
+  // The older switch: false means Caustics::Off whatever `caustics` says; true leaves `caustics`.
   bool transparentShadows = true;
+  Caustics causticsMode() const { return transparentShadows ? caustics : Caustics::Off; }
 };
 
 struct Frame {

@@ -1,0 +1,51 @@
+// The `render.caustics` key (docs/shot-format.md, "Caustics") and its relation to the older
+// `render.transparentShadows`.
+#include <gtest/gtest.h>
+
+#include "lacrima/scenes/shot.hpp"
+#include "scenes/shot_test_support.hpp"
+
+namespace lacrima {
+namespace {
+
+using test::expectSingleError;
+using test::writeShot;
+
+std::string shotWithRender(const std::string& renderExtra) {
+  return "{\n  \"version\": 1,\n  \"frames\": {\"start\": 1, \"end\": 1, \"fps\": 24},\n"
+         "  \"output\": \"out.####.exr\",\n  \"render\": {\"width\": 8, \"height\": 8, \"spp\": 1" + renderExtra + "},\n"
+         "  \"camera\": {\"position\": [0, 0, 3], \"lookAt\": [0, 0, 0], \"fov\": 30}\n}\n";
+}
+
+Caustics modeOf(const std::string& name, const std::string& renderExtra) {
+  return loadShot(writeShot(name, shotWithRender(renderExtra))).render.causticsMode();
+}
+
+TEST(CausticsSetting, DefaultsToMneeAndReadsEachMode) {
+  EXPECT_EQ(modeOf("caustics_default.json", ""), Caustics::Mnee);
+  EXPECT_EQ(modeOf("caustics_mnee.json", R"(, "caustics": "mnee")"), Caustics::Mnee);
+  EXPECT_EQ(modeOf("caustics_straight.json", R"(, "caustics": "straight")"), Caustics::Straight);
+  EXPECT_EQ(modeOf("caustics_off.json", R"(, "caustics": "off")"), Caustics::Off);
+}
+
+TEST(CausticsSetting, TransparentShadowsFalseStillMeansOff) {
+  EXPECT_EQ(modeOf("caustics_ts_false.json", R"(, "transparentShadows": false)"), Caustics::Off);
+  EXPECT_EQ(modeOf("caustics_ts_false_off.json", R"(, "transparentShadows": false, "caustics": "off")"), Caustics::Off);
+  EXPECT_EQ(modeOf("caustics_ts_true.json", R"(, "transparentShadows": true, "caustics": "straight")"),
+            Caustics::Straight);
+}
+
+TEST(CausticsSetting, BadValuesAreReportedAtTheirPath) {
+  expectSingleError("caustics_typo.json", shotWithRender(R"(, "caustics": "mne")"),
+                    "/render/caustics: unknown caustics mode 'mne'; did you mean 'mnee'?");
+  expectSingleError("caustics_unknown.json", shotWithRender(R"(, "caustics": "photons")"),
+                    "/render/caustics: unknown caustics mode 'photons' (expected one of 'mnee', 'straight', 'off')");
+  expectSingleError("caustics_type.json", shotWithRender(R"(, "caustics": true)"),
+                    "/render/caustics: expected a non-empty string, found true");
+  expectSingleError("caustics_contradiction.json", shotWithRender(R"(, "transparentShadows": false, "caustics": "mnee")"),
+                    "/render/caustics: 'mnee' contradicts \"transparentShadows\": false (which means \"off\"); give only "
+                    "\"caustics\"");
+}
+
+}  // namespace
+}  // namespace lacrima
