@@ -388,10 +388,19 @@ void TearLiquidSimulation::detachIfHeavy(Bead& bead, int id) {
   // The drop hangs below its contact point: its centre one sphere radius further along gravity.
   drop.detachCentre = positionAt(bead.arcLength) + gHat_ * equivalentRadius(bead.volume);
   drop.volume = bead.volume;
+  drop.oscillation = dropOscillation(sliding_.fluid, input_.params.viscosity, bead.volume, detachAmplitude(bead));
   drops_.push_back(drop);
   detached_ += bead.volume;
   bead.volume = 0.0;
   bead.phase = BeadPhase::Detached;
+}
+
+double TearLiquidSimulation::detachAmplitude(const Bead& bead) const {
+  const ContactAngleHysteresis& angles = input_.params.contactAngles;
+  const double thetaMean = 0.5 * (angles.advancing + angles.receding);
+  // The hanging bead as state() reports and the frame draws it (tilt clamped to a wall).
+  const BeadShape shape = beadShape(sliding_.fluid, bead.volume, thetaMean, std::min(tiltAt(bead.arcLength), 0.5 * kPiD));
+  return modeTwoAmplitudeFromAspect(shape.halfLength / shape.halfWidth);
 }
 
 void TearLiquidSimulation::dryFilm() {
@@ -449,6 +458,10 @@ TearLiquidState TearLiquidSimulation::state(double t) const {
     view.velocity = drop.detachVelocity + g * dt;
     view.volume = drop.volume;
     view.radius = equivalentRadius(drop.volume);
+    view.axis = view.velocity.squaredNorm() > 0.0 ? view.velocity.normalized() : gHat_;
+    view.amplitude = drop.oscillation.amplitudeAt(dt);
+    view.amplitudeEnvelope = drop.oscillation.envelopeAt(dt);
+    view.axes = modeTwoSpheroid(view.radius, view.amplitude);
     state.drops.push_back(view);
   }
   for (const LiquidPathSample& sample : input_.path) state.sampleFilmThickness.push_back(filmThicknessAt(sample.arcLength));
