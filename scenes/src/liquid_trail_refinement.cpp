@@ -25,20 +25,6 @@ float distanceToSegment(const Vec3& p, const Vec3& a, const Vec3& b) {
   return (p - (a + f * d)).norm();
 }
 
-// The smoothed positions `smoothed` (one per vertex of `neutral`) carried through `levels` linear
-// refinements of `neutral` from `selected`: the stencils refinePrimitive applies, replayed.
-std::vector<Vec3> refinedSmoothedSkin(TriangleMesh neutral, std::vector<bool> selected, int levels,
-                                      std::vector<Vec3> smoothed) {
-  for (int level = 0; level < levels; ++level) {
-    RegionRefinement r = refineRegionOnce(neutral, selected, RefinementScheme::Linear);
-    neutral.positions = applyStencils(r.stencils, neutral.positions);
-    smoothed = applyStencils(r.stencils, smoothed);
-    neutral.indices = std::move(r.indices);
-    selected = std::move(r.refined);
-  }
-  return smoothed;
-}
-
 // Traces the tear's path on the first frame's smoothed skin and refines the triangles along it.
 void refineAlongTear(const Shot& shot, const ShotLiquidTear& tear, GltfAsset& gltf, SmoothedSkins& smoothedSkins) {
   const ShotSurfacePoint source = resolveSurfaceAnchor(shot, tear.asset, tear.part, tear.source);
@@ -54,8 +40,9 @@ void refineAlongTear(const Shot& shot, const ShotLiquidTear& tear, GltfAsset& gl
   if (path.points.size() < 2) return;  // resolveLiquidTears reports it
   GltfPrimitive& primitive = gltf.primitives[source.primitive];
   const std::vector<bool> selected = trailTriangles(skin, primitive.weldMap, path.positions, kTrailRefinementMargin);
-  smoothedSkins[key] = refinedSmoothedSkin(primitive.mesh, selected, tear.trailRefinementLevels, smoothed.positions);
-  primitive = refinePrimitive(primitive, selected, RefinementScheme::Linear, tear.trailRefinementLevels);
+  std::vector<Vec3> carried = smoothed.positions;  // refined with the same stencils as the primitive
+  primitive = refinePrimitive(primitive, selected, RefinementScheme::Linear, tear.trailRefinementLevels, &carried);
+  smoothedSkins[key] = std::move(carried);
 }
 
 }  // namespace

@@ -18,16 +18,17 @@ namespace {
 
 constexpr double kPiD = std::numbers::pi;
 
-// A wall (tilt 60 degrees) that turns into a ceiling at 2 cm: the bead hangs there and drips.
-TearLiquidInput dripInput() {
+// A vertical wall (normal +z, gravity -y) 2 cm down; with `ceiling` it then turns under into a
+// ceiling (normal -y) for 1 cm. The bead hangs at the path's end (wall) or at the turn (ceiling)
+// and drips.
+TearLiquidInput dripInput(bool ceiling = false) {
   TearLiquidInput input;
-  const Vec3d normal(0.0, std::cos(kPiD / 3.0), std::sin(kPiD / 3.0));
-  const Vec3d down(0.0, -std::sin(kPiD / 3.0), std::cos(kPiD / 3.0));
-  for (int i = 0; i <= 30; ++i) {
+  const int samples = ceiling ? 30 : 20;
+  for (int i = 0; i <= samples; ++i) {
     LiquidPathSample sample;
     sample.arcLength = i * 1e-3;
-    sample.position = i <= 20 ? Vec3d(sample.arcLength * down) : Vec3d(0.02 * down + (sample.arcLength - 0.02) * Vec3d::UnitZ());
-    sample.normal = i < 20 ? normal : Vec3d(-Vec3d::UnitY());
+    sample.position = i <= 20 ? Vec3d(0.0, -sample.arcLength, 0.0) : Vec3d(0.0, -0.02, sample.arcLength - 0.02);
+    sample.normal = i < 20 ? Vec3d(Vec3d::UnitZ()) : Vec3d(-Vec3d::UnitY());
     input.path.push_back(sample);
   }
   input.params.source = WellingSource{.rate = 10.0 * kMicrolitre, .overflowVolume = 8.0 * kMicrolitre,
@@ -104,21 +105,41 @@ TEST(DropOscillation, DrawnDropRingsAtRayleighsFrequencyAndDecaysWithLambsTime) 
   EXPECT_GT(drop.oscillation.initialAmplitude, 0.02) << "a hanging drop leaves stretched along gravity";
 }
 
-TEST(DropOscillation, InitialStretchIsTheHangingBeadsFootprintAspect) {
+// The drawn hanging bead's half extents: halfLength along the path, halfWidth across, height / 2 out of the skin.
+BeadShape hangingShape(const TearLiquidInput& input, double volume) {
+  const ContactAngleHysteresis& angles = input.params.contactAngles;
+  return beadShape(input.params.fluid, volume, 0.5 * (angles.advancing + angles.receding), 0.5 * kPiD);
+}
+
+TEST(DropOscillation, DropLeavesAWallProlateWithTheHangingBeadsStretch) {
   const TearLiquidInput input = dripInput();
   const TearLiquidSimulation simulation = simulatedToFirstDrop(input);
   const FallingDrop drop = simulation.drops()[0];
-  const ContactAngleHysteresis& angles = input.params.contactAngles;
-  // The bead hangs on the ceiling (tilt 180 degrees), drawn as at a wall (tilt clamped to 90).
-  const BeadShape shape = beadShape(input.params.fluid, drop.volume, 0.5 * (angles.advancing + angles.receding), 0.5 * kPiD);
-  const double k = shape.halfLength / shape.halfWidth;
-  EXPECT_NEAR(drop.oscillation.initialAmplitude, 2.0 * (k - 1.0) / (k + 2.0), 1e-12);
+  const BeadShape shape = hangingShape(input, drop.volume);
+  // On the wall the bead's long axis is along gravity: c = halfLength, a^2 c = halfLength halfWidth height / 2.
+  const double k = shape.halfLength / std::sqrt(shape.halfWidth * 0.5 * shape.height);
+  std::printf("[ drop ] from a wall: %.2f uL, drawn bead %.3f x %.3f x %.3f mm, k = %.3f\n", drop.volume * 1e9,
+              shape.halfLength * 1e3, shape.halfWidth * 1e3, shape.height * 1e3, k);
+  EXPECT_GT(k, 1.2);
+  EXPECT_NEAR(drop.oscillation.initialAmplitude, std::min(0.5, 2.0 * (k - 1.0) / (k + 2.0)), 1e-12);
   // At detachment the drawn drop is prolate along gravity by that ratio.
   TearLiquidSimulation again(input);
   again.advanceTo(drop.detachTime);
   const DropView view = again.state(drop.detachTime).drops.at(0);
-  EXPECT_NEAR(view.axes.polar / view.axes.equatorial, k, 1e-9 * k);
+  const double eps = drop.oscillation.initialAmplitude;
+  EXPECT_NEAR(view.axes.polar / view.axes.equatorial, (1.0 + eps) / (1.0 - 0.5 * eps), 1e-9);
   EXPECT_NEAR((view.axis - Vec3d(0, -1, 0)).norm(), 0.0, 1e-12);
+}
+
+TEST(DropOscillation, DropLeavesACeilingOblateAsTheFlatCapIsDrawn) {
+  const TearLiquidInput input = dripInput(true);
+  const TearLiquidSimulation simulation = simulatedToFirstDrop(input);
+  const FallingDrop drop = simulation.drops()[0];
+  const BeadShape shape = hangingShape(input, drop.volume);
+  // Gravity along the normal: c = height / 2.
+  const double k = 0.5 * shape.height / std::sqrt(shape.halfLength * shape.halfWidth);
+  EXPECT_LT(k, 1.0);
+  EXPECT_NEAR(drop.oscillation.initialAmplitude, std::max(-0.5, 2.0 * (k - 1.0) / (k + 2.0)), 1e-12);
 }
 
 TEST(DropOscillation, DrawnMeshIsClosedAndKeepsTheDropsVolumeAtEveryAmplitude) {

@@ -35,10 +35,15 @@
 //   angle, or hangingContactRadius when that is positive. The whole bead detaches (modelling
 //   choice: no residual drop) and falls ballistically without drag: x(t) = x0 + g (t - t0)^2 / 2.
 // * Falling drops ring in the Rayleigh/Lamb mode n = 2 about their velocity axis, damped by the
-//   viscosity (drop_oscillation.hpp). The initial amplitude is that of the hanging bead as drawn:
-//   its footprint is stretched along the fall line by `elongation` and narrowed across by
-//   1 / elongation (beadShape), axis ratio k0 = halfLength / halfWidth = elongation^2, so
-//   eps0 = 2 (k0 - 1) / (k0 + 2) (modelling choice: the drop leaves with the stretch it hung with).
+//   viscosity (drop_oscillation.hpp). The initial amplitude comes from the hanging bead as drawn
+//   (beadShape at min(tilt, 90 degrees), long axis along the path): the ellipsoid of its half
+//   extents (halfLength along the path, halfWidth across, height / 2 along the normal) released
+//   as the spheroid whose polar semi-axis is that ellipsoid's extent along gravity and whose
+//   volume is the ellipsoid's: eps0 = 2 (k - 1) / (k + 2), k = polar / equatorial, clamped to
+//   [-0.5, 0.5] (modelling choice). On a wall the cap is long along gravity and thin out of the
+//   skin: the drop leaves prolate (k ~ 1.5-2). Under a ceiling the drawn cap is flat against the
+//   skin and the drop leaves oblate; a real pendant drop would be prolate (the cap model does not
+//   draw a pendant drop's neck).
 // * A bead whose volume falls below minBeadVolume has run out: its rest joins the film (Dried).
 //
 // Limits: one path, fixed in time (the caller recomputes the path; the state does not follow a
