@@ -1,6 +1,8 @@
 // Local subdivision with closure; see region_refinement.hpp.
 #include "lacrima/geometry/region_refinement.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <stdexcept>
 #include <unordered_map>
@@ -343,9 +345,12 @@ TriangleMesh refineMesh(const TriangleMesh& mesh, std::vector<bool> selected, Re
 }
 
 GltfPrimitive refinePrimitive(const GltfPrimitive& primitive, std::vector<bool> selected, RefinementScheme scheme,
-                              int levels) {
+                              int levels, std::vector<Vec3>* carried) {
   checkLevels(levels, "refinePrimitive");
   checkSelection(primitive.mesh, selected);
+  if (carried && carried->size() != primitive.mesh.vertexCount())
+    throw std::invalid_argument(fmt::format("refinePrimitive: {} carried values for {} vertices", carried->size(),
+                                            primitive.mesh.vertexCount()));
   GltfPrimitive out = primitive;
   if (levels == 0 || std::none_of(selected.begin(), selected.end(), [](bool s) { return s; })) return out;
   TriangleMesh& mesh = out.mesh;
@@ -356,6 +361,7 @@ GltfPrimitive refinePrimitive(const GltfPrimitive& primitive, std::vector<bool> 
     if (!mesh.uvs.empty()) mesh.uvs = applyStencils(r.stencils, mesh.uvs);
     for (SparseDelta& target : out.targets) target = applyStencils(r.stencils, target, oldCount);
     if (!out.skinJoints.empty()) applyStencils(r.stencils, out.skinJoints, out.skinWeights);
+    if (carried) *carried = applyStencils(r.stencils, *carried);
     mesh.indices = std::move(r.indices);
     selected = std::move(r.refined);
   }

@@ -15,6 +15,9 @@ namespace lacrima {
 namespace {
 
 constexpr double kPiD = std::numbers::pi;
+// |eps0| at most this (axis ratio 2 prolate, 0.4 oblate): beyond it the single n = 2 mode is a poor
+// description of the released drop (modelling choice).
+constexpr double kMaxDetachAmplitude = 0.5;
 
 void requireFinite(double value, const char* what) {
   if (!std::isfinite(value)) throw InputError(fmt::format("tear liquid: {} must be finite, got {}", what, value));
@@ -388,10 +391,33 @@ void TearLiquidSimulation::detachIfHeavy(Bead& bead, int id) {
   // The drop hangs below its contact point: its centre one sphere radius further along gravity.
   drop.detachCentre = positionAt(bead.arcLength) + gHat_ * equivalentRadius(bead.volume);
   drop.volume = bead.volume;
+  drop.oscillation = dropOscillation(sliding_.fluid, input_.params.viscosity, bead.volume, detachAmplitude(bead));
   drops_.push_back(drop);
   detached_ += bead.volume;
   bead.volume = 0.0;
   bead.phase = BeadPhase::Detached;
+}
+
+double TearLiquidSimulation::detachAmplitude(const Bead& bead) const {
+  const ContactAngleHysteresis& angles = input_.params.contactAngles;
+  const double thetaMean = 0.5 * (angles.advancing + angles.receding);
+  // The hanging bead as state() reports and the frame draws it (tilt clamped to a wall): long axis
+  // along the path's piece, footprint across it, height along the normal.
+  const BeadShape shape = beadShape(sliding_.fluid, bead.volume, thetaMean, std::min(tiltAt(bead.arcLength), 0.5 * kPiD));
+  const size_t piece = pieceAt(bead.arcLength);
+  const Vec3d normal = input_.path[piece].normal.normalized();
+  const Vec3d forward = input_.path[piece + 1].position - input_.path[piece].position;
+  const Vec3d along = (forward - forward.dot(normal) * normal).normalized();
+  const Vec3d across = normal.cross(along);
+  // Half extents of its bounding ellipsoid: halfLength, halfWidth, half the cap's height; the
+  // extent of that ellipsoid along gravity (its support sqrt(sum (s_i g_i)^2)) is the released
+  // drop's polar semi-axis, its equatorial one keeps the ellipsoid's volume.
+  const Vec3d halfExtents(shape.halfLength, shape.halfWidth, 0.5 * shape.height);
+  const Vec3d g(gHat_.dot(along), gHat_.dot(across), gHat_.dot(normal));
+  const double polar = halfExtents.cwiseProduct(g).norm();
+  const double equatorial = std::sqrt(halfExtents.prod() / polar);
+  const double amplitude = modeTwoAmplitudeFromAspect(polar / equatorial);
+  return std::clamp(amplitude, -kMaxDetachAmplitude, kMaxDetachAmplitude);
 }
 
 void TearLiquidSimulation::dryFilm() {
@@ -449,6 +475,10 @@ TearLiquidState TearLiquidSimulation::state(double t) const {
     view.velocity = drop.detachVelocity + g * dt;
     view.volume = drop.volume;
     view.radius = equivalentRadius(drop.volume);
+    view.axis = view.velocity.squaredNorm() > 0.0 ? view.velocity.normalized() : gHat_;
+    view.amplitude = drop.oscillation.amplitudeAt(dt);
+    view.amplitudeEnvelope = drop.oscillation.envelopeAt(dt);
+    view.axes = modeTwoSpheroid(view.radius, view.amplitude);
     state.drops.push_back(view);
   }
   for (const LiquidPathSample& sample : input_.path) state.sampleFilmThickness.push_back(filmThicknessAt(sample.arcLength));

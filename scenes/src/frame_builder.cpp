@@ -230,6 +230,19 @@ void applyDetails(const Shot& shot, int frameNumber, const ShutterTimes& shutter
   }
 }
 
+// Swells the lacrimal strip near each liquid tear's source with its meniscus (at shutter open and close).
+void swellMenisci(const Shot& shot, const ShutterTimes& shutter, PosedAssets& open, std::optional<PosedAssets>& close) {
+  for (const ShotLiquidTear& tear : shot.liquidTears) {
+    if (tear.meniscusPrimitive < 0 || open[tear.asset].empty()) continue;
+    if (close) {
+      // A still asset is not posed again at close; its meniscus still fills, so it gets its own copy.
+      if ((*close)[tear.asset].empty()) (*close)[tear.asset] = open[tear.asset];
+      shotfile::swellLiquidTearMeniscus(shot, tear, shutter.close, (*close)[tear.asset]);
+    }
+    shotfile::swellLiquidTearMeniscus(shot, tear, shutter.open, open[tear.asset]);
+  }
+}
+
 // The renderer camera at a time: keyed look-at cameras are placed again, the rest as loaded.
 Camera cameraAt(const ShotCamera& shotCamera, double frame) {
   Camera camera = shotCamera.camera;
@@ -257,6 +270,7 @@ Frame buildFrame(const Shot& shot, int frameNumber) {
   std::optional<PosedAssets> close =
       shutter.blurred() ? std::optional<PosedAssets>(poseAssets(shot, shutter.close, &open)) : std::nullopt;
   applyDetails(shot, frameNumber, shutter, open, close);
+  swellMenisci(shot, shutter, open, close);
   const PosedAssets* closePtr = close ? &*close : nullptr;
   for (size_t a = 0; a < shot.assets.size(); ++a) addAssetMeshes(shot, a, open, closePtr, frame);
   for (const ShotShape& shape : shot.shapes) addShape(shape, shutter, open, closePtr, frame);

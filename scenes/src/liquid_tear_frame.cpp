@@ -4,7 +4,9 @@
 
 #include <algorithm>
 
+#include "lacrima/geometry/drop_oscillation.hpp"
 #include "lacrima/geometry/liquid_bead_mesh.hpp"
+#include "lacrima/geometry/meniscus_swelling.hpp"
 #include "lacrima/scenes/liquid_tear.hpp"
 #include "liquid_tear_film.hpp"
 
@@ -69,6 +71,13 @@ TriangleMesh beadMesh(const ShotLiquidTear& tear, const BeadView& bead, const Tr
   return makeLiquidBeadMesh(skin, placement);
 }
 
+// A falling drop as drawn: an oscillating spheroid mesh (drop_oscillation.hpp).
+TriangleMesh dropMesh(const DropView& drop) { return makeFallingDropMesh(drop.centre, drop.axis, drop.axes); }
+
+// A drop whose ringing has died down below kVisibleDropAmplitude (its envelope, so a drop does not
+// flicker between sphere and mesh as its amplitude crosses zero) is drawn as an exact sphere.
+bool ringsVisibly(const DropView& drop) { return std::abs(drop.amplitudeEnvelope) >= kVisibleDropAmplitude; }
+
 template <typename T>
 const T* findById(const std::vector<T>& items, int id, int T::*key) {
   for (const T& item : items)
@@ -77,6 +86,16 @@ const T* findById(const std::vector<T>& items, int id, int T::*key) {
 }
 
 }  // namespace
+
+void swellLiquidTearMeniscus(const Shot& shot, const ShotLiquidTear& tear, double frame,
+                             std::vector<TriangleMesh>& posed) {
+  if (tear.meniscusPrimitive < 0 || tear.input.path.empty() || posed.empty()) return;
+  TriangleMesh& strip = posed[size_t(tear.meniscusPrimitive)];
+  if (strip.vertexCount() != tear.meniscusWeights.size()) return;  // not the strip resolved at load
+  TearLiquidSimulation simulation(tear.input);
+  simulation.advanceTo(liquidTearSeconds(shot, tear, frame));
+  swellMeniscus(strip, tear.meniscusWeights, simulation.meniscusVolume());
+}
 
 void addLiquidTear(const Shot& shot, const ShotLiquidTear& tear, double shutterOpen, double shutterClose,
                    const std::vector<TriangleMesh>& openSkin, const std::vector<TriangleMesh>* closeSkin, int skinMesh,
@@ -110,9 +129,19 @@ void addLiquidTear(const Shot& shot, const ShotLiquidTear& tear, double shutterO
     frame.meshes.push_back(std::move(instance));
   }
   for (const DropView& drop : open.drops) {
+    const DropView* later = blurred ? findById(close.drops, drop.beadId, &DropView::beadId) : nullptr;
+    if (ringsVisibly(drop)) {
+      MeshInstance instance(dropMesh(drop), tear.materialId);
+      if (later) {
+        TriangleMesh atClose = dropMesh(*later);  // same tessellation: vertex by vertex
+        instance.positionsAtClose = std::move(atClose.positions);
+        instance.normalsAtClose = std::move(atClose.normals);
+      }
+      frame.meshes.push_back(std::move(instance));
+      continue;
+    }
     Sphere sphere(drop.centre.cast<float>(), float(drop.radius), tear.materialId);
-    if (const DropView* later = blurred ? findById(close.drops, drop.beadId, &DropView::beadId) : nullptr)
-      if (later->centre != drop.centre) sphere.centerAtClose = later->centre.cast<float>();
+    if (later && later->centre != drop.centre) sphere.centerAtClose = later->centre.cast<float>();
     frame.spheres.push_back(sphere);
   }
 }

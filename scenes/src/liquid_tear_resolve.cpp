@@ -8,6 +8,8 @@
 #include "asset_pose.hpp"
 #include "json_source.hpp"  // childPointer
 #include "lacrima/geometry/error.hpp"
+#include "lacrima/geometry/meniscus_swelling.hpp"
+#include "lacrima/geometry/surface_point.hpp"
 #include "surface_anchor.hpp"
 
 namespace lacrima::shotfile {
@@ -39,17 +41,34 @@ FlowPath onSkin(const FlowPath& traced, const TriangleMesh& skin) {
   return path;
 }
 
+// The lacrimal strip of the tear's asset nearest the source, if within kMeniscusReach, with the
+// falloff weights of its vertices on the first frame's pose.
+void resolveMeniscus(const ShotAsset& asset, const AssetPose& pose, const Vec3& source, ShotLiquidTear& tear) {
+  float nearest = kMeniscusReach;
+  for (size_t i = 0; i < asset.gltf->primitives.size(); ++i) {
+    if (asset.gltf->primitives[i].part != kLacrimalFluidPart) continue;
+    const TriangleMesh strip = posedPrimitive(asset, pose, i);
+    if (strip.triangleCount() == 0) continue;
+    const float distance = (surfacePosition(strip, closestSurfacePoint(strip, source)) - source).norm();
+    if (!(distance <= nearest)) continue;
+    nearest = distance;
+    tear.meniscusPrimitive = int(i);
+    tear.meniscusWeights = meniscusFalloffWeights(strip, source, kMeniscusFalloffLength);
+  }
+}
+
 void resolveTear(const Shot& shot, ShotLiquidTear& tear, std::vector<LiquidTearProblem>& problems) {
   tear.sourcePoint = resolveSurfaceAnchor(shot, tear.asset, tear.part, tear.source);
   const ShotAsset& asset = shot.assets[tear.asset];
-  const TriangleMesh skin = posedPrimitive(asset, assetPoseAt(asset, double(shot.frameStart)), tear.sourcePoint.primitive);
-  const std::vector<uint32_t> weld = findCoincidentVertices(skin);
-  const TriangleAdjacency adjacency = buildTriangleAdjacency(skin, weld);
-  const TriangleMesh smoothed = taubinSmoothed(skin, weld, kLiquidPathSmoothing);
-  const SurfacePoint start{tear.sourcePoint.triangle, tear.sourcePoint.barycentric};
-  FlowPathOptions options;
-  options.maxLength = tear.maxLength;
-  const FlowPath traced = traceFlowPath(smoothed, adjacency, start, tear.gravity, options);
+  const AssetPose pose = assetPoseAt(asset, double(shot.frameStart));
+  const TriangleMesh skin = posedPrimitive(asset, pose, tear.sourcePoint.primitive);
+  const SurfacePoint sourceOnSkin{tear.sourcePoint.triangle, tear.sourcePoint.barycentric};
+  resolveMeniscus(asset, pose, surfacePosition(skin, sourceOnSkin), tear);
+  const size_t primitive = tear.sourcePoint.primitive;
+  const std::vector<Vec3>* carried =
+      primitive < tear.smoothedSkins.size() && tear.smoothedSkins[primitive] ? tear.smoothedSkins[primitive].get() : nullptr;
+  const TriangleMesh smoothed = liquidPathSmoothedSkin(skin, carried);
+  const FlowPath traced = traceLiquidPath(skin, smoothed, sourceOnSkin, tear.gravity, tear.maxLength);
   tear.smoothedPathLength = traced.length();
   tear.path = flowPathOnSkin(traced, skin);
   if (tear.path.points.size() < 2 || tear.path.length() < kMinLiquidPathLength) {
@@ -72,6 +91,23 @@ void resolveTear(const Shot& shot, ShotLiquidTear& tear, std::vector<LiquidTearP
 }  // namespace
 
 FlowPath flowPathOnSkin(const FlowPath& traced, const TriangleMesh& skin) { return onSkin(traced, skin); }
+
+TriangleMesh liquidPathSmoothedSkin(const TriangleMesh& skin, const std::vector<Vec3>* carried) {
+  if (!carried || carried->size() != skin.vertexCount())
+    return taubinSmoothed(skin, findCoincidentVertices(skin), kLiquidPathSmoothing);
+  TriangleMesh smoothed = skin;
+  smoothed.positions = *carried;
+  smoothed.normals.clear();  // the walk uses the triangles' own normals
+  return smoothed;
+}
+
+FlowPath traceLiquidPath(const TriangleMesh& skin, const TriangleMesh& smoothed, const SurfacePoint& start,
+                         const Vec3& gravity, float maxLength) {
+  const TriangleAdjacency adjacency = buildTriangleAdjacency(skin, findCoincidentVertices(skin));
+  FlowPathOptions options;
+  options.maxLength = maxLength;
+  return traceFlowPath(smoothed, adjacency, start, gravity, options);
+}
 
 std::vector<LiquidTearProblem> resolveLiquidTears(Shot& shot) {
   std::vector<LiquidTearProblem> problems;

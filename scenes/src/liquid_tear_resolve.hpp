@@ -18,10 +18,27 @@ inline constexpr TaubinOptions kLiquidPathSmoothing{20, 0.5f, -0.53f};  // the d
 // A path shorter than this cannot carry a bead (about one bead length): reported at load.
 inline constexpr float kMinLiquidPathLength = 0.002f;  // metres
 
+// The ICT face's strip of tear fluid along the lid margins (the lacrimal tear meniscus).
+inline constexpr const char* kLacrimalFluidPart = "M_LacrimalFluid";
+// A liquid tear swells that strip when its source lies within this distance of it (the ICT
+// inner-corner landmarks lie ~1-2 mm from it), ...
+inline constexpr float kMeniscusReach = 0.005f;  // metres
+// ... over this distance from the source: about a third of a lid margin (~28 mm), so both lids
+// swell towards the inner corner where the tear wells (modelling choice).
+inline constexpr float kMeniscusFalloffLength = 0.008f;  // metres
+
 // A path traced on a smoothed copy of `skin` (same topology) re-expressed on `skin`: positions and
 // arc lengths measured there, pieces of zero length there dropped (the piece before a dropped
 // point ends where the dropped piece did).
 FlowPath flowPathOnSkin(const FlowPath& traced, const TriangleMesh& skin);
+
+// The copy of `skin` the path is traced on: smoothed by kLiquidPathSmoothing, or with the positions
+// `carried` (the smoothed skin carried through a refinement, one per vertex) when given.
+TriangleMesh liquidPathSmoothedSkin(const TriangleMesh& skin, const std::vector<Vec3>* carried);
+// The flow path from `start` traced on `smoothed` (same topology as `skin`, whose seams are welded
+// for the walk), at most maxLength long.
+FlowPath traceLiquidPath(const TriangleMesh& skin, const TriangleMesh& smoothed, const SurfacePoint& start,
+                         const Vec3& gravity, float maxLength);
 
 // For every liquid tear: the source resolved on the first frame's skin, the path traced and the
 // simulation input built and checked. Returns the problems found (a path too short to carry a bead,

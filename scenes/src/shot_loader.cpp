@@ -21,6 +21,7 @@
 #include "detail_refinement.hpp"
 #include "suggest.hpp"
 #include "liquid_tear_resolve.hpp"
+#include "liquid_trail_refinement.hpp"
 #include "shedding_tear_resolve.hpp"
 #include "surface_attachment.hpp"
 
@@ -1052,7 +1053,7 @@ class ShotReader {
     ObjectReader o(c_, v, pointer,
                    {"type", "asset", "part", "source", "material", "gravity", "maxLength", "rate", "wellStart",
                     "wellEnd", "overflowVolume", "spillVolume", "contactAngles", "filmThickness", "dryingTime",
-                    "hangingContactRadius", "viscosity"});
+                    "hangingContactRadius", "viscosity", "trailRefinement"});
     if (!o.ok()) return;
     const size_t before = c_.errorCount();
     ShotLiquidTear tear;
@@ -1084,6 +1085,7 @@ class ShotReader {
     if (auto x = o.number("dryingTime", Range::above(0))) p.filmDryingTime = *x;
     if (auto x = o.number("hangingContactRadius", Range::atLeast(0))) p.hangingContactRadius = *x;
     if (auto x = o.number("viscosity", Range::above(0))) p.viscosity = *x;
+    if (auto x = o.integer("trailRefinement", Range::closed(0, 3))) tear.trailRefinementLevels = int(*x);
     readMaterialMember(o, tear.material, tear.materialId);
     if (c_.errorCount() == before && asset) shot_.liquidTears.push_back(tear);
   }
@@ -1281,6 +1283,7 @@ Shot loadShot(const std::filesystem::path& path) {
   if (checker.errorCount() > 0) throw ShotError(checker.diagnostics());
   // Before any surface point is found: they index the refined triangles.
   refineDetailRegions(shot);
+  refineLiquidTrails(shot);
   resolveAttachments(shot);
   resolveTearsAndDetails(shot);
   // After the details' surface points, on the assets as they are now (possibly refined).

@@ -1,7 +1,7 @@
 // Liquid tears in shots ("tears" of type "liquid", issue 5): the flow path from the inner eye
 // corner traced on the smoothed skin, beads as closed outward meshes on the posed skin that appear
 // at the overflow and run down, frames independent of their order, the face's motion followed,
-// falling drops as moving spheres, the volume budget, and exact messages for bad input.
+// falling drops as ringing meshes, the volume budget, and exact messages for bad input.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -236,7 +236,14 @@ TEST(LiquidTearShot, BeadsFollowTheDeformingFace) {
   EXPECT_GT((centre - onStill).norm(), (onSkin - onStill).norm() * 0.5f);
 }
 
-TEST(LiquidTearShot, DetachedDropsAreMovingSpheresUnderAShutter) {
+// The centroid of a mesh's vertices.
+Vec3d vertexCentroid(const std::vector<Vec3>& positions) {
+  Vec3d sum = Vec3d::Zero();
+  for (const Vec3& p : positions) sum += p.cast<double>();
+  return sum / double(positions.size());
+}
+
+TEST(LiquidTearShot, DetachedDropsAreRingingMeshesUnderAShutter) {
   // A short path: the bead hangs at its end (a drip site) and, held on a small contact circle
   // (Tate's limit for r = 0.2 mm is 5.6 uL), falls within the shot.
   const std::string drip =
@@ -247,14 +254,23 @@ TEST(LiquidTearShot, DetachedDropsAreMovingSpheresUnderAShutter) {
   for (int f = 25; f <= kFrames; ++f) {
     const TearLiquidState state = liquidTearStateAt(shot, shot.liquidTears[0], f - 0.25);
     if (state.drops.empty()) continue;
+    const TearLiquidState atClose = liquidTearStateAt(shot, shot.liquidTears[0], f + 0.25);
     const Frame frame = buildFrame(shot, f);
-    ASSERT_EQ(frame.spheres.size(), state.drops.size()) << f;
+    EXPECT_TRUE(frame.spheres.empty()) << "a fresh drop rings visibly: a mesh";
+    std::vector<const MeshInstance*> drops;
+    for (const MeshInstance& m : frame.meshes)
+      if (m.mesh.name == "falling drop") drops.push_back(&m);
+    ASSERT_EQ(drops.size(), state.drops.size()) << f;
     for (size_t i = 0; i < state.drops.size(); ++i) {
-      const Sphere& s = frame.spheres[i];
-      EXPECT_EQ(s.center, state.drops[i].centre.cast<float>());
-      EXPECT_FLOAT_EQ(s.radius, float(state.drops[i].radius));
-      ASSERT_TRUE(s.centerAtClose.has_value());
-      EXPECT_LT(s.centerAtClose->y(), s.center.y()) << "falls";
+      const MeshInstance& drop = *drops[i];
+      EXPECT_LT((vertexCentroid(drop.mesh.positions) - state.drops[i].centre).norm(), 1e-6);
+      EXPECT_NEAR(signedVolume(drop.mesh), state.drops[i].volume, 1e-3 * state.drops[i].volume);
+      EXPECT_EQ(findClosedMeshDefect(drop.mesh), "");
+      ASSERT_EQ(drop.positionsAtClose.size(), drop.mesh.positions.size()) << "deformation blur";
+      const Vec3d closeCentre = vertexCentroid(drop.positionsAtClose);
+      EXPECT_LT((closeCentre - atClose.drops[i].centre).norm(), 1e-6);
+      EXPECT_LT(closeCentre.y(), state.drops[i].centre.y()) << "falls";
+      EXPECT_NE(state.drops[i].amplitude, atClose.drops[i].amplitude) << "rings during the shutter";
     }
     ++withDrops;
     break;

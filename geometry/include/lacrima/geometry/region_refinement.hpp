@@ -73,8 +73,10 @@ void applyStencils(const VertexStencils& stencils, std::vector<std::array<uint16
 TriangleMesh refineMesh(const TriangleMesh& mesh, std::vector<bool> selected, RefinementScheme scheme, int levels);
 
 // A glTF primitive refined as refineMesh does, with its morph targets and skin influences, and
-// its normals and weldMap recomputed as the loader computes them.
+// its normals and weldMap recomputed as the loader computes them. `carried`, when given, holds
+// one more per-vertex attribute (e.g. a smoothed copy of the positions) refined with the same
+// stencils (it must have one value per vertex: std::invalid_argument otherwise).
 GltfPrimitive refinePrimitive(const GltfPrimitive& primitive, std::vector<bool> selected, RefinementScheme scheme,
-                              int levels);
+                              int levels, std::vector<Vec3>* carried = nullptr);
 
 }  // namespace lacrima

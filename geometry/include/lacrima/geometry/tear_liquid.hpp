@@ -34,17 +34,28 @@
 //   (hangingDropMaxVolume; Tate 1864), r = its spherical cap's base radius at the mean contact
 //   angle, or hangingContactRadius when that is positive. The whole bead detaches (modelling
 //   choice: no residual drop) and falls ballistically without drag: x(t) = x0 + g (t - t0)^2 / 2.
+// * Falling drops ring in the Rayleigh/Lamb mode n = 2 about their velocity axis, damped by the
+//   viscosity (drop_oscillation.hpp). The initial amplitude comes from the hanging bead as drawn
+//   (beadShape at min(tilt, 90 degrees), long axis along the path): the ellipsoid of its half
+//   extents (halfLength along the path, halfWidth across, height / 2 along the normal) released
+//   as the spheroid whose polar semi-axis is that ellipsoid's extent along gravity and whose
+//   volume is the ellipsoid's: eps0 = 2 (k - 1) / (k + 2), k = polar / equatorial, clamped to
+//   [-0.5, 0.5] (modelling choice). On a wall the cap is long along gravity and thin out of the
+//   skin: the drop leaves prolate (k ~ 1.5-2). Under a ceiling the drawn cap is flat against the
+//   skin and the drop leaves oblate; a real pendant drop would be prolate (the cap model does not
+//   draw a pendant drop's neck).
 // * A bead whose volume falls below minBeadVolume has run out: its rest joins the film (Dried).
 //
 // Limits: one path, fixed in time (the caller recomputes the path; the state does not follow a
 // moving path); the path is assumed to follow the steepest descent, so the whole along-surface
 // gravity g sin(alpha) drives the bead along it; beads do not evaporate (minutes for uL drops);
-// bead shape is reported for tilt min(alpha, 90 degrees); no drag, no oscillation of falling
-// drops; the film is uniform across the width of the widest bead that wetted each cell.
+// bead shape is reported for tilt min(alpha, 90 degrees); no drag on falling drops and only their
+// n = 2 shape mode; the film is uniform across the width of the widest bead that wetted each cell.
 #include <cstdint>
 #include <numbers>
 #include <vector>
 
+#include "lacrima/geometry/drop_oscillation.hpp"
 #include "lacrima/geometry/math.hpp"
 #include "lacrima/geometry/mesh.hpp"
 #include "lacrima/geometry/sessile_drop.hpp"
@@ -134,6 +145,7 @@ struct FallingDrop {
   Vec3d detachCentre = Vec3d::Zero();
   Vec3d detachVelocity = Vec3d::Zero();  // a hanging bead is at rest: zero
   double volume = 0.0;
+  DropOscillation oscillation;  // its n = 2 ringing from detachTime on
 };
 
 // Bead as the renderer needs it.
@@ -155,6 +167,10 @@ struct DropView {
   Vec3d velocity = Vec3d::Zero();
   double volume = 0.0;
   double radius = 0.0;  // equivalent sphere
+  Vec3d axis = -Vec3d::UnitY();  // unit: along the velocity (gravity while it is still at rest)
+  double amplitude = 0.0;        // mode-2 amplitude eps at this time (> 0 prolate along axis)
+  double amplitudeEnvelope = 0.0;  // eps0 exp(-t / tau): the ringing's size, without its phase
+  SpheroidAxes axes;             // modeTwoSpheroid(radius, amplitude): a^2 c = radius^3
 };
 
 struct TearLiquidState {
@@ -218,6 +234,7 @@ class TearLiquidSimulation {
   void runOut(Bead& bead, int id);
   void coalesce();
   void detachIfHeavy(Bead& bead, int id);
+  double detachAmplitude(const Bead& bead) const;
   void dryFilm();
   double hangingLimit(double volume) const;
   double baseRadius(double volume) const;

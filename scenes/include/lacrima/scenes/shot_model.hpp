@@ -237,6 +237,12 @@ struct ShotLiquidTear {
   Vec3 gravity = Vec3(0, -1, 0);  // non-zero; only its direction matters
   float maxLength = 0.12f;       // metres of flow path at most
   TearLiquidParams params;       // SI units (the file's uL and degrees converted; welling times from t = 0)
+  // "trailRefinement": levels of linear refinement of the skin along the path at load (0: none).
+  int trailRefinementLevels = 2;
+  // Set by the trail refinement (liquid_trail_refinement.hpp), per primitive of the asset (null or
+  // short: none): the first frame's smoothed skin carried over to the refined vertices, traced on
+  // instead of smoothing the refined skin again.
+  std::vector<std::shared_ptr<const std::vector<Vec3>>> smoothedSkins;
   double simulationStartFrame = 1.0;  // the frame at t = 0
   std::string material;
   uint32_t materialId = 0;
@@ -248,6 +254,11 @@ struct ShotLiquidTear {
   FlowPath path;
   float smoothedPathLength = 0.0f;  // the path's length on the smoothed skin it was traced on
   TearLiquidInput input;            // the simulation's input (path samples on the first frame's skin)
+  // The lacrimal fluid strip that swells with the meniscus (meniscus_swelling.hpp): the asset's
+  // primitive of part kLacrimalFluidPart nearest the source when within reach (-1: none), and the
+  // falloff weight of each of its vertices (from the source, on the first frame's pose).
+  int meniscusPrimitive = -1;
+  std::vector<float> meniscusWeights;
 };
 
 // Animated skin detail (seed 004 section 3; docs/shot-format.md "details"): a sum of basic
