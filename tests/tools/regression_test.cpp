@@ -71,7 +71,8 @@ INSTANTIATE_TEST_SUITE_P(Shots, ImageRegression,
                                            RegressionCase{"face_cheek_drop", 0.05f, 0.5, 2e-3},
                                            RegressionCase{"face_shedding_tear", 0.05f, 0.5, 2e-3},
                                            RegressionCase{"face_dripping_tear", 0.05f, 0.5, 2e-3},
-                                           RegressionCase{"face_liquid_tear", 0.05f, 0.5, 2e-3}),
+                                           RegressionCase{"face_liquid_tear", 0.05f, 0.5, 2e-3},
+                                           RegressionCase{"face_eye", 0.05f, 0.5, 2e-3}),
                          [](const auto& info) { return info.param.name; });
 
 }  // namespace
