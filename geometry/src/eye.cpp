@@ -5,6 +5,8 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <map>
 
 #include "lacrima/geometry/error.hpp"

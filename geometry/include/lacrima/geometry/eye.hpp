@@ -7,6 +7,7 @@
 // Analysed once on the rest shell (analyseEye), then built on every posed shell (buildEye): the
 // cap and sclera are the posed shell's own triangles, the rest follows the shell's rigid motion.
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "lacrima/geometry/mesh.hpp"
