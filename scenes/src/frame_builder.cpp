@@ -1,13 +1,14 @@
 // buildFrame: a checked Shot at one frame number -> the renderer's Frame, through the geometry
 // stage: assets posed by their rig, keyframes and performance tracks, details displacing the
 // posed skin, shapes (keyed or attached to the skin), dripping, shedding and liquid tears (on the
-// posed, detailed skin), lights and camera, each at shutter open and, when the shot has a shutter
+// posed, detailed skin), eyes and lashes (on the posed eyeball shells and lash cards), lights and camera, each at shutter open and, when the shot has a shutter
 // and it moves, at shutter close (motion blur). Nothing is read from disk here.
 #include <fmt/format.h>
 
 #include <algorithm>
 
 #include "asset_pose.hpp"
+#include "eye_frame.hpp"
 #include "lacrima/geometry/detail_patterns.hpp"
 #include "lacrima/geometry/dripping_tear.hpp"
 #include "lacrima/geometry/shapes.hpp"
@@ -274,6 +275,7 @@ Frame buildFrame(const Shot& shot, int frameNumber) {
   const PosedAssets* closePtr = close ? &*close : nullptr;
   for (size_t a = 0; a < shot.assets.size(); ++a) addAssetMeshes(shot, a, open, closePtr, frame);
   for (const ShotShape& shape : shot.shapes) addShape(shape, shutter, open, closePtr, frame);
+  shotfile::addEyes(shot, open, closePtr, frame);
   for (const ShotTear& tear : shot.tears) addTear(shot, tear, frameNumber, shutter, frame);
   for (const ShotSheddingTear& tear : shot.sheddingTears)
     addSheddingTear(shot, tear, frameNumber, shutter, open, closePtr, frame);

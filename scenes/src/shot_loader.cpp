@@ -19,6 +19,7 @@
 #include "asset_animation_reader.hpp"
 #include "asset_pose.hpp"
 #include "detail_refinement.hpp"
+#include "eye_resolve.hpp"
 #include "suggest.hpp"
 #include "liquid_tear_resolve.hpp"
 #include "liquid_trail_refinement.hpp"
@@ -35,7 +36,7 @@ using namespace shotfile;
 const std::vector<std::string> kRootKeys = {"version",   "frames", "output",      "colorConfig",
                                             "render",    "camera", "environment", "background",
                                             "materials", "lights", "assets",      "shapes",
-                                            "tears",     "details"};
+                                            "tears",     "details", "eyes"};
 const std::vector<std::string> kMaterialTypes = {"diffuse", "skin", "water", "rough_dielectric"};
 const std::vector<std::string> kCausticsModes = {"mnee", "straight", "off"};  // order of readCaustics' modes
 const std::vector<std::string> kLightTypes = {"rectangle", "sphere"};
@@ -147,6 +148,8 @@ class ShotReader {
       readArray(*v, "/tears", "tears", [&](const Json& e, const std::string& p) { readTear(e, p); });
     if (const Json* v = o.find("details"))
       readArray(*v, "/details", "details", [&](const Json& e, const std::string& p) { readDetail(e, p); });
+    if (const Json* v = o.find("eyes"))
+      readArray(*v, "/eyes", "eyes", [&](const Json& e, const std::string& p) { readEye(e, p); });
   }
 
  private:
@@ -1233,6 +1236,77 @@ class ShotReader {
     if (const Json* s = o.find("subdivision")) readSubdivision(*s, o.at("subdivision"), detail);
     if (c_.errorCount() == before && asset) shot_.details.push_back(detail);
   }
+  // ---- eyes --------------------------------------------------------------------------------
+
+  // A required material member named `key`; false when missing or undefined (reported).
+  bool readNamedMaterial(ObjectReader& o, const std::string& key, uint32_t& id) {
+    const Json* m = o.find(key);
+    if (!m) {
+      o.missing(key, "the name of a material in 'materials'");
+      return false;
+    }
+    const int found = materialReference(*m, o.at(key));
+    if (found < 0) return false;
+    id = uint32_t(found);
+    return true;
+  }
+
+  // An eye for close-ups (ShotEye): the eyeball shell part, its materials and lashes.
+  void readEye(const Json& v, const std::string& pointer) {
+    ObjectReader o(c_, v, pointer,
+                   {"asset", "part", "cornea", "sclera", "iris", "pupil", "limbusRadius", "pupilRadius", "irisDepth",
+                    "lashes"});
+    if (!o.ok()) return;
+    const size_t before = c_.errorCount();
+    ShotEye eye;
+    eye.pointer = pointer;
+    const auto asset = readAssetPart(o, eye.part);
+    if (asset) eye.asset = *asset;
+    if (readNamedMaterial(o, "cornea", eye.corneaMaterial) &&
+        !dielectricMedium(shot_.materials[eye.corneaMaterial].params))
+      o.error("cornea", fmt::format("the cornea material '{}' must be clear: of type 'water' or 'rough_dielectric'",
+                                    shot_.materials[eye.corneaMaterial].name));
+    readNamedMaterial(o, "sclera", eye.scleraMaterial);
+    readNamedMaterial(o, "iris", eye.irisMaterial);
+    readNamedMaterial(o, "pupil", eye.pupilMaterial);
+    // Millimetres in the file: the anatomy is quoted that way.
+    if (auto x = o.number("limbusRadius", Range::closed(2, 12))) eye.params.limbusRadius = float(*x) * 1e-3f;
+    if (auto x = o.number("pupilRadius", Range::closed(0.5, 5))) eye.params.pupilRadius = float(*x) * 1e-3f;
+    if (auto x = o.number("irisDepth", Range::closed(0.5, 8))) eye.params.irisDepth = float(*x) * 1e-3f;
+    if (const Json* l = o.find("lashes"); l && asset) readLashes(*l, o.at("lashes"), *asset, eye);
+    if (c_.errorCount() == before && asset) shot_.eyes.push_back(std::move(eye));
+  }
+
+  void readLashes(const Json& v, const std::string& pointer, size_t asset, ShotEye& eye) {
+    ObjectReader o(c_, v, pointer,
+                   {"part", "material", "upper", "lower", "rootRadius", "tipRadius", "minLength", "spread", "seed"});
+    if (!o.ok()) return;
+    ShotLashes lashes;
+    const auto part = o.string("part", true);
+    if (part) {
+      std::vector<std::string> parts;
+      for (const GltfPrimitive& p : shot_.assets[asset].gltf->primitives) appendUnique(parts, p.part);
+      if (std::find(parts.begin(), parts.end(), *part) == parts.end())
+        o.error("part", fmt::format("asset '{}' has no part '{}'{}", shot_.assets[asset].name, *part,
+                                    suggestionOrList(*part, parts, "its parts", "it has no primitives")));
+      else
+        lashes.part = *part;
+    }
+    readNamedMaterial(o, "material", lashes.materialId);
+    LashParams& p = lashes.params;
+    if (auto x = o.integer("upper", Range::closed(0, 400))) p.upper = int(*x);
+    if (auto x = o.integer("lower", Range::closed(0, 400))) p.lower = int(*x);
+    // Micrometres for the radii, millimetres for the drift: the sizes of hair.
+    if (auto x = o.number("rootRadius", Range::closed(5, 200))) p.rootRadius = float(*x) * 1e-6f;
+    if (auto x = o.number("tipRadius", Range::closed(1, 200))) p.tipRadius = float(*x) * 1e-6f;
+    if (auto x = o.number("minLength", Range::openClosed(0, 1))) p.minLength = float(*x);
+    if (auto x = o.number("spread", Range::closed(0, 3))) p.spread = float(*x) * 1e-3f;
+    if (auto x = o.unsignedInteger("seed")) p.seed = *x;
+    if (p.tipRadius > p.rootRadius)
+      o.error("tipRadius", fmt::format("the tip radius ({} um) must not exceed the root radius ({} um)",
+                                       p.tipRadius * 1e6f, p.rootRadius * 1e6f));
+    if (!lashes.part.empty()) eye.lashes = std::move(lashes);
+  }
 };
 
 std::optional<std::string> readTextFile(const fs::path& path, std::string& error) {
@@ -1291,6 +1365,7 @@ Shot loadShot(const std::filesystem::path& path) {
     checker.error(problem.pointer, Anchor::Value, problem.message);
   for (const LiquidTearProblem& problem : resolveLiquidTears(shot))
     checker.error(problem.pointer, Anchor::Value, problem.message);
+  for (const EyeProblem& problem : resolveEyes(shot)) checker.error(problem.pointer, Anchor::Value, problem.message);
   if (checker.errorCount() > 0) throw ShotError(checker.diagnostics());
   return shot;
 }

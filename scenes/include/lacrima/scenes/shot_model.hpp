@@ -12,6 +12,8 @@
 
 #include "lacrima/geometry/detail_patterns.hpp"
 #include "lacrima/geometry/dripping_tear.hpp"
+#include "lacrima/geometry/eye.hpp"
+#include "lacrima/geometry/eyelashes.hpp"
 #include "lacrima/geometry/face_controls.hpp"
 #include "lacrima/geometry/face_rig.hpp"
 #include "lacrima/geometry/gltf_asset.hpp"
@@ -287,6 +289,33 @@ struct ShotDetail {
   bool activeAt(int frame) const { return frame >= startFrame && frame <= endFrame; }
 };
 
+// Eyelashes of an eye (docs/shot-format.md "eyes"): tubes grown on the lash-card strips of `part`
+// that lie around the eye; the cards themselves are not rendered.
+struct ShotLashes {
+  std::string part;
+  LashParams params;
+  uint32_t materialId = 0;
+  // Resolved by loadShot on the cards posed at the shot's first frame.
+  size_t primitive = 0;
+  std::vector<LashStrip> strips;
+  std::vector<Lash> lashes;
+};
+
+// An eye for close-ups (docs/shot-format.md "eyes"; eye.hpp): the eyeball shell `part` is cut at
+// the limbus into cornea and sclera, an iris with depth and a pupil are added, all following the
+// posed shell; the shell itself is not rendered.
+struct ShotEye {
+  size_t asset = 0;
+  std::string part;
+  EyeParams params;
+  uint32_t corneaMaterial = 0, scleraMaterial = 0, irisMaterial = 0, pupilMaterial = 0;
+  std::optional<ShotLashes> lashes;
+  std::string pointer;  // the eye in the shot file ("/eyes/0"), for problems found resolving it
+  // Resolved by loadShot on the shell posed at the shot's first frame.
+  size_t primitive = 0;
+  std::shared_ptr<const EyeModel> model;
+};
+
 struct Shot {
   std::filesystem::path path;  // the shot file, as given to loadShot
   int version = 1;
@@ -320,6 +349,7 @@ struct Shot {
   std::vector<ShotSheddingTear> sheddingTears;  // "shedding" tears
   std::vector<ShotLiquidTear> liquidTears;      // "liquid" tears
   std::vector<ShotDetail> details;
+  std::vector<ShotEye> eyes;
 
   // Things that load but deserve a look (glTF loader caveats, environment texels that were
   // NaN/Inf/negative and set to 0). Each message starts with "warning: ". The tool prints them.

@@ -1,0 +1,61 @@
+#pragma once
+// An eye for close-ups built from an eyeball shell mesh (the ICT face's M_Sclera*: a sphere with a
+// corneal bulge): the shell is cut at the limbus into an opaque sclera and a clear cornea cap; the
+// cap is closed by a wall and a flat back inside the ball so it bounds the anterior chamber (one dielectric
+// volume, cornea and aqueous humour merged), and an iris with depth (a cone from the limbus to the
+// pupil margin, set back behind the corneal apex) and a pupil sit inside that chamber.
+// Analysed once on the rest shell (analyseEye), then built on every posed shell (buildEye): the
+// cap and sclera are the posed shell's own triangles, the rest follows the shell's rigid motion.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "lacrima/geometry/mesh.hpp"
+
+namespace lacrima {
+
+struct EyeParams {
+  float limbusRadius = 5.9e-3f;  // metres from the optical axis (human corneal diameter ~11.8 mm)
+  float pupilRadius = 2.0e-3f;   // metres
+  float irisDepth = 2.6e-3f;     // pupil margin behind the corneal apex, metres (about the limbus plane)
+  int irisRings = 6, irisSegments = 64;
+};
+
+// What analyseEye finds on the rest shell.
+struct EyeModel {
+  EyeParams params;
+  Vec3 center = Vec3::Zero();     // fitted eyeball centre (rest)
+  float radius = 0.0f;            // fitted eyeball radius (the shell without the bulge)
+  Vec3 axis = Vec3::UnitZ();      // optical axis, unit, centre -> corneal apex
+  Vec3 up = Vec3::UnitY();        // unit, perpendicular to axis (world +Y projected)
+  float apexHeight = 0.0f;        // corneal apex along the axis from the centre
+  std::vector<uint32_t> weldMap;  // findCoincidentVertices of the rest shell
+  std::vector<uint32_t> corneaTriangles, scleraTriangles;  // partition of the shell's triangles
+  std::vector<uint32_t> limbusLoop;  // welded vertex indices of the cap's boundary, in cap winding order
+  std::vector<Vec2> irisRoot;  // per iris segment (equal angles from `right` towards `up`): (radius, height)
+  float irisRootRadius = 0.0f, irisRootHeight = 0.0f;  // the root's largest radius and lowest height
+  float pupilHeight = 0.0f;                             // pupil margin along the axis (local)
+  float backHeight = 0.0f;                              // the chamber's flat back along the axis (local)
+  std::vector<Vec3> restPositions;  // the rest shell's vertices (for the rigid fit of posed shells)
+};
+
+// Analyses a closed eyeball shell (seams allowed: vertices are welded by position). Throws
+// InputError naming `what` when the limbus does not cut the shell into one cap and the rest, or
+// the iris does not fit between the cornea and the chamber's back.
+EyeModel analyseEye(const TriangleMesh& restShell, const EyeParams& params, const std::string& what);
+
+struct EyeMeshes {
+  TriangleMesh cornea;  // closed, outward: cap + wall and back inside the ball
+  TriangleMesh sclera;  // the shell outside the limbus (open where the cornea is)
+  TriangleMesh iris;    // annulus, front side towards the cornea
+  TriangleMesh pupil;   // dark disc just behind the pupil opening, facing forward
+};
+
+// The rigid motion (rotation + translation, Umeyama 1991 without scale) that best carries the
+// rest shell's vertices onto the posed shell's.
+Affine3 eyeMotion(const EyeModel& model, const TriangleMesh& posedShell);
+
+// The eye on a posed shell (same topology as the rest shell).
+EyeMeshes buildEye(const EyeModel& model, const TriangleMesh& posedShell);
+
+}  // namespace lacrima
