@@ -200,6 +200,44 @@ TEST(TextureRender, UniformNormalMapTiltsTheShadingLikeARotatedNormal) {
   EXPECT_NEAR(tiltY.x() / flatY.x(), expectedY, 0.02f);
 }
 
+// A 3 mm slab of subsurface skin (two 100 m rectangles with uvs, the top at y = 0 facing up, the
+// bottom facing down) under a uniform sky of radiance 1, seen from above. Walks leave through
+// either face and see the sky, so the slab shows its reflectance plus transmittance, which falls
+// as the mean free path shrinks against the fixed thickness (more absorption on the way).
+Frame skinSlab(const MaterialTextures& textures) {
+  Frame frame;
+  SkinParams skin;
+  skin.albedo = Color(0.6f, 0.45f, 0.35f);
+  skin.subsurface = SubsurfaceParams{};
+  Material material("skin", skin);
+  material.textures = textures;
+  frame.materials.push_back(material);
+  frame.meshes.emplace_back(makeRectangle(Vec3::Zero(), Vec3(100, 0, 0), Vec3(0, 0, -100)), 0);
+  frame.meshes.emplace_back(makeRectangle(Vec3(0, -0.003f, 0), Vec3(100, 0, 0), Vec3(0, 0, 100)), 0);
+  frame.camera = lookAt(Vec3(0, 1, 1), Vec3::Zero(), 10.0f);
+  frame.settings = smallSettings(16, 32, 8);
+  frame.uniformBackground = Color::Ones();
+  return frame;
+}
+
+// Maps of ones change nothing, bit for bit: the per-hit BSDF and subsurface medium are built from
+// the same numbers as the material's own. A map halving the mean free path darkens the slab.
+TEST(TextureRender, SkinMapsOfOneRenderBitwiseAsTheUntexturedSkin) {
+  const auto ones = writeTexture("ones.exr", [](int, int) { return Color::Ones().eval(); });
+  const auto halves = writeTexture("halves.exr", [](int, int) { return Color::Constant(0.5f).eval(); });
+  MaterialTextures unit;
+  unit.albedo = unit.roughness = unit.meanFreePath = TextureMap{ones, TextureEncoding::Auto};
+  const Film plain = renderFrame(skinSlab({})), textured = renderFrame(skinSlab(unit));
+  EXPECT_TRUE(test::bitwiseEqual(plain.rgba, textured.rgba));
+  MaterialTextures shorter;
+  shorter.meanFreePath = TextureMap{halves, TextureEncoding::Auto};
+  const test::MeanEstimate full = test::channelMean(plain, 0);
+  const test::MeanEstimate half = test::channelMean(renderFrame(skinSlab(shorter)), 0);
+  std::printf("[ mean free path map ] slab red: %.4f +- %.4f, halved %.4f +- %.4f\n", full.mean, full.standardError,
+              half.mean, half.standardError);
+  EXPECT_LT(half.mean + 3.0 * (half.standardError + full.standardError), full.mean);
+}
+
 TEST(TextureRender, TexturedFrameIsIndependentOfTheThreadCount) {
   Frame frame = texturedQuad(albedoMap(writeTexture("checker_threads.exr", checker)));
   frame.uniformBackground = Color(0.3f, 0.6f, 1.0f);
