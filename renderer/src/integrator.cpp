@@ -1,6 +1,7 @@
 #include "integrator.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <variant>
 #include <vector>
@@ -39,10 +40,12 @@ struct TexturedHit {
   std::variant<std::monostate, DiffuseBsdf, SkinBsdf> bsdf;
 };
 
+// footprint: the width in metres of the pixel's cone where the path meets the surface (the mip
+// level of the lookups, surface_textures.hpp).
 const Bsdf* withTextures(const Bsdf* bsdf, const SurfaceTextures& textures, const Material& material,
-                         const SurfaceHit& hit, TexturedHit& storage) {
+                         const SurfaceHit& hit, float footprint, TexturedHit& storage) {
   if (!hit.hasUv || !textures.textured(hit.materialId)) return bsdf;
-  storage.values = textures.lookup(hit.materialId, hit.uv);
+  storage.values = textures.lookup(hit.materialId, hit.uv, uvFootprint(footprint, hit.dpdu, hit.dpdv));
   const MaterialParams params = applyTextureValues(material.params, storage.values);
   if (const auto* skin = std::get_if<SkinParams>(&params)) {
     storage.skin = *skin;
@@ -67,7 +70,12 @@ bool PathIntegrator::countedByTransparentShadows(bool chainAfterNonSpecular, int
 }
 
 PathIntegrator::PathIntegrator(const Frame& frame, const EmbreeScene& scene, const LightSampler& lights)
-    : frame_(frame), scene_(scene), lights_(lights), textures_(frame.materials), maxDepth_(frame.settings.maxDepth) {
+    : frame_(frame),
+      scene_(scene),
+      lights_(lights),
+      textures_(frame.materials),
+      pixelSpread_(2.0f * std::tan(0.5f * frame.camera.verticalFovRadians) / float(std::max(1, frame.settings.height))),
+      maxDepth_(frame.settings.maxDepth) {
   bsdfs_.reserve(frame.materials.size());
   for (const Material& material : frame.materials) bsdfs_.push_back(makeBsdf(material.params));
   subsurface_.resize(frame.materials.size());
@@ -236,6 +244,7 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
   bool chainAfterNonSpecular = false;
   int crossings = 0;
   float previousBsdfPdf = 0.0f;
+  float pathLength = 0.0f;  // metres travelled from the camera, for texture footprints
   Vec3 previousPosition = cameraRay.origin;
   Ray ray = cameraRay;
   MediumStack media = cameraMedia_;  // the dielectric media the path is in (nested dielectrics only)
@@ -263,6 +272,7 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
     }
 
     const Material& material = frame_.materials[hit.materialId];
+    pathLength += hit.distance;
     Vertex v;
     v.position = hit.position;
     v.wo = -ray.direction;
@@ -277,7 +287,7 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
     if (nested_ && isDielectric(hit.materialId))
       v.bsdf = interfaceBsdf(hit.materialId, classifyInterface(media, hit.materialId, frontFacing).otherMaterial);
     TexturedHit textured;  // v.bsdf may point here for this bounce
-    v.bsdf = withTextures(v.bsdf, textures_, material, hit, textured);
+    v.bsdf = withTextures(v.bsdf, textures_, material, hit, pathLength * pixelSpread_, textured);
     std::optional<WetSkinBsdf> wetSkin;  // v.bsdf may point here for this bounce
     v.bsdf = underSkinFilm(v.bsdf, material, hit.wetness, wetSkin);
     if (!v.bsdf->isTransmissive()) {

@@ -94,6 +94,10 @@ class PathIntegrator {
   const EmbreeScene& scene_;
   const LightSampler& lights_;
   SurfaceTextures textures_;  // the maps of textured materials; empty (no texture system) without any
+  // Radians per pixel at the image centre: a path that has travelled d metres from the camera
+  // meets surfaces with a footprint of about d * pixelSpread_ (texture mip levels). Ignores
+  // the widening by curved or rough surfaces it bounced off, so later bounces under-blur.
+  float pixelSpread_;
   std::vector<std::unique_ptr<Bsdf>> bsdfs_;  // one per material
   int maxDepth_;
   // Nested dielectrics, active only when some dielectric has a priority >= 1 (otherwise every

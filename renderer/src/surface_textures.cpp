@@ -14,6 +14,8 @@ struct SurfaceTextures::System {
   System() : textures(OIIO::TextureSystem::create(false)) {
     // One-channel (grey) maps read as RGB where three channels are asked for.
     textures->attribute("gray_to_rgb", 1);
+    // Plain images (PNG, flat EXR) get MIP levels built when first needed; maketx files have theirs.
+    textures->attribute("automip", 1);
   }
   ~System() { OIIO::TextureSystem::destroy(textures); }
   System(const System&) = delete;
@@ -27,6 +29,12 @@ namespace {
 constexpr int kColourChannels = 3;
 
 }  // namespace
+
+UvFootprint uvFootprint(float width, const Vec3& dpdu, const Vec3& dpdv) {
+  const float lengthU = dpdu.norm(), lengthV = dpdv.norm();
+  if (!(width > 0.0f) || !(lengthU > 0.0f) || !(lengthV > 0.0f)) return {};
+  return {width / lengthU, width / lengthV};
+}
 
 SurfaceTextures::SurfaceTextures(const std::vector<Material>& materials) {
   const bool anyMaps = std::any_of(materials.begin(), materials.end(), [](const Material& m) { return m.textures.any(); });
@@ -65,40 +73,41 @@ SurfaceTextures::OpenMap SurfaceTextures::open(const Material& material, const T
   return open;
 }
 
-void SurfaceTextures::sample(const OpenMap& map, const Vec2& uv, float* result) const {
+void SurfaceTextures::sample(const OpenMap& map, const Vec2& uv, const UvFootprint& footprint, float* result) const {
   OIIO::TextureSystem& ts = *system_->textures;
   OIIO::TextureOpt options;
   options.swrap = options.twrap = OIIO::TextureOpt::WrapPeriodic;
-  options.mipmode = OIIO::TextureOpt::MipModeNoMIP;
+  options.mipmode = OIIO::TextureOpt::MipModeTrilinear;
   options.interpmode = OIIO::TextureOpt::InterpBilinear;
-  // OIIO's t runs down the image like glTF's v: uv is passed as it is.
+  // OIIO's t runs down the image like glTF's v: uv is passed as it is. The footprint is given as
+  // the derivatives of an axis-aligned pixel (ds/dx = du, dt/dy = dv).
   if (!ts.texture(static_cast<OIIO::TextureSystem::TextureHandle*>(map.handle), ts.get_perthread_info(), options,
-                  uv.x(), uv.y(), 0.0f, 0.0f, 0.0f, 0.0f, map.channels, result))
+                  uv.x(), uv.y(), footprint.du, 0.0f, 0.0f, footprint.dv, map.channels, result))
     std::fill(result, result + map.channels, 1.0f);  // unreadable tile: the constants alone (checked at open)
   if (map.srgb)
     for (int c = 0; c < map.channels; ++c) result[c] = srgbToLinear(result[c]);
 }
 
-TextureValues SurfaceTextures::lookup(uint32_t materialId, const Vec2& uv) const {
+TextureValues SurfaceTextures::lookup(uint32_t materialId, const Vec2& uv, const UvFootprint& footprint) const {
   const MaterialMaps& maps = maps_[materialId];
   TextureValues values;
   float rgb[kColourChannels];
   if (maps.albedo) {
-    sample(*maps.albedo, uv, rgb);
+    sample(*maps.albedo, uv, footprint, rgb);
     values.albedo = Color(rgb[0], rgb[1], rgb[2]);
   }
   if (maps.roughness) {
-    sample(*maps.roughness, uv, rgb);
+    sample(*maps.roughness, uv, footprint, rgb);
     values.roughness = rgb[0];
   }
   if (maps.normal) {
-    sample(*maps.normal, uv, rgb);
+    sample(*maps.normal, uv, footprint, rgb);
     const Vec3 n(2.0f * rgb[0] - 1.0f, 2.0f * rgb[1] - 1.0f, 2.0f * rgb[2] - 1.0f);
     // A texel that points below the surface (or nowhere) leaves the normal as it is.
     values.normal = n.z() > 1e-4f ? Vec3(n.normalized()) : Vec3(0.0f, 0.0f, 1.0f);
   }
   if (maps.meanFreePath) {
-    sample(*maps.meanFreePath, uv, rgb);
+    sample(*maps.meanFreePath, uv, footprint, rgb);
     values.meanFreePath = Color(rgb[0], rgb[1], rgb[2]);
   }
   return values;

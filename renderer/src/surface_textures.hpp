@@ -3,8 +3,11 @@
 // one OpenImageIO TextureSystem per frame. The system is created only when some material has a
 // map: frames without textures pay nothing.
 //
-// Lookups are bilinear in the finest mip level with zero derivatives (no filtering across pixel
-// footprints: a map much finer than a pixel aliases, which pixel supersampling averages out).
+// Lookups are trilinear MIP-map lookups (bilinear in the two levels around the footprint) with an
+// isotropic footprint: the width of the pixel's cone where the path meets the surface, in uv
+// units along u and v (UvFootprint). Maps without MIP levels get them built on the fly by the
+// system (automip). The footprint ignores the 1/cos stretch at grazing angles and the widening
+// after bounces, so lookups err on the sharp side there (pixel supersampling averages the rest).
 // Wrap mode periodic, as glTF's default sampler (REPEAT). A lookup is deterministic, so the
 // image stays independent of the thread count.
 //
@@ -24,6 +27,16 @@
 
 namespace lacrima {
 
+// A lookup's filter width in texture coordinates: how far u and v change over the footprint.
+struct UvFootprint {
+  float du = 0.0f;
+  float dv = 0.0f;
+};
+
+// The footprint `width` metres wide on a surface whose uv tangents are dpdu, dpdv (SurfaceHit);
+// zero (the finest level) where a tangent is degenerate.
+UvFootprint uvFootprint(float width, const Vec3& dpdu, const Vec3& dpdv);
+
 class SurfaceTextures {
  public:
   // Opens every map of `materials` (materialId order); throws InputError naming the material and
@@ -34,8 +47,8 @@ class SurfaceTextures {
   SurfaceTextures& operator=(const SurfaceTextures&) = delete;
 
   bool textured(uint32_t materialId) const { return materialId < maps_.size() && maps_[materialId].any; }
-  // The values of materialId's maps at uv (thread-safe).
-  TextureValues lookup(uint32_t materialId, const Vec2& uv) const;
+  // The values of materialId's maps at uv, filtered over footprint (thread-safe).
+  TextureValues lookup(uint32_t materialId, const Vec2& uv, const UvFootprint& footprint = {}) const;
 
  private:
   struct OpenMap {
@@ -48,7 +61,7 @@ class SurfaceTextures {
     std::optional<OpenMap> albedo, roughness, normal, meanFreePath;
   };
   OpenMap open(const Material& material, const TextureMap& map, const char* role, bool colour);
-  void sample(const OpenMap& map, const Vec2& uv, float* result) const;
+  void sample(const OpenMap& map, const Vec2& uv, const UvFootprint& footprint, float* result) const;
 
   struct System;  // the OIIO TextureSystem
   std::unique_ptr<System> system_;
