@@ -11,10 +11,9 @@
 // Wrap mode periodic, as glTF's default sampler (REPEAT). A lookup is deterministic, so the
 // image stays independent of the thread count.
 //
-// sRGB albedo maps (TextureEncoding, material.hpp) are decoded after the bilinear interpolation,
-// per channel with the IEC 61966-2-1 curve; interpolating encoded values first is exact on
-// texel centres and differs from interpolating decoded ones only between texels of different
-// values.
+// sRGB albedo maps (TextureEncoding, material.hpp) are decoded after the filtered lookup, per
+// channel with the IEC 61966-2-1 curve: interpolation and MIP averaging act on encoded values,
+// which is exact where the texels under the filter agree and slightly dark where they differ.
 #include <cstdint>
 #include <memory>
 #include <optional>
