@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <array>
+#include <cmath>
 #include <cstring>
 #include <limits>
 #include <stdexcept>
@@ -40,6 +42,24 @@ RTCRay makeRay(const Vec3& origin, const Vec3& direction, float tfar, float time
   ray.id = 0;
   ray.flags = 0;
   return ray;
+}
+
+// The uv at barycentrics (w, u, v) and the triangle's uv tangents: dP/du and dP/dv solve
+// dp1 = du1 dpdu + dv1 dpdv, dp2 = du2 dpdu + dv2 dpdv (pbrt-v4 Triangle::InteractionFromIntersection).
+void uvOfTriangle(const TriangleMesh& mesh, const uint32_t* tri, const std::array<Vec3, 3>& p, float w, float u,
+                  float v, SurfaceHit& hit) {
+  const Vec2 &uv0 = mesh.uvs[tri[0]], &uv1 = mesh.uvs[tri[1]], &uv2 = mesh.uvs[tri[2]];
+  hit.uv = w * uv0 + u * uv1 + v * uv2;
+  const Vec2 duv1 = uv1 - uv0, duv2 = uv2 - uv0;
+  const Vec3 dp1 = p[1] - p[0], dp2 = p[2] - p[0];
+  const float determinant = duv1.x() * duv2.y() - duv1.y() * duv2.x();
+  if (!(std::abs(determinant) > 1e-20f)) {
+    hit.dpdu = hit.dpdv = Vec3::Zero();
+    return;
+  }
+  const float inverse = 1.0f / determinant;
+  hit.dpdu = (duv2.y() * dp1 - duv1.y() * dp2) * inverse;
+  hit.dpdv = (duv1.x() * dp2 - duv2.x() * dp1) * inverse;
 }
 
 }  // namespace
@@ -259,6 +279,8 @@ void EmbreeScene::surfaceOfMesh(const MeshInstance& instance, float time, const 
   }
   const std::vector<float>& film = instance.wetness;
   hit.wetness = film.empty() ? 0.0f : w * film[tri[0]] + u * film[tri[1]] + v * film[tri[2]];
+  hit.hasUv = !mesh.uvs.empty();
+  if (hit.hasUv) uvOfTriangle(mesh, tri, {p0, p1, p2}, w, u, v, hit);
 }
 
 bool EmbreeScene::intersect(const Ray& ray, SurfaceHit& hit) const {
@@ -291,6 +313,7 @@ bool EmbreeScene::intersect(const Ray& ray, SurfaceHit& hit) const {
     case Kind::Sphere:
     case Kind::SphereLight: {
       hit.wetness = 0.0f;
+      hit.hasUv = false;
       const bool isLight = record.kind == Kind::SphereLight;
       const Vec3 center = isLight ? frame_->lights[record.index].center : frame_->spheres[record.index].centerAt(ray.time);
       const float radius = isLight ? frame_->lights[record.index].radius : frame_->spheres[record.index].radius;

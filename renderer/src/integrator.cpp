@@ -1,9 +1,12 @@
 #include "integrator.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
+#include <variant>
 #include <vector>
 
+#include "lacrima/materials/diffuse.hpp"
 #include "lacrima/materials/fresnel.hpp"
 #include "lacrima/materials/wet_skin.hpp"
 #include "ray_offset.hpp"
@@ -28,6 +31,30 @@ const Bsdf* underSkinFilm(const Bsdf* bsdf, const Material& material, float film
   return &*storage;
 }
 
+// Textured materials (surface_textures.hpp): a hit with uvs on a material with maps shades with
+// the material's parameters times the maps' values there, a BSDF built in place (no allocation
+// per hit) like underSkinFilm's. Hits without uvs keep the material's constant BSDF.
+struct TexturedHit {
+  TextureValues values;
+  std::optional<SkinParams> skin;  // the textured skin parameters (its subsurface medium follows them)
+  std::variant<std::monostate, DiffuseBsdf, SkinBsdf> bsdf;
+};
+
+// footprint: the width in metres of the pixel's cone where the path meets the surface (the mip
+// level of the lookups, surface_textures.hpp).
+const Bsdf* withTextures(const Bsdf* bsdf, const SurfaceTextures& textures, const Material& material,
+                         const SurfaceHit& hit, float footprint, TexturedHit& storage) {
+  if (!hit.hasUv || !textures.textured(hit.materialId)) return bsdf;
+  storage.values = textures.lookup(hit.materialId, hit.uv, uvFootprint(footprint, hit.dpdu, hit.dpdv));
+  const MaterialParams params = applyTextureValues(material.params, storage.values);
+  if (const auto* skin = std::get_if<SkinParams>(&params)) {
+    storage.skin = *skin;
+    return &storage.bsdf.emplace<SkinBsdf>(*skin);
+  }
+  if (const auto* diffuse = std::get_if<DiffuseParams>(&params)) return &storage.bsdf.emplace<DiffuseBsdf>(*diffuse);
+  return bsdf;
+}
+
 constexpr int kRussianRouletteDepth = 3;
 // A shadow ray gives up (counts as blocked) after this many dielectric crossings.
 constexpr int kMaxShadowCrossings = 16;
@@ -43,7 +70,12 @@ bool PathIntegrator::countedByTransparentShadows(bool chainAfterNonSpecular, int
 }
 
 PathIntegrator::PathIntegrator(const Frame& frame, const EmbreeScene& scene, const LightSampler& lights)
-    : frame_(frame), scene_(scene), lights_(lights), maxDepth_(frame.settings.maxDepth) {
+    : frame_(frame),
+      scene_(scene),
+      lights_(lights),
+      textures_(frame.materials),
+      pixelSpread_(2.0f * std::tan(0.5f * frame.camera.verticalFovRadians) / float(std::max(1, frame.settings.height))),
+      maxDepth_(frame.settings.maxDepth) {
   bsdfs_.reserve(frame.materials.size());
   for (const Material& material : frame.materials) bsdfs_.push_back(makeBsdf(material.params));
   subsurface_.resize(frame.materials.size());
@@ -212,6 +244,7 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
   bool chainAfterNonSpecular = false;
   int crossings = 0;
   float previousBsdfPdf = 0.0f;
+  float pathLength = 0.0f;  // metres travelled from the camera, for texture footprints
   Vec3 previousPosition = cameraRay.origin;
   Ray ray = cameraRay;
   MediumStack media = cameraMedia_;  // the dielectric media the path is in (nested dielectrics only)
@@ -239,6 +272,7 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
     }
 
     const Material& material = frame_.materials[hit.materialId];
+    pathLength += hit.distance;
     Vertex v;
     v.position = hit.position;
     v.wo = -ray.direction;
@@ -252,11 +286,14 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
     v.bsdf = bsdfs_[hit.materialId].get();
     if (nested_ && isDielectric(hit.materialId))
       v.bsdf = interfaceBsdf(hit.materialId, classifyInterface(media, hit.materialId, frontFacing).otherMaterial);
+    TexturedHit textured;  // v.bsdf may point here for this bounce
+    v.bsdf = withTextures(v.bsdf, textures_, material, hit, pathLength * pixelSpread_, textured);
     std::optional<WetSkinBsdf> wetSkin;  // v.bsdf may point here for this bounce
     v.bsdf = underSkinFilm(v.bsdf, material, hit.wetness, wetSkin);
     if (!v.bsdf->isTransmissive()) {
       // Opaque surfaces are two-sided: shade the side the ray arrives from.
       if (!frontFacing) { ng = -ng; ns = -ns; }
+      if (textured.values.normal) ns = applyNormalMap(*textured.values.normal, ns, hit.dpdu, hit.dpdv);
       // Fine-scale relief of the material (skin pores); ns unchanged for other materials.
       ns = v.bsdf->perturbShadingNormal(hit.position, ns, ng);
       // A shading normal that hides wo would make the surface black or leak: fall back to ng.
@@ -275,8 +312,12 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
     result += throughput * sampleDirectLight(v, media, sampler, counters);
     if (subsurface_[hit.materialId]) {  // skin with subsurface: v.bsdf's lobes or a random walk
       const float dryFraction = 1.0f - (wetSkin ? wetSkin->coverage() : 0.0f);
-      const Below below =
-          scatterBelowSurface(*subsurface_[hit.materialId], v, dryFraction, throughput, sampler, counters);
+      const SubsurfaceSkin& skin = *subsurface_[hit.materialId];
+      // A textured skin walks in the medium of its textured albedo and mean free path.
+      const SubsurfaceMedium medium =
+          textured.skin ? subsurfaceMedium(*textured.skin, *textured.skin->subsurface) : skin.medium;
+      const SkinBsdf& surface = textured.skin ? std::get<SkinBsdf>(textured.bsdf) : *skin.bsdf;
+      const Below below = scatterBelowSurface(skin, medium, surface, v, dryFraction, throughput, sampler, counters);
       if (below == Below::Absorbed) break;
       if (below == Below::Exited) {
         hit.position = v.position;  // the path goes on from the exit point
@@ -332,17 +373,18 @@ std::optional<PathIntegrator::SubsurfaceSkin> PathIntegrator::makeSubsurfaceSkin
                         std::make_shared<SubsurfaceExitBsdf>(skin->ior), skin->ior};
 }
 
-PathIntegrator::Below PathIntegrator::scatterBelowSurface(const SubsurfaceSkin& skin, Vertex& v, float dryFraction,
+PathIntegrator::Below PathIntegrator::scatterBelowSurface(const SubsurfaceSkin& skin, const SubsurfaceMedium& medium,
+                                                          const SkinBsdf& surface, Vertex& v, float dryFraction,
                                                           Color& throughput, PixelSampler& sampler,
                                                           PathCounters& counters) const {
-  const float pSurface = 1.0f - dryFraction * (1.0f - skin.bsdf->specularProbability(v.woLocal));
+  const float pSurface = 1.0f - dryFraction * (1.0f - surface.specularProbability(v.woLocal));
   if (sampler.get1D() < pSurface) {
     throughput /= pSurface;
     return Below::Surface;
   }
   // Entry pays the Fresnel transmission of the base it replaces (skin.hpp, subsurface.hpp).
   const float entry = 1.0f - fresnelDielectric(v.woLocal.z(), skin.ior);
-  const auto exit = walkBelowSurface(scene_, skin.medium, dielectricIndex_, v.position, v.geometricNormal, v.time,
+  const auto exit = walkBelowSurface(scene_, medium, dielectricIndex_, v.position, v.geometricNormal, v.time,
                                      sampler, counters.rays);
   if (!exit) return Below::Absorbed;
   throughput *= exit->weight * (dryFraction * entry / (1.0f - pSurface));

@@ -9,6 +9,7 @@
 
 #include "embree_scene.hpp"
 #include "light_sampler.hpp"
+#include "surface_textures.hpp"
 #include "lacrima/geometry/sampler.hpp"
 #include "lacrima/materials/bsdf.hpp"
 #include "lacrima/materials/skin.hpp"
@@ -84,12 +85,19 @@ class PathIntegrator {
   // Picks v.bsdf's lobes (Surface: v unchanged) or a walk below the dry fraction of the skin:
   // then v becomes the exit vertex with the exit lobe, and throughput takes the walk's weight.
   // Absorbed ends the path.
-  Below scatterBelowSurface(const SubsurfaceSkin& skin, Vertex& v, float dryFraction, Color& throughput,
-                            PixelSampler& sampler, PathCounters& counters) const;
+  // medium and surface: skin's own, or those of a textured hit (integrator.cpp, TexturedHit).
+  Below scatterBelowSurface(const SubsurfaceSkin& skin, const SubsurfaceMedium& medium, const SkinBsdf& surface,
+                            Vertex& v, float dryFraction, Color& throughput, PixelSampler& sampler,
+                            PathCounters& counters) const;
 
   const Frame& frame_;
   const EmbreeScene& scene_;
   const LightSampler& lights_;
+  SurfaceTextures textures_;  // the maps of textured materials; empty (no texture system) without any
+  // Radians per pixel at the image centre: a path that has travelled d metres from the camera
+  // meets surfaces with a footprint of about d * pixelSpread_ (texture mip levels). Ignores
+  // the widening by curved or rough surfaces it bounced off, so later bounces under-blur.
+  float pixelSpread_;
   std::vector<std::unique_ptr<Bsdf>> bsdfs_;  // one per material
   int maxDepth_;
   // Nested dielectrics, active only when some dielectric has a priority >= 1 (otherwise every

@@ -1,6 +1,7 @@
 // loadShot: reads a shot file (docs/shot-format.md), checks all of it, collecting every problem
 // with its JSON pointer and text position, and loads the files it names (glTF assets, the
 // environment map) once, so that blendshape, part and camera names can be checked too.
+#include <OpenImageIO/imageio.h>
 #include <fmt/format.h>
 
 #include <cerrno>
@@ -332,16 +333,20 @@ class ShotReader {
     const Range unit = Range::closed(0, 1), ior = Range::openClosed(1, 3);
     const Range priority = Range::closed(0, kMaxDielectricPriority);  // nested dielectrics (docs/shot-format.md)
     if (*type == "diffuse") {
-      ObjectReader o(c_, v, pointer, {"type", "albedo", "emission"});
+      ObjectReader o(c_, v, pointer, {"type", "albedo", "emission", "textures"});
       DiffuseParams p;
+      readTextures(o, {"albedo", "normal"}, m.textures);
+      if (m.textures.albedo) p.albedo = Color::Ones();  // with a map the constant is a factor, 1 unless given
       if (auto x = o.color("albedo", unit)) p.albedo = *x;
       m.params = p;
       if (auto x = o.color("emission", Range::atLeast(0))) m.emission = *x;
     } else if (*type == "skin") {
       ObjectReader o(c_, v, pointer,
                      {"type", "albedo", "roughness", "ior", "roughness2", "lobeMix", "poreScale", "poreDepth", "subsurface",
-                      "emission"});
+                      "emission", "textures"});
       SkinParams p;
+      readTextures(o, {"albedo", "roughness", "normal", "meanFreePath"}, m.textures);
+      if (m.textures.albedo) p.albedo = Color::Ones();  // with a map the constant is a factor, 1 unless given
       if (auto x = o.color("albedo", unit)) p.albedo = *x;
       if (auto x = o.number("roughness", unit)) p.roughness = float(*x);
       if (auto x = o.number("ior", ior)) p.ior = float(*x);
@@ -357,6 +362,8 @@ class ShotReader {
         if (auto x = so.color("meanFreePath", Range::above(0))) subsurface.meanFreePath = *x;
         if (so.ok()) p.subsurface = subsurface;
       }
+      if (m.textures.meanFreePath && !o.has("subsurface"))
+        o.error("textures", "a 'meanFreePath' texture needs 'subsurface' (it scales the subsurface mean free path)");
       m.params = p;
       if (auto x = o.color("emission", Range::atLeast(0))) m.emission = *x;
     } else if (*type == "water") {
@@ -377,6 +384,63 @@ class ShotReader {
       m.params = p;
       if (auto x = o.color("emission", Range::atLeast(0))) m.emission = *x;
     }
+  }
+
+  // "textures": {"<role>": file or {"file": file[, "colorSpace": ...]}} with the roles `roles`
+  // (docs/shot-format.md). Each file must exist and open as an image.
+  void readTextures(ObjectReader& material, const std::vector<std::string>& roles, MaterialTextures& textures) {
+    const Json* v = material.find("textures");
+    if (!v) return;
+    ObjectReader o(c_, *v, material.at("textures"), roles);
+    if (!o.ok()) return;
+    const std::pair<const char*, std::optional<TextureMap>*> slots[] = {{"albedo", &textures.albedo},
+                                                                       {"roughness", &textures.roughness},
+                                                                       {"normal", &textures.normal},
+                                                                       {"meanFreePath", &textures.meanFreePath}};
+    for (const auto& [role, slot] : slots)
+      if (const Json* map = o.find(role)) *slot = readTextureMap(*map, o.at(role), std::string(role) == "albedo");
+  }
+
+  // A texture file as a path, or {"file": path, "colorSpace": "auto" | "srgb" | "linear"} (the
+  // colour space only for albedo maps, whose values are colours; other maps are data).
+  std::optional<TextureMap> readTextureMap(const Json& v, const std::string& pointer, bool colour) {
+    TextureMap map;
+    std::optional<std::string> file;
+    std::string filePointer = pointer;
+    if (v.is_object()) {
+      ObjectReader o(c_, v, pointer, colour ? std::vector<std::string>{"file", "colorSpace"} : std::vector<std::string>{"file"});
+      file = o.string("file", true);
+      filePointer = o.at("file");
+      if (const auto space = o.string("colorSpace")) {
+        const std::vector<std::string> spaces = {"auto", "srgb", "linear"};
+        if (*space == "srgb") map.encoding = TextureEncoding::Srgb;
+        else if (*space == "linear") map.encoding = TextureEncoding::Linear;
+        else if (*space != "auto")
+          o.error("colorSpace", fmt::format("unknown colour space '{}' (expected one of {})", *space, quotedList(spaces)));
+      }
+    } else if (v.is_string()) {
+      file = v.get<std::string>();
+    } else {
+      c_.error(pointer, Anchor::Value,
+               std::string("expected an image file path") + (colour ? " or {\"file\": path, \"colorSpace\": ...}" : "") +
+                   ", found " + describeValue(v));
+    }
+    if (!file) return std::nullopt;
+    map.file = resolve(*file);
+    if (!checkExists(filePointer, *file, map.file) || !checkImageReadable(filePointer, *file, map.file)) return std::nullopt;
+    return map;
+  }
+
+  // Opens the image header with OIIO: a file that exists but is no image is reported here, not
+  // halfway through a render.
+  bool checkImageReadable(const std::string& pointer, const std::string& written, const fs::path& resolved) {
+    if (OIIO::ImageInput::open(resolved.string())) return true;
+    std::string reason = OIIO::geterror();
+    if (const size_t newline = reason.find('\n'); newline != std::string::npos) reason.resize(newline);
+    c_.error(pointer, Anchor::Value, fmt::format("not a readable image: '{}'{}: {}", written,
+                                                 written == resolved.string() ? "" : " (resolved to '" + resolved.string() + "')",
+                                                 reason));
+    return false;
   }
 
   // ---- transforms --------------------------------------------------------------------------
@@ -568,7 +632,10 @@ class ShotReader {
       });
     }
     readAssetAnimation(o, asset, {baseDir_, shot_.fps, double(shot_.frameStart)});
-    if (asset.gltf) assignPrimitiveMaterials(asset);
+    if (asset.gltf) {
+      assignPrimitiveMaterials(asset);
+      warnTexturedPrimitivesWithoutUvs(asset, o.has("materials") ? o.at("materials") : pointer);
+    }
     shot_.assets.push_back(std::move(asset));
   }
 
@@ -615,6 +682,22 @@ class ShotReader {
       automatic.emplace_back(key, id);
       asset.primitiveMaterials.push_back(id);
     }
+  }
+
+  // A textured material on a mesh without uvs shades with its constants there: said once per mesh.
+  void warnTexturesWithoutUvs(const std::string& pointer, uint32_t materialId, const std::string& what) {
+    if (materialId >= shot_.materials.size() || !shot_.materials[materialId].textures.any()) return;
+    shot_.warnings.push_back(c_.warning(pointer, Anchor::Value,
+                                        fmt::format("{} has no uvs: the textures of material '{}' are skipped there",
+                                                    what, shot_.materials[materialId].name)));
+  }
+
+  void warnTexturedPrimitivesWithoutUvs(const ShotAsset& asset, const std::string& pointer) {
+    const std::vector<GltfPrimitive>& primitives = asset.gltf->primitives;
+    for (size_t i = 0; i < primitives.size() && i < asset.primitiveMaterials.size(); ++i)
+      if (primitives[i].mesh.uvs.empty() && asset.primitiveMaterials[i] >= 0)
+        warnTexturesWithoutUvs(pointer, uint32_t(asset.primitiveMaterials[i]),
+                               fmt::format("primitive '{}' of asset '{}'", primitives[i].name, asset.name));
   }
 
   // ---- camera ------------------------------------------------------------------------------
@@ -925,6 +1008,9 @@ class ShotReader {
       if (id >= 0) {
         shape.material = m->get<std::string>();
         shape.materialId = uint32_t(id);
+        if (shape.type != ShotShape::Type::Rectangle)  // spheres and ellipsoids have no uvs
+          warnTexturesWithoutUvs(o.at("material"), shape.materialId,
+                                 shape.type == ShotShape::Type::Sphere ? "this sphere" : "this ellipsoid");
       }
     } else {
       o.missing("material", "the name of a material in 'materials'");

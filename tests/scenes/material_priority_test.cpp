@@ -37,7 +37,7 @@ TEST(MaterialPriority, MustBeANonNegativeInteger) {
 
 TEST(MaterialPriority, IsNotAKeyOfOpaqueMaterials) {
   expectSingleError("priority_diffuse.json", shotWithMaterials(R"("cornea": {"type": "diffuse", "priority": 1})"),
-                    "/materials/cornea/priority: unknown key 'priority' (allowed here: type, albedo, emission)");
+                    "/materials/cornea/priority: unknown key 'priority' (allowed here: type, albedo, emission, textures)");
 }
 
 }  // namespace

@@ -1,9 +1,12 @@
 #pragma once
 // Material descriptions (plain data, what a shot file or glTF asset says) and the factory that
-// turns them into BSDFs. Parameters are constant per material in this version (no textures).
+// turns them into BSDFs. Parameters are constant per material; diffuse and skin materials may add
+// texture maps (MaterialTextures), which the renderer looks up per hit (renderer/src/surface_textures.hpp).
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <variant>
 
 #include "lacrima/geometry/math.hpp"
@@ -60,10 +63,40 @@ struct RoughDielectricParams {
 
 using MaterialParams = std::variant<DiffuseParams, SkinParams, SmoothDielectricParams, RoughDielectricParams>;
 
+// How a texture file's values become linear numbers. Auto: for albedo maps, files of integer
+// samples (8- or 16-bit PNG, JPEG, TIFF) are sRGB-encoded and float/half files (EXR) are linear;
+// every other map is data and always read as stored (linear).
+enum class TextureEncoding { Auto, Srgb, Linear };
+
+struct TextureMap {
+  std::filesystem::path file;
+  TextureEncoding encoding = TextureEncoding::Auto;
+};
+
+// Texture maps of a diffuse or skin material, looked up at the hit's uv (glTF convention: u to
+// the right, v down the image). Each map multiplies the constant it refines (the glTF factor x
+// texture rule): albedo and roughness per channel / value, meanFreePath per channel (the map
+// holds dimensionless factors). Normal is a tangent-space map in the OpenGL convention (+Y, green,
+// points up the image). Meshes without uvs shade with the constants. See docs/shot-format.md.
+struct MaterialTextures {
+  std::optional<TextureMap> albedo;
+  std::optional<TextureMap> roughness;     // skin only; scales roughness and roughness2
+  std::optional<TextureMap> normal;
+  std::optional<TextureMap> meanFreePath;  // skin with subsurface only
+  bool any() const { return albedo || roughness || normal || meanFreePath; }
+};
+
 struct Material {
+  // Constructors (not an aggregate): brace initialisers that leave out the textures stay free of
+  // -Wmissing-field-initializers.
+  Material() = default;
+  Material(std::string name_, MaterialParams params_, const Color& emission_ = Color(0.0f, 0.0f, 0.0f))
+      : name(std::move(name_)), params(std::move(params_)), emission(emission_) {}
+
   std::string name;
   MaterialParams params;
   Color emission = Color(0.0f, 0.0f, 0.0f);  // radiance emitted from the front side (area lights)
+  MaterialTextures textures;                   // none: the constants of params everywhere
 };
 
 std::unique_ptr<Bsdf> makeBsdf(const MaterialParams& params);
