@@ -230,7 +230,8 @@ TEST(FarmCluster, SixFramesInThreeChunksMatchALocalRenderBitwise) {
   }
 
   // Frame 3 lost, frame 5 unwritable (a directory in its place): the resubmission renders only
-  // those two (in one task), frame 5 fails, and status says which frame, why, and where the log is.
+  // those two (in one task), frame 5 cannot be written (lacrima render exits 1), and status says
+  // which frame, why, and where the log is.
   fs::remove(dir / "out" / frameName(3));
   fs::remove(dir / "out" / frameName(5));
   fs::create_directory(dir / "out" / frameName(5));
@@ -242,7 +243,7 @@ TEST(FarmCluster, SixFramesInThreeChunksMatchALocalRenderBitwise) {
   EXPECT_EQ(partial.exitStatus, 1) << partial.output;
   EXPECT_TRUE(contains(partial.output, "6 frames: 5 done, 0 running, 0 pending, 1 failed, 0 missing")) << partial.output;
   const std::string secondId = readFarmJob(jobDir).submissions[1].jobId;
-  EXPECT_TRUE(contains(partial.output, "frames 5 failed: task 0 of job " + secondId + " exited 2; log " +
+  EXPECT_TRUE(contains(partial.output, "frames 5 failed: task 0 of job " + secondId + " exited 1; log " +
                                            taskLogPath(jobDir, secondId, 0).string()))
       << partial.output;
   EXPECT_TRUE(bytesWithoutRenderTime(dir / "out" / frameName(3)) == bytesWithoutRenderTime(dir / "local" / frameName(3)));
