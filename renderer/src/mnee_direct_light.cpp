@@ -19,7 +19,8 @@
 // a non-specular vertex (countedByTransparentShadows), so this one takes the full weight.
 // Limits (documented in docs/shot-format.md): one solution per seed (Newton finds at most one
 // of several refracted paths); a light focused onto points whose straight shadow ray misses the
-// drop is not found; a failed solve contributes nothing; more than 2 interfaces fall back to
+// drop is not found; a failed solve contributes nothing (except under a tear lying on the
+// receiver, where the straight transparent shadow stands in); more than 2 interfaces fall back to
 // the straight transparent shadow.
 #include <array>
 
@@ -34,6 +35,10 @@ namespace {
 // The seed walk gives up (the sample counts as blocked) after this many surfaces, as the
 // straight transparent shadow does.
 constexpr int kMaxSeedSurfaces = 16;
+// A dielectric surface this close to the shading point along the shadow ray is a tear lying on
+// it (shedding strips are ~0.7 mm thick, beads up to ~2 mm high), not a drop throwing a caustic
+// from a distance (modelling choice, see manifoldDirectLight).
+constexpr float kTearLayerThickness = 2.5e-3f;  // metres
 
 // Re-projects a moved triangle vertex onto its mesh: a ray from the previous chain point
 // towards the moved point (Hanika sec. 4.2; Cycles does the same), whose first hit must be the
@@ -188,14 +193,23 @@ std::optional<Color> PathIntegrator::manifoldDirectLight(const Vertex& v, const 
     chain.vertices[i] = {patch, eta};
   }
   const ManifoldEndpoint end = endpointOf(v.position, light);
-  if (!solveSpecularChain(x0, chain, end, EmbreeProjection(scene_, v.time, counters))) return Color::Zero();
+  // A receiver under a tear lying on it (the seed's first interface within kTearLayerThickness)
+  // is lit through the tear for nearly every light point, a refraction offset of about the
+  // tear's thickness away from the straight line. Where the chain fails there (the strip's edges
+  // and side walls, a ridge of its interpolated normals, the strip's bottom and top as two
+  // interfaces) the straight transparent shadow stands in, instead of leaving the skin under the
+  // tear black (found on the default shot's jaw).
+  const bool receiverUnderTear = (seed.crossings[0].hit.position - v.position).norm() < kTearLayerThickness;
+  const Color failed = Color::Zero();
+  if (!solveSpecularChain(x0, chain, end, EmbreeProjection(scene_, v.time, counters)))
+    return receiverUnderTear ? std::nullopt : std::optional<Color>(failed);
 
   // The solved chain must cross each interface the way the seed did (its media stay valid).
   Vec3d previous = x0;
   for (int i = 0; i < chain.count; ++i) {
     const SurfacePatch& patch = chain.vertices[i].patch;
     if (((previous - patch.position()).dot(patch.geometricNormal()) > 0.0) != seed.crossings[i].entering)
-      return Color::Zero();
+      return receiverUnderTear ? std::nullopt : std::optional<Color>(failed);
     previous = patch.position();
   }
 
@@ -232,7 +246,8 @@ std::optional<Color> PathIntegrator::manifoldDirectLight(const Vertex& v, const 
   if ((emitted <= 0.0f).all() || !(pdf > 0.0f)) return Color::Zero();
   const double g = manifoldGeometryTerm(x0, chain, end);
   if (!(g > 0.0) || !std::isfinite(g)) return Color::Zero();
-  if (!causticChainIsVisible(v, light, seed, chain, shadowMedia, counters)) return Color::Zero();
+  if (!causticChainIsVisible(v, light, seed, chain, shadowMedia, counters))
+    return receiverUnderTear ? std::nullopt : std::optional<Color>(failed);
   return f * transmission * emitted * float(g / double(pdf));
 }
 
