@@ -10,7 +10,8 @@
 # Any sanitizer report, fuzzer finding or test failure makes the script exit non-zero.
 # Environment: HARDENING_DIR (default build-hardening), BUILD_DIR (Release tree for `memory`,
 # default build), JOBS (default: number of cores), FUZZ_SECONDS, RENDERER_TESTS=1 to add the
-# renderer tests (about N minutes more under ASan, so not in CI).
+# renderer tests (Monte Carlo convergence tests: minutes under ASan, so not in CI),
+# GTEST_FILTER (a gtest filter for the unit tests, e.g. to rerun one test).
 set -euo pipefail
 
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -28,6 +29,7 @@ export LSAN_OPTIONS="suppressions=$here/tools/lsan.supp:print_suppressions=0"
 say() { echo "hardening: $*" >&2; }
 
 configure_and_build() {
+  command -v clang++ >/dev/null || { say "needs clang (apt-get install clang)"; exit 2; }
   local launcher=()
   command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
   # -O1 -g1: fast enough to run the tests, line numbers in every report, quick to compile.
@@ -40,16 +42,12 @@ configure_and_build() {
   cmake --build "$tree" -j "$jobs" --target "${targets[@]}"
 }
 
-# Tests too slow under ASan (each > 1 min instrumented; they cover numerics, not memory safety,
-# and their code paths run in the other tests anyway). Kept short: see docs/hardening.md.
-slow_tests=""
-
 run_unit_tests() {
   local folders=(geometry materials scenes fuzz)
   [ "${RENDERER_TESTS:-0}" = 1 ] && folders+=(renderer)
   for folder in "${folders[@]}"; do
     say "unit tests: $folder"
-    "$tree/tests/lacrima_${folder}_tests" --gtest_brief=1 ${slow_tests:+--gtest_filter="-$slow_tests"}
+    "$tree/tests/lacrima_${folder}_tests" --gtest_brief=1 ${GTEST_FILTER:+--gtest_filter="$GTEST_FILTER"}
   done
 }
 

@@ -48,7 +48,7 @@ void loadGltfInput(const uint8_t* data, size_t size) {
 
 void loadPerformanceTrackInput(const uint8_t* data, size_t size) {
   const bool json = looksLikeJson(data, size);
-  const std::filesystem::path path = writeInput(data, size, json ? "track.json" : "track.csv");
+  const std::filesystem::path path = writeInput(data, size, json ? "input.json" : "input.csv");
   PerformanceCsvOptions options;
   options.nameMap["mouthSmile"] = "smile";
   try {

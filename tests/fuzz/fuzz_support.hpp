@@ -45,7 +45,8 @@ inline const std::filesystem::path& workDirectory() {
   return dir;
 }
 
-// Writes the input to `name` in the work folder and returns its path.
+// Writes the input to `name` in the work folder and returns its path. `name` must not be one of
+// the seed assets' names: the seed shots still need those.
 inline std::filesystem::path writeInput(const uint8_t* data, size_t size, const std::string& name) {
   const std::filesystem::path path = workDirectory() / name;
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
