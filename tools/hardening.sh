@@ -10,7 +10,7 @@
 # Any sanitizer report, fuzzer finding or test failure makes the script exit non-zero.
 # Environment: HARDENING_DIR (default build-hardening), BUILD_DIR (Release tree for `memory`,
 # default build), JOBS (default: number of cores), FUZZ_SECONDS, RENDERER_TESTS=1 to add the
-# renderer tests (Monte Carlo convergence tests: minutes under ASan, so not in CI),
+# renderer tests (Monte Carlo convergence tests; left out of CI for time, not timed under ASan),
 # GTEST_FILTER (a gtest filter for the unit tests, e.g. to rerun one test).
 set -euo pipefail
 
