@@ -61,7 +61,7 @@ run_small_renders() {
   say "render: drops_on_plane (shapes, HDRI, area light) 48x36, 4 spp"
   "$tree/tools/lacrima" render tests/data/regression/drops_on_plane.json --width 48 --height 36 --spp 4 \
     --quiet --out "$out/drops.####.exr"
-  say "render: tear_closeup frames 59-60 (ICT face, tears, details; scene refit) 64x36, 1 spp"
+  say "render: tear_closeup frames 59-60 (ICT face, tears, details; one renderer for both) 64x36, 1 spp"
   "$tree/tools/lacrima" render scenes/shots/tear_closeup.json --frames 59-60 --width 64 --height 36 --spp 1 \
     --quiet --out "$out/closeup.####.exr"
   rm -rf "$out"

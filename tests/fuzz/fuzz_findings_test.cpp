@@ -6,6 +6,7 @@
 #include <string>
 
 #include "fuzz_support.hpp"
+#include "lacrima/geometry/performance_track.hpp"
 #include "lacrima/scenes/shot.hpp"
 
 namespace lacrima::fuzz {
@@ -27,6 +28,34 @@ TEST(FuzzFindings, MisspeltFovIsAnErrorNotACrash) {
     EXPECT_EQ(e.diagnostics()[0].jsonPath, "/camera/FOV");
     const std::string& message = e.diagnostics()[0].message;  // then the line, with a caret under the key
     EXPECT_EQ(message.substr(0, message.find('\n')), "unknown key 'FOV'; did you mean 'fov'?");
+  }
+}
+
+// A number too large for a double used to escape both JSON readers as nlohmann's out_of_range
+// ("lacrima: internal error"); it is now bad input with the file, and for a shot the position.
+TEST(FuzzFindings, NumberTooLargeForADoubleIsBadInput) {
+  const std::filesystem::path shotPath = workDirectory() / "huge_number.json";
+  std::ofstream(shotPath) << R"({"version": 1, "frames": {"start": 1, "end": 1}, "output": "out.exr",
+ "render": {"width": 32, "height": 32, "spp": 1e999},
+ "camera": {"position": [0, 0, 3], "lookAt": [0, 0, 0], "fov": 30}})";
+  try {
+    loadShot(shotPath);
+    FAIL() << "expected a ShotError";
+  } catch (const ShotError& e) {
+    ASSERT_EQ(e.diagnostics().size(), 1u) << e.what();
+    EXPECT_EQ(e.diagnostics()[0].line, 2);
+    EXPECT_EQ(e.diagnostics()[0].column, 47);  // the "1" of 1e999
+    const std::string& message = e.diagnostics()[0].message;
+    EXPECT_NE(message.find("number overflow parsing '1e999'"), std::string::npos) << message;
+  }
+  const std::filesystem::path trackPath = workDirectory() / "huge_fps.json";
+  std::ofstream(trackPath) << R"({"fps": 1e999, "weights": {"jawOpen": [0, 1]}})";
+  try {
+    readPerformanceJson(trackPath, {"jawOpen"});
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), trackPath.string() + ": JSON number out of range: [json.exception.out_of_range.406] "
+                                                           "number overflow parsing '1e999'");
   }
 }
 
