@@ -75,8 +75,12 @@ run_fuzzer() {
   local corpus="$tree/fuzz-corpus/$name" findings="$tree/fuzz-findings"
   mkdir -p "$corpus" "$findings"
   say "fuzz: $name for ${fuzz_seconds} s"
-  "$tree/tests/fuzz/targets/${name}_fuzzer" -max_total_time="$fuzz_seconds" -timeout=10 -rss_limit_mb=2048 \
-    -print_final_stats=1 -artifact_prefix="$findings/$name-" "$corpus" "$@" 2>"$tree/fuzz-$name.log" || {
+  # The target's work folder goes under the tree: libFuzzer's exit skips the target's clean-up.
+  local tmp
+  tmp="$(cd "$tree" && pwd)/fuzz-tmp"
+  rm -rf "$tmp" && mkdir -p "$tmp"
+  TMPDIR="$tmp" "$tree/tests/fuzz/targets/${name}_fuzzer" -max_total_time="$fuzz_seconds" -timeout=10 \
+    -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="$findings/$name-" "$corpus" "$@" 2>"$tree/fuzz-$name.log" || {
     tail -n 60 "$tree/fuzz-$name.log" >&2
     say "fuzz: $name found a problem: the input is in $findings (replay: $tree/tests/fuzz/targets/${name}_fuzzer FILE)"
     return 1
