@@ -2,7 +2,8 @@
 # One-command set-up for a fresh Debian 12 machine:
 #   tools/bootstrap.sh render   install missing packages, build Release, render the default shot
 #   tools/bootstrap.sh test     install missing packages, build Release, run the whole test suite
-# Environment: BUILD_DIR (default build), JOBS (default: number of cores), FRAMES (render: which frames).
+# Environment: BUILD_DIR (default build), JOBS (default: number of cores), FRAMES (render: which frames),
+# HARDENING=0 (test: skip the sanitizer and fuzz stage, tools/hardening.sh).
 set -euo pipefail
 
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -20,6 +21,8 @@ packages=(cmake ninja-build g++ pkg-config
 
 # The farm test brings up a single-node Slurm cluster (tools/slurm/cluster.sh).
 [ "$mode" = test ] && packages+=(slurm-wlm munge)
+# The hardening stage (tools/hardening.sh) builds with clang: ASan/UBSan and libFuzzer.
+[ "$mode" = test ] && packages+=(clang)
 
 install_missing_packages() {
   local missing=()
@@ -48,5 +51,7 @@ case "$mode" in
     ;;
   test)
     ctest --test-dir "$build_dir" --output-on-failure -j "$jobs"
+    # Sanitizers and fuzzing (docs/hardening.md); HARDENING=0 skips them.
+    [ "${HARDENING:-1}" = 0 ] || JOBS="$jobs" tools/hardening.sh
     ;;
 esac

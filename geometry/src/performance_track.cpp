@@ -114,7 +114,15 @@ PerformanceTrack resampleTrack(const PerformanceTrack& track, float targetFps) {
   out.names = track.names;
   if (track.times.empty()) return out;
   const double start = track.times.front(), duration = double(track.times.back()) - start;
-  const size_t count = size_t(std::floor(duration * targetFps + 1e-6)) + 1;
+  // Found by tools/hardening.sh: a time of 1e7 (or a tiny source fps) asked for hundreds of
+  // millions of frames and ended in std::bad_alloc. 1e6 frames is over 11 hours at 24 fps.
+  constexpr double kMaxFrames = 1e6;
+  const double lastFrame = std::floor(duration * targetFps + 1e-6);
+  if (!(lastFrame < kMaxFrames))
+    throw InputError(fmt::format("the track spans {:g} s, {:g} frames at {:g} fps: more than {:g} (are the times "
+                                 "in seconds and the fps right?)",
+                                 duration, lastFrame + 1, targetFps, kMaxFrames));
+  const size_t count = size_t(lastFrame) + 1;
   size_t segment = 0;
   for (size_t i = 0; i < count; ++i) {
     const float t = float(start + double(i) / targetFps);

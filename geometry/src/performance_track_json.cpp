@@ -36,6 +36,8 @@ Json parseFile(const std::filesystem::path& path) {
     return Json::parse(in);
   } catch (const Json::parse_error& e) {
     throw InputError(fmt::format("{}: JSON syntax error at byte {}: {}", path.string(), e.byte, e.what()));
+  } catch (const Json::out_of_range& e) {  // "1e999": found by tools/hardening.sh (was an internal error)
+    throw InputError(fmt::format("{}: JSON number out of range: {}", path.string(), e.what()));
   }
 }
 

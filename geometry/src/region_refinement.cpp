@@ -203,7 +203,8 @@ void combineInfluences(const std::vector<std::pair<uint16_t, double>>& terms, st
                        Vec4& weights) {
   std::vector<std::pair<uint16_t, double>> perJoint;
   for (const auto& [joint, w] : terms) {
-    auto it = std::find_if(perJoint.begin(), perJoint.end(), [&](const auto& p) { return p.first == joint; });
+    // Copied into the lambda: clang 14 (tools/hardening.sh) cannot capture a structured binding.
+    auto it = std::find_if(perJoint.begin(), perJoint.end(), [j = joint](const auto& p) { return p.first == j; });
     if (it == perJoint.end()) perJoint.emplace_back(joint, w);
     else it->second += w;
   }

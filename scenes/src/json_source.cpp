@@ -256,6 +256,16 @@ std::optional<Json> JsonSource::parse() {
     }
     syntaxErrorOffset_ = offset;
     return std::nullopt;
+  } catch (const Json::out_of_range& e) {
+    // A number too large for a double ("1e999"), found by tools/hardening.sh: it escaped as an
+    // internal error. nlohmann gives no position: point at the first occurrence of the number.
+    syntaxError_ = parseErrorDetail(e.what());
+    const size_t quote = syntaxError_.find('\'');
+    const std::string number =
+        quote == std::string::npos ? "" : syntaxError_.substr(quote + 1, syntaxError_.size() - quote - 2);
+    const size_t at = number.empty() ? std::string::npos : text_.find(number);
+    syntaxErrorOffset_ = at == std::string::npos ? 0 : at;
+    return std::nullopt;
   }
 }
 

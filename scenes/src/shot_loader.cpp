@@ -703,12 +703,15 @@ class ShotReader {
   // ---- camera ------------------------------------------------------------------------------
 
   bool readCamera(const Json& v) {
+    // Counted before the reader: an unknown key it reports ("FOV", did you mean 'fov'?) stands in
+    // for the missing 'fov', which is then not reported again (found by tools/hardening.sh: the
+    // camera was derived without a field of view and crashed).
+    const size_t before = c_.errorCount();
     ObjectReader o(
         c_, v, "/camera",
         {"position", "lookAt", "up", "gltf", "fov", "focalLength", "sensorHeight", "fStop", "focusDistance",
          "shutter"});
     if (!o.ok()) return false;
-    const size_t before = c_.errorCount();
     ShotCamera& cam = shot_.camera;
     const GltfCamera* gltfCamera = nullptr;
     const ShotAsset* gltfAsset = nullptr;

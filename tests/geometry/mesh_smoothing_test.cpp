@@ -22,7 +22,9 @@ std::vector<uint32_t> identityWeld(const TriangleMesh& mesh) {
 
 // Deterministic noise in [-1, 1] per grid point (an integer hash, same on every platform).
 float noise(float x, float y) {
-  uint32_t h = uint32_t(int32_t(std::lround(x * 1000.0f)) * 73856093) ^ uint32_t(int32_t(std::lround(y * 1000.0f)) * 19349663);
+  // Multiplied as unsigned: the signed product overflowed (UBSan); the wrapped value is the same.
+  uint32_t h = (uint32_t(int32_t(std::lround(x * 1000.0f))) * 73856093u) ^
+               (uint32_t(int32_t(std::lround(y * 1000.0f))) * 19349663u);
   h ^= h >> 13;
   h *= 0x5bd1e995u;
   h ^= h >> 15;

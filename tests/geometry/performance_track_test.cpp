@@ -68,6 +68,23 @@ TEST(PerformanceTrack, ResamplesLinearlyToTheTargetRate) {
   EXPECT_THROW(resampleTrack(track, 0.0f), InputError);
 }
 
+// Found by fuzzing (tools/hardening.sh): a far-off time used to allocate until std::bad_alloc.
+TEST(PerformanceTrack, RefusesToResampleATrackOfMoreThanAMillionFrames) {
+  PerformanceTrack track;
+  track.names = {"jawOpen"};
+  track.times = {0.0f, 1e7f};
+  track.frames = {{0.0f}, {1.0f}};
+  try {
+    resampleTrack(track, 24.0f);
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "the track spans 1e+07 s, 2.4e+08 frames at 24 fps: more than 1e+06 (are the times in "
+                           "seconds and the fps right?)");
+  }
+  track.times = {0.0f, 41666.0f};  // 999985 frames: the longest track still resampled
+  EXPECT_EQ(resampleTrack(track, 24.0f).times.size(), 999985u);
+}
+
 float sampleVariance(const std::vector<float>& v) {
   double mean = 0.0, m2 = 0.0;
   for (float x : v) mean += x;

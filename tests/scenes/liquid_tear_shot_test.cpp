@@ -286,7 +286,8 @@ TEST(LiquidTearShot, SlidingBeadsAreMotionBlurredUnderAShutter) {
   for (int f = 25; f <= kFrames && blurred == 0; ++f) {
     const TearLiquidState state = liquidTearStateAt(shot, shot.liquidTears[0], f - 0.25);
     if (state.beads.empty() || state.beads[0].phase != BeadPhase::Sliding) continue;
-    const auto beads = beadsOf(buildFrame(shot, f));
+    const Frame frame = buildFrame(shot, f);  // kept: beadsOf points into it (ASan: use after free)
+    const auto beads = beadsOf(frame);
     ASSERT_FALSE(beads.empty());
     const MeshInstance& bead = *beads[0];
     ASSERT_EQ(bead.positionsAtClose.size(), bead.mesh.positions.size()) << f;
@@ -300,7 +301,8 @@ TEST(LiquidTearShot, SlidingBeadsAreMotionBlurredUnderAShutter) {
   }
   EXPECT_EQ(blurred, 1);
   // A bead at rest on a still face does not move within the shutter.
-  const auto resting = beadsOf(buildFrame(shot, 30));
+  const Frame restingFrame = buildFrame(shot, 30);  // kept: beadsOf points into it
+  const auto resting = beadsOf(restingFrame);
   ASSERT_FALSE(resting.empty());
   EXPECT_EQ(liquidTearStateAt(shot, shot.liquidTears[0], 29.75).beads[0].phase, BeadPhase::Pinned);
   EXPECT_TRUE(resting[0]->positionsAtClose.empty());

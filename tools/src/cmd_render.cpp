@@ -14,6 +14,7 @@
 #include "frame_range.hpp"
 #include "frame_selection.hpp"
 #include "interrupt.hpp"
+#include "memory_usage.hpp"
 #include "lacrima/renderer/camera.hpp"
 #include "lacrima/renderer/image_output.hpp"
 #include "lacrima/renderer/render.hpp"
@@ -232,6 +233,8 @@ int runRender(const RenderOptions& o) {
         break;
       }
       tally.renderSeconds += seconds;
+      if (o.reportMemory)
+        std::fprintf(stderr, "frame %d: memory: %s\n", frameNumber, formatMemoryUsage(currentMemoryUsage()).c_str());
       if (outcome == FrameOutcome::Written) {
         tally.complete.push_back(frameNumber);
         ++tally.rendered;
@@ -240,6 +243,7 @@ int runRender(const RenderOptions& o) {
       }
     }
     printSummary(frames, tally, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    if (o.reportMemory) std::fprintf(stderr, "lacrima: memory: %s\n", formatMemoryUsage(currentMemoryUsage()).c_str());
 
     // An interrupt that came after the last frame stopped nothing: the run is simply complete.
     if (stopRequested() && !framesNotDone(frames, tally).empty()) {

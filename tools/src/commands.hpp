@@ -27,6 +27,7 @@ struct RenderOptions {
   bool floatOutput = false;
   bool quiet = false;
   bool resume = false;  // skip frames whose EXR is already complete with these settings
+  bool reportMemory = false;  // print the peak and current RSS after every frame and at the end
 };
 
 struct ExportOptions {

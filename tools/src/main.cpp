@@ -113,6 +113,9 @@ void addRender(CLI::App& app, RenderOptions& o) {
   render->add_flag("--resume", o.resume,
                    "Skip frames whose EXR already exists, reads back completely and was rendered with the same "
                    "resolution, spp, seed and max depth; render the others (a truncated or corrupt file again)");
+  render->add_flag("--report-memory", o.reportMemory,
+                   "After every frame and at the end, print the process's peak and current resident memory "
+                   "(a peak that grows frame after frame is a leak)");
   render->callback([&o] { throw CLI::RuntimeError(runRender(o)); });
 }
 

@@ -1,0 +1,125 @@
+#!/usr/bin/env bash
+# Sanitizers and fuzzing (docs/hardening.md). One clang tree, build-hardening, instrumented with
+# AddressSanitizer + UndefinedBehaviorSanitizer (UB fatal) and libFuzzer coverage, holds both the
+# unit tests and the fuzz targets: one build instead of two on CI's 2 cores.
+#   tools/hardening.sh            everything below, in this order (what CI runs)
+#   tools/hardening.sh tests      unit tests of geometry, materials, scenes and fuzz under ASan/UBSan
+#   tools/hardening.sh render     two small renders under ASan/UBSan (leak check on)
+#   tools/hardening.sh fuzz       each libFuzzer target for FUZZ_SECONDS (default 30)
+#   tools/hardening.sh memory     peak RSS over 240 frames of the default shot (Release build; not in CI)
+# Any sanitizer report, fuzzer finding or test failure makes the script exit non-zero.
+# Environment: HARDENING_DIR (default build-hardening), BUILD_DIR (Release tree for `memory`,
+# default build), JOBS (default: number of cores), FUZZ_SECONDS, RENDERER_TESTS=1 to add the
+# renderer tests (Monte Carlo convergence tests; left out of CI for time, not timed under ASan),
+# GTEST_FILTER (a gtest filter for the unit tests, e.g. to rerun one test).
+set -euo pipefail
+
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+cd "$here"
+stage="${1:-all}"
+tree="${HARDENING_DIR:-build-hardening}"
+jobs="${JOBS:-$(nproc)}"
+fuzz_seconds="${FUZZ_SECONDS:-30}"
+
+# halt_on_error: the first report fails the run; detect_leaks: LeakSanitizer at exit.
+export ASAN_OPTIONS="detect_leaks=1:halt_on_error=1:abort_on_error=0:strict_string_checks=1:detect_stack_use_after_return=1"
+export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+export LSAN_OPTIONS="suppressions=$here/tools/lsan.supp:print_suppressions=0"
+
+say() { echo "hardening: $*" >&2; }
+
+configure_and_build() {
+  command -v clang++ >/dev/null || { say "needs clang (apt-get install clang)"; exit 2; }
+  local launcher=()
+  command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+  # -O1 -g1: fast enough to run the tests, line numbers in every report, quick to compile.
+  CC=clang CXX=clang++ cmake -S . -B "$tree" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" "${launcher[@]}" \
+    -DLACRIMA_SANITIZE=address,undefined -DLACRIMA_FUZZ=ON >/dev/null
+  local targets=(lacrima lacrima_geometry_tests lacrima_materials_tests lacrima_scenes_tests lacrima_fuzz_tests
+    shot_fuzzer gltf_fuzzer performance_track_fuzzer)
+  [ "${RENDERER_TESTS:-0}" = 1 ] && targets+=(lacrima_renderer_tests)
+  cmake --build "$tree" -j "$jobs" --target "${targets[@]}"
+}
+
+# Left out under the sanitizers: tests that time code against a budget (ASan makes everything
+# 2-5x slower; their code still runs in the other tests).
+timing_tests="LiquidTearShot.SimulationCostPerFrameIsSmall"
+
+run_unit_tests() {
+  local folders=(geometry materials scenes fuzz)
+  [ "${RENDERER_TESTS:-0}" = 1 ] && folders+=(renderer)
+  for folder in "${folders[@]}"; do
+    say "unit tests: $folder"
+    "$tree/tests/lacrima_${folder}_tests" --gtest_brief=1 --gtest_filter="${GTEST_FILTER:-*}-$timing_tests"
+  done
+}
+
+run_small_renders() {
+  local out
+  out="$(mktemp -d)"
+  say "render: drops_on_plane (shapes, HDRI, area light) 48x36, 4 spp"
+  "$tree/tools/lacrima" render tests/data/regression/drops_on_plane.json --width 48 --height 36 --spp 4 \
+    --quiet --out "$out/drops.####.exr"
+  say "render: tear_closeup frames 59-60 (ICT face, tears, details; one renderer for both) 64x36, 1 spp"
+  "$tree/tools/lacrima" render scenes/shots/tear_closeup.json --frames 59-60 --width 64 --height 36 --spp 1 \
+    --quiet --out "$out/closeup.####.exr"
+  rm -rf "$out"
+}
+
+# One target: fuzz for fuzz_seconds from the seeds (new inputs go to a scratch corpus, findings
+# to $tree/fuzz-findings). -timeout: an input taking 10 s is a hang; -rss_limit_mb: an OOM.
+run_fuzzer() {
+  local name="$1"
+  shift
+  local corpus="$tree/fuzz-corpus/$name" findings="$tree/fuzz-findings"
+  mkdir -p "$corpus" "$findings"
+  say "fuzz: $name for ${fuzz_seconds} s"
+  # The target's work folder goes under the tree: libFuzzer's exit skips the target's clean-up.
+  local tmp
+  tmp="$(cd "$tree" && pwd)/fuzz-tmp"
+  rm -rf "$tmp" && mkdir -p "$tmp"
+  TMPDIR="$tmp" "$tree/tests/fuzz/targets/${name}_fuzzer" -max_total_time="$fuzz_seconds" -timeout=10 \
+    -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="$findings/$name-" "$corpus" "$@" 2>"$tree/fuzz-$name.log" || {
+    tail -n 60 "$tree/fuzz-$name.log" >&2
+    say "fuzz: $name found a problem: the input is in $findings (replay: $tree/tests/fuzz/targets/${name}_fuzzer FILE)"
+    return 1
+  }
+  grep -E "stat::number_of_executed_units|stat::peak_rss_mb" "$tree/fuzz-$name.log" | sed "s/^/hardening: $name /" >&2
+}
+
+run_fuzzers() {
+  run_fuzzer shot tests/fuzz/corpus/shot tests/data/bad_shots tests/data/regression
+  run_fuzzer gltf tests/fuzz/corpus/gltf
+  run_fuzzer performance_track tests/fuzz/corpus/track
+}
+
+# Peak RSS of the Release binary over 240 frames of the default shot at 64x36, 1 spp. The shot
+# has 72 frames: a copy with "end": 240 holds the last keyed pose from frame 60 on (keys hold
+# outside their range) while its tears keep running. The copy sits in a scratch shots/ folder
+# next to a link to scenes/assets, so that its relative asset paths still resolve.
+run_memory() {
+  local build="${BUILD_DIR:-build}" scratch
+  cmake --build "$build" -j "$jobs" --target lacrima
+  scratch="$(mktemp -d)"
+  mkdir "$scratch/shots"
+  ln -s "$here/scenes/assets" "$scratch/assets"
+  sed 's/"frames": {"start": 1, "end": 72,/"frames": {"start": 1, "end": 240,/' scenes/shots/tear_closeup.json \
+    > "$scratch/shots/tear_closeup_240.json"
+  grep -q '"end": 240' "$scratch/shots/tear_closeup_240.json" || { say "memory: cannot extend the shot"; return 1; }
+  say "memory: 240 frames of tear_closeup at 64x36, 1 spp"
+  "$build/tools/lacrima" render "$scratch/shots/tear_closeup_240.json" --width 64 --height 36 --spp 1 --quiet \
+    --report-memory --out "$scratch/f.####.exr" 2>&1 | grep -E "^frame (1|10|60|120|240): memory|^lacrima:" >&2
+  rm -rf "$scratch"
+}
+
+start=$(date +%s)
+case "$stage" in
+  all) configure_and_build; run_unit_tests; run_small_renders; run_fuzzers ;;
+  tests) configure_and_build; run_unit_tests ;;
+  render) configure_and_build; run_small_renders ;;
+  fuzz) configure_and_build; run_fuzzers ;;
+  memory) run_memory ;;
+  *) echo "usage: tools/hardening.sh [all|tests|render|fuzz|memory]" >&2; exit 2 ;;
+esac
+say "$stage: OK in $(( $(date +%s) - start )) s"
