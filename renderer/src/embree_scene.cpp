@@ -279,7 +279,7 @@ void EmbreeScene::surfaceOfMesh(const MeshInstance& instance, float time, const 
   }
   const std::vector<float>& film = instance.wetness;
   hit.wetness = film.empty() ? 0.0f : w * film[tri[0]] + u * film[tri[1]] + v * film[tri[2]];
-  hit.hasUv = !mesh.uvs.empty();
+  hit.hasUv = !mesh.uvs.empty() && frame_->materials[instance.materialId].textures.any();
   if (hit.hasUv) uvOfTriangle(mesh, tri, {p0, p1, p2}, w, u, v, hit);
 }
 

@@ -24,8 +24,10 @@ struct SurfaceHit {
   unsigned geometryId = 0;   // Embree's: which mesh, sphere or light
   unsigned primitiveId = 0;  // the triangle of a mesh
   Vec2 barycentric = Vec2::Zero();  // Embree's (u, v) on that triangle
-  // Texture coordinates, for meshes with uvs (hasUv): uv interpolated barycentrically, and the
-  // triangle's dP/du and dP/dv (zero when its uvs are degenerate), the tangents of normal maps.
+  // Texture coordinates, for meshes with uvs and a textured material (hasUv; only textures read
+  // them, so untextured hits, shadow walks and MNEE projections skip the work): uv interpolated
+  // barycentrically, and the triangle's dP/du and dP/dv (zero when its uvs are degenerate), the
+  // tangents of normal maps.
   bool hasUv = false;
   Vec2 uv = Vec2::Zero();
   Vec3 dpdu = Vec3::Zero();
