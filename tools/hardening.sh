@@ -26,7 +26,9 @@ export ASAN_OPTIONS="detect_leaks=1:halt_on_error=1:abort_on_error=0:strict_stri
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 export LSAN_OPTIONS="suppressions=$here/tools/lsan.supp:print_suppressions=0"
 
-say() { echo "hardening: $*" >&2; }
+# Each line carries the seconds since the script started, so a slow stage shows in the CI log.
+say() { echo "hardening: [$(( $(date +%s) - script_start )) s] $*" >&2; }
+script_start=$(date +%s)
 
 configure_and_build() {
   command -v clang++ >/dev/null || { say "needs clang (apt-get install clang)"; exit 2; }
