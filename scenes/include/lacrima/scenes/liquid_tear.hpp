@@ -66,7 +66,7 @@ class LiquidTearCourses {
   const LiquidTearSurface& surface() const { return *surface_; }
   // The course at integer frame k (frames before firstFrame get the first course).
   std::shared_ptr<const LiquidTearCourse> at(int frame) const;
-  // Courses traced so far (distinct ones), for cost reports.
+  // Paths traced so far (one per frame whose pose changed, taken or not), for cost reports.
   size_t tracedCount() const;
 
  private:
