@@ -194,6 +194,30 @@ TEST(LiquidTearShot, AFrameAloneEqualsTheSameFrameInASequence) {
   }
 }
 
+// The same on a face that moves (its course re-traced every frame): the bead meshes and the wet
+// trail of frame 60 built alone are bitwise those built after other frames of a sequence.
+TEST(LiquidTearShot, AFrameAloneEqualsTheSameFrameInASequenceWhenTheFaceMoves) {
+  const std::string roll = R"("rig": {"preset": "ict"}, "joints": {"head.rz": {"keys": [[1, 0], [60, 6]]}})";
+  const Shot shot = loadTearShot("liquid_moving_alone.json", kTear, "", roll);
+  const Frame alone = buildFrame(shot, 60);
+  const Shot sequenceShot = loadTearShot("liquid_moving_sequence.json", kTear, "", roll);
+  for (int f : {12, 27, 50}) buildFrame(sequenceShot, f);
+  const Frame inSequence = buildFrame(sequenceShot, 60);
+  EXPECT_GT(shot.liquidTears[0].courses->tracedCount(), 55u);  // the head's roll moved the course every frame
+  const auto a = beadsOf(alone), b = beadsOf(inSequence);
+  ASSERT_FALSE(a.empty());
+  ASSERT_EQ(a.size(), b.size());
+  for (size_t i = 0; i < a.size(); ++i) EXPECT_EQ(a[i]->mesh.positions, b[i]->mesh.positions);
+  const std::string name = "face/" + shot.assets[0].gltf->primitives[shot.liquidTears[0].sourcePoint.primitive].name;
+  const auto wetness = [&name](const Frame& frame) {
+    for (const MeshInstance& m : frame.meshes)
+      if (m.mesh.name == name) return m.wetness;
+    return std::vector<float>();
+  };
+  EXPECT_FALSE(wetness(alone).empty());
+  EXPECT_EQ(wetness(alone), wetness(inSequence));
+}
+
 TEST(LiquidTearShot, SimulationCostPerFrameIsSmall) {
   const Shot shot = loadTearShot("liquid_cost.json");
   const auto start = std::chrono::steady_clock::now();
