@@ -4,7 +4,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <map>
 #include <utility>
 
 #include "lacrima/geometry/error.hpp"
@@ -29,40 +28,15 @@ void validate(const TriangleMesh& mesh, const std::vector<uint32_t>& weldMap, co
     if (i >= mesh.positions.size()) throw InputError(fmt::format("taubin smoothing: index {} out of range", i));
 }
 
-// Neighbours of each representative vertex (welded), sorted and unique, and whether it lies on
-// the boundary (an edge of a single triangle).
-struct WeldedGraph {
-  std::vector<std::vector<uint32_t>> neighbours;
-  std::vector<bool> boundary;
-};
-
-WeldedGraph buildGraph(const TriangleMesh& mesh, const std::vector<uint32_t>& weldMap) {
-  WeldedGraph g;
-  g.neighbours.resize(mesh.positions.size());
-  g.boundary.assign(mesh.positions.size(), false);
-  std::map<std::pair<uint32_t, uint32_t>, int> edgeUse;
-  for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3)
-    for (int k = 0; k < 3; ++k) {
-      const uint32_t a = weldMap[mesh.indices[t + k]], b = weldMap[mesh.indices[t + (k + 1) % 3]];
-      if (a == b) continue;
-      ++edgeUse[{std::min(a, b), std::max(a, b)}];
-    }
-  for (const auto& [edge, uses] : edgeUse) {
-    g.neighbours[edge.first].push_back(edge.second);
-    g.neighbours[edge.second].push_back(edge.first);
-    if (uses == 1) g.boundary[edge.first] = g.boundary[edge.second] = true;
-  }
-  return g;
-}
-
 // x += factor * (mean of neighbours - x) for every free representative vertex (Jacobi update).
-void umbrellaStep(const WeldedGraph& g, float factor, std::vector<Vec3d>& x) {
+void umbrellaStep(const std::vector<std::vector<uint32_t>>& neighbours, const std::vector<bool>& boundary, float factor,
+                  std::vector<Vec3d>& x) {
   std::vector<Vec3d> next = x;
   for (size_t v = 0; v < x.size(); ++v) {
-    if (g.boundary[v] || g.neighbours[v].empty()) continue;
+    if (boundary[v] || neighbours[v].empty()) continue;
     Vec3d mean = Vec3d::Zero();
-    for (uint32_t n : g.neighbours[v]) mean += x[n];
-    mean /= double(g.neighbours[v].size());
+    for (uint32_t n : neighbours[v]) mean += x[n];
+    mean /= double(neighbours[v].size());
     next[v] = x[v] + double(factor) * (mean - x[v]);
   }
   x = std::move(next);
@@ -70,18 +44,52 @@ void umbrellaStep(const WeldedGraph& g, float factor, std::vector<Vec3d>& x) {
 
 }  // namespace
 
+TaubinSmoother::TaubinSmoother(const TriangleMesh& mesh, const std::vector<uint32_t>& weldMap,
+                               const TaubinOptions& options)
+    : weldMap_(weldMap), options_(options) {
+  validate(mesh, weldMap, options);
+  // Neighbours of each representative vertex (welded), and whether it lies on the boundary.
+  neighbours_.resize(mesh.positions.size());
+  boundary_.assign(mesh.positions.size(), false);
+  // Every welded edge once per triangle using it, sorted: runs of equal edges count its uses (in the
+  // order of a map keyed by the edge, so neighbours are listed in increasing order).
+  std::vector<std::pair<uint32_t, uint32_t>> edges;
+  edges.reserve(mesh.indices.size());
+  for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3)
+    for (int k = 0; k < 3; ++k) {
+      const uint32_t a = weldMap[mesh.indices[t + k]], b = weldMap[mesh.indices[t + (k + 1) % 3]];
+      if (a != b) edges.emplace_back(std::min(a, b), std::max(a, b));
+    }
+  std::sort(edges.begin(), edges.end());
+  for (size_t i = 0; i < edges.size();) {
+    size_t end = i + 1;
+    while (end < edges.size() && edges[end] == edges[i]) ++end;
+    const auto [a, b] = edges[i];
+    neighbours_[a].push_back(b);
+    neighbours_[b].push_back(a);
+    if (end - i == 1) boundary_[a] = boundary_[b] = true;
+    i = end;
+  }
+}
+
+std::vector<Vec3> TaubinSmoother::smoothed(const std::vector<Vec3>& positions) const {
+  if (positions.size() != weldMap_.size())
+    throw InputError(fmt::format("taubin smoothing: {} positions for {} vertices", positions.size(), weldMap_.size()));
+  std::vector<Vec3d> x(positions.size());
+  for (size_t v = 0; v < x.size(); ++v) x[v] = positions[v].cast<double>();
+  for (int i = 0; i < options_.iterations; ++i) {
+    umbrellaStep(neighbours_, boundary_, options_.lambda, x);  // Taubin 1995 eq. 8: the shrinking step ...
+    umbrellaStep(neighbours_, boundary_, options_.mu, x);      // ... and the inflating one
+  }
+  std::vector<Vec3> out(positions.size());
+  for (size_t v = 0; v < out.size(); ++v) out[v] = x[weldMap_[v]].cast<float>();
+  return out;
+}
+
 TriangleMesh taubinSmoothed(const TriangleMesh& mesh, const std::vector<uint32_t>& weldMap,
                             const TaubinOptions& options) {
-  validate(mesh, weldMap, options);
-  const WeldedGraph graph = buildGraph(mesh, weldMap);
-  std::vector<Vec3d> x(mesh.positions.size());
-  for (size_t v = 0; v < x.size(); ++v) x[v] = mesh.positions[v].cast<double>();
-  for (int i = 0; i < options.iterations; ++i) {
-    umbrellaStep(graph, options.lambda, x);  // Taubin 1995 eq. 8: the shrinking step ...
-    umbrellaStep(graph, options.mu, x);      // ... and the inflating one
-  }
   TriangleMesh smoothed = mesh;
-  for (size_t v = 0; v < x.size(); ++v) smoothed.positions[v] = x[weldMap[v]].cast<float>();
+  smoothed.positions = TaubinSmoother(mesh, weldMap, options).smoothed(mesh.positions);
   if (!mesh.normals.empty()) computeSmoothNormals(smoothed, weldMap);
   return smoothed;
 }

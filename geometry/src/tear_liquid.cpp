@@ -430,6 +430,86 @@ void TearLiquidSimulation::dryFilm() {
   }
 }
 
+// ---- Re-routing -----------------------------------------------------------------------------------
+
+void TearLiquidSimulation::reroute(std::vector<LiquidPathSample> path, const std::function<double(double)>& newArcLength) {
+  validatePath(path);
+  const double newLength = path.back().arcLength;
+  const auto image = [&](double s) {
+    const double mapped = newArcLength(s);
+    if (!std::isfinite(mapped))
+      throw InputError(fmt::format("tear liquid: re-routing maps arc length {} to {}, not a finite length", s, mapped));
+    return std::clamp(mapped, 0.0, newLength);
+  };
+  // Everything is mapped before anything changes, so a throwing map leaves the simulation as it was.
+  std::vector<double> beadArcs(beads_.size());
+  for (size_t id = 0; id < beads_.size(); ++id)
+    beadArcs[id] = beads_[id].arcLength == 0.0 || !isLive(beads_[id]) ? beads_[id].arcLength : image(beads_[id].arcLength);
+  rerouteFilm(image, newLength);
+  input_.path = std::move(path);
+  pathLength_ = newLength;
+  for (size_t id = 0; id < beads_.size(); ++id) {
+    Bead& bead = beads_[id];
+    if (!isLive(bead)) continue;
+    bead.arcLength = beadArcs[id];
+    if (bead.phase == BeadPhase::Hanging && !isDripSite(bead.arcLength)) bead.phase = BeadPhase::Pinned;
+  }
+}
+
+void TearLiquidSimulation::rerouteFilm(const std::function<double(double)>& image, double newLength) {
+  const double cellSize = input_.params.trailCellLength;
+  const size_t count = std::max<size_t>(size_t(std::ceil(newLength / cellSize)), 1);
+  const auto newCell = [&](double s) { return std::min(size_t(std::max(s, 0.0) / cellSize), count - 1); };
+  std::vector<double> volume(count, 0.0), width(count, 0.0), own(count, 0.0), largest(count, 0.0);
+  std::vector<int> depositor(count, -1);
+  // Each old cell's share of each new cell its image [lo, hi] overlaps (all of it in one cell for an
+  // image of zero length, e.g. beyond the new course's end), in proportion to the overlap.
+  struct Share {
+    size_t from, to;
+    double fraction;
+  };
+  std::vector<Share> shares;
+  for (size_t cell = 0; cell < cellVolume_.size(); ++cell) {
+    if (!(cellVolume_[cell] > 0.0)) continue;
+    const double begin = double(cell) * cellSize;
+    const double a = image(begin), b = image(begin + cellLength(cell));
+    const double lo = std::min(a, b), hi = std::max(a, b);
+    // Overlaps below a billionth of a cell are rounding at a cell's edge (an image ending one ulp
+    // into the next cell): they would lay a trace of film, and its wetness, ahead of the trail.
+    const size_t first = shares.size();
+    double kept = 0.0;
+    for (size_t j = newCell(lo); hi > lo && j <= newCell(hi); ++j) {
+      const double overlap = std::min(double(j + 1) * cellSize, hi) - std::max(double(j) * cellSize, lo);
+      if (!(overlap > 1e-9 * cellSize)) continue;
+      shares.push_back({cell, j, overlap});
+      kept += overlap;
+    }
+    if (shares.size() == first) {
+      shares.push_back({cell, newCell(0.5 * (lo + hi)), 1.0});
+      continue;
+    }
+    for (size_t k = first; k < shares.size(); ++k) shares[k].fraction /= kept;  // all of the cell's film goes
+  }
+  // The film keeps the depositor that brought the most of it (what wetnessAhead and depositTrail
+  // need to tell a bead's own film from others').
+  for (const Share& share : shares) {
+    const double added = share.fraction * cellVolume_[share.from];
+    volume[share.to] += added;
+    width[share.to] = std::max(width[share.to], cellWidth_[share.from]);
+    if (added > largest[share.to]) {
+      largest[share.to] = added;
+      depositor[share.to] = cellDepositor_[share.from];
+    }
+  }
+  for (const Share& share : shares)
+    if (depositor[share.to] >= 0 && cellDepositor_[share.from] == depositor[share.to])
+      own[share.to] += share.fraction * cellOwnVolume_[share.from];
+  cellVolume_ = std::move(volume);
+  cellWidth_ = std::move(width);
+  cellDepositor_ = std::move(depositor);
+  cellOwnVolume_ = std::move(own);
+}
+
 // ---- Output ---------------------------------------------------------------------------------------
 
 VolumeBudget TearLiquidSimulation::budget() const {
@@ -484,6 +564,8 @@ TearLiquidState TearLiquidSimulation::state(double t) const {
   for (const LiquidPathSample& sample : input_.path) state.sampleFilmThickness.push_back(filmThicknessAt(sample.arcLength));
   return state;
 }
+
+long long tearLiquidStepsTo(double t, double timeStep) { return stepsFor(t, timeStep); }
 
 TearLiquidState simulateTearLiquid(const TearLiquidInput& input, double t) {
   TearLiquidSimulation simulation(input);

@@ -17,9 +17,8 @@ struct WetPiece {
 };
 
 // The pieces of the path that carry film, each with its reach; empty when the trail is dry.
-std::vector<WetPiece> wetPieces(const ShotLiquidTear& tear, const TearLiquidSimulation& simulation,
-                                const TriangleMesh& skin) {
-  const FlowPath& path = tear.path;
+std::vector<WetPiece> wetPieces(const ShotLiquidTear& tear, const FlowPath& path,
+                                const TearLiquidSimulation& simulation, const TriangleMesh& skin) {
   // Cells are trailCellLength long: probing every half cell meets each cell a piece crosses.
   const double probe = 0.5 * tear.input.params.trailCellLength;
   std::vector<WetPiece> pieces;
@@ -61,9 +60,9 @@ float filmFromPiece(const WetPiece& piece, const TearLiquidSimulation& simulatio
 
 }  // namespace
 
-void addLiquidTearFilm(const ShotLiquidTear& tear, const TearLiquidSimulation& simulation, const TriangleMesh& skin,
-                       std::vector<float>& wetness) {
-  const std::vector<WetPiece> pieces = wetPieces(tear, simulation, skin);
+void addLiquidTearFilm(const ShotLiquidTear& tear, const FlowPath& course, const TearLiquidSimulation& simulation,
+                       const TriangleMesh& skin, std::vector<float>& wetness) {
+  const std::vector<WetPiece> pieces = wetPieces(tear, course, simulation, skin);
   if (pieces.empty()) return;
   // Only vertices in the box around the wet pieces, grown by their reach, can get film.
   Eigen::AlignedBox3f box;

@@ -13,13 +13,14 @@ namespace lacrima::shotfile {
 // interpolation would turn into a saw-tooth).
 inline constexpr float kFilmEdgeFraction = 0.5f;
 
-// Writes the tear's film, as `simulation` holds it now, onto `wetness` (one value per vertex of
-// `skin`, the posed primitive the path runs over; resized from empty on the first wet vertex):
-// a vertex at distance r from the path (the posed path's polyline) gets the film thickness d(s)
+// Writes the tear's film, as `simulation` holds it now on `course` (the course it runs on, the
+// simulation's arc lengths), onto `wetness` (one value per vertex of `skin`, the posed primitive the
+// path runs over; resized from empty on the first wet vertex): a vertex at distance r from the
+// course (its polyline on `skin`) gets the film thickness d(s)
 // at the arc length s of its closest point on a piece, times 1 within half the film's width
 // there and a smooth falloff beyond; the largest value over the pieces and over earlier tears
 // is kept. Only vertices within reach of a wet piece are visited.
-void addLiquidTearFilm(const ShotLiquidTear& tear, const TearLiquidSimulation& simulation, const TriangleMesh& skin,
-                       std::vector<float>& wetness);
+void addLiquidTearFilm(const ShotLiquidTear& tear, const FlowPath& course, const TearLiquidSimulation& simulation,
+                       const TriangleMesh& skin, std::vector<float>& wetness);
 
 }  // namespace lacrima::shotfile

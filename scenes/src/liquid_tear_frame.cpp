@@ -16,15 +16,11 @@ double liquidTearSeconds(const Shot& shot, const ShotLiquidTear& tear, double fr
   return std::max(0.0, (frame - tear.simulationStartFrame) / shot.fps);
 }
 
-TearLiquidState liquidTearStateAt(const Shot& shot, const ShotLiquidTear& tear, double frame) {
-  TearLiquidSimulation simulation(tear.input);
-  const double t = liquidTearSeconds(shot, tear, frame);
-  simulation.advanceTo(t);
-  return simulation.state(t);
+SurfacePoint liquidTearPathPoint(const ShotLiquidTear& tear, double arcLength, size_t* piece) {
+  return liquidTearPathPoint(tear.path, arcLength, piece);
 }
 
-SurfacePoint liquidTearPathPoint(const ShotLiquidTear& tear, double arcLength, size_t* piece) {
-  const FlowPath& path = tear.path;
+SurfacePoint liquidTearPathPoint(const FlowPath& path, double arcLength, size_t* piece) {
   const size_t pieces = path.points.size() - 1;
   // The last piece starting at or before s (the last one for s beyond the end).
   const auto after = std::upper_bound(path.arcLength.begin(), path.arcLength.end(), float(arcLength));
@@ -52,15 +48,15 @@ Vec3 skinNormal(const TriangleMesh& skin, const SurfacePoint& p) {
   return triangleNormal(skin, p.triangle);
 }
 
-// The bead's mesh on this skin: at its point of the path, long axis along the path's piece there.
-TriangleMesh beadMesh(const ShotLiquidTear& tear, const BeadView& bead, const TriangleMesh& skin) {
+// The bead's mesh on this skin: at its point of the course, long axis along the course's piece there.
+TriangleMesh beadMesh(const ShotLiquidTear& tear, const FlowPath& course, const BeadView& bead, const TriangleMesh& skin) {
   size_t piece = 0;
-  const SurfacePoint at = liquidTearPathPoint(tear, bead.arcLength, &piece);
-  const SurfacePoint pieceEnd{tear.path.points[piece].triangle, tear.path.arrival[piece + 1]};
+  const SurfacePoint at = liquidTearPathPoint(course, bead.arcLength, &piece);
+  const SurfacePoint pieceEnd{course.points[piece].triangle, course.arrival[piece + 1]};
   LiquidBeadPlacement placement;
   placement.contact = surfacePosition(skin, at);
   placement.normal = skinNormal(skin, at);
-  placement.along = surfacePosition(skin, pieceEnd) - surfacePosition(skin, tear.path.points[piece]);
+  placement.along = surfacePosition(skin, pieceEnd) - surfacePosition(skin, course.points[piece]);
   if (std::abs(placement.along.normalized().dot(placement.normal)) > 0.999f) placement.along = tear.gravity;
   placement.halfLength = float(bead.shape.halfLength);
   placement.halfWidth = float(bead.shape.halfWidth);
@@ -92,9 +88,9 @@ void swellLiquidTearMeniscus(const Shot& shot, const ShotLiquidTear& tear, doubl
   if (tear.meniscusPrimitive < 0 || tear.input.path.empty() || posed.empty()) return;
   TriangleMesh& strip = posed[size_t(tear.meniscusPrimitive)];
   if (strip.vertexCount() != tear.meniscusWeights.size()) return;  // not the strip resolved at load
-  TearLiquidSimulation simulation(tear.input);
-  simulation.advanceTo(liquidTearSeconds(shot, tear, frame));
-  swellMeniscus(strip, tear.meniscusWeights, simulation.meniscusVolume());
+  LiquidTearRun run(shot, tear);
+  run.advanceTo(frame);
+  swellMeniscus(strip, tear.meniscusWeights, run.simulation().meniscusVolume());
 }
 
 void addLiquidTear(const Shot& shot, const ShotLiquidTear& tear, double shutterOpen, double shutterClose,
@@ -102,25 +98,30 @@ void addLiquidTear(const Shot& shot, const ShotLiquidTear& tear, double shutterO
                    Frame& frame) {
   if (tear.input.path.empty() || openSkin.empty()) return;  // not resolved (not from loadShot)
   const bool blurred = shutterClose > shutterOpen;
-  // One simulation, advanced to shutter open and then to close: bitwise what two fresh ones give.
-  TearLiquidSimulation simulation(tear.input);
-  const double tOpen = liquidTearSeconds(shot, tear, shutterOpen), tClose = liquidTearSeconds(shot, tear, shutterClose);
-  simulation.advanceTo(tOpen);
-  const TearLiquidState open = simulation.state(tOpen);
+  // One run, advanced to shutter open and then to close: bitwise what two fresh ones give. Each
+  // state lies on its own course (the same one unless the shutter spans a change of course).
+  LiquidTearRun run(shot, tear);
+  run.advanceTo(shutterOpen);
+  const TearLiquidState open = run.state(shutterOpen);
+  const std::shared_ptr<const LiquidTearCourse> openCourse = run.coursePointer();
   const size_t primitive = tear.sourcePoint.primitive;
   // The wet trail, as at shutter open (it dries over seconds: no blur).
-  if (skinMesh >= 0) addLiquidTearFilm(tear, simulation, openSkin[primitive], frame.meshes[size_t(skinMesh)].wetness);
+  if (skinMesh >= 0)
+    addLiquidTearFilm(tear, openCourse->path, run.simulation(), openSkin[primitive],
+                      frame.meshes[size_t(skinMesh)].wetness);
   TearLiquidState close = open;
+  std::shared_ptr<const LiquidTearCourse> closeCourse = openCourse;
   if (blurred) {
-    simulation.advanceTo(tClose);
-    close = simulation.state(tClose);
+    run.advanceTo(shutterClose);
+    close = run.state(shutterClose);
+    closeCourse = run.coursePointer();
   }
   const TriangleMesh& skinOpen = openSkin[primitive];
   const TriangleMesh& skinClose = closeSkin && !closeSkin->empty() ? (*closeSkin)[primitive] : skinOpen;
   for (const BeadView& bead : open.beads) {
-    MeshInstance instance(beadMesh(tear, bead, skinOpen), tear.materialId);
+    MeshInstance instance(beadMesh(tear, openCourse->path, bead, skinOpen), tear.materialId);
     if (const BeadView* later = blurred ? findById(close.beads, bead.id, &BeadView::id) : nullptr) {
-      TriangleMesh atClose = beadMesh(tear, *later, skinClose);
+      TriangleMesh atClose = beadMesh(tear, closeCourse->path, *later, skinClose);
       if (atClose.positions != instance.mesh.positions) {
         instance.positionsAtClose = std::move(atClose.positions);
         instance.normalsAtClose = std::move(atClose.normals);

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "asset_pose.hpp"
+#include "lacrima/scenes/liquid_tear.hpp"
 #include "json_source.hpp"  // childPointer
 #include "lacrima/geometry/error.hpp"
 #include "lacrima/geometry/meniscus_swelling.hpp"
@@ -57,6 +58,74 @@ void resolveMeniscus(const ShotAsset& asset, const AssetPose& pose, const Vec3& 
   }
 }
 
+bool sameMotion(const std::vector<Affine3>& a, const std::vector<Affine3>& b) {
+  if (a.size() != b.size()) return false;
+  for (size_t i = 0; i < a.size(); ++i)
+    if (a[i].matrix() != b[i].matrix()) return false;
+  return true;
+}
+
+// True when two poses give bitwise the same posed meshes (every input of posedPrimitive equal).
+bool samePose(const AssetPose& a, const AssetPose& b) {
+  const FacePose &x = a.face, &y = b.face;
+  if (x.blendshapeWeights != y.blendshapeWeights || x.eyeEulerDegrees != y.eyeEulerDegrees) return false;
+  if (x.head.eulerDegrees != y.head.eulerDegrees || x.head.translation != y.head.translation) return false;
+  if (x.jaw.eulerDegrees != y.jaw.eulerDegrees || x.jaw.translation != y.jaw.translation) return false;
+  if (!sameMotion(a.primitiveMotion, b.primitiveMotion) || a.skinJointMatrices.size() != b.skinJointMatrices.size())
+    return false;
+  for (size_t i = 0; i < a.skinJointMatrices.size(); ++i)
+    if (!sameMotion(a.skinJointMatrices[i], b.skinJointMatrices[i])) return false;
+  return true;
+}
+
+// The tear's primitive posed at integer frames, and the smoothed copy the path is traced on: at the
+// reference frame's pose its smoothed skin (kLiquidPathSmoothing, or carried through the trail
+// refinement); at any other pose that plus the deformation since the reference (posed - reference
+// posed, per vertex) low-passed by kLiquidDeformationSmoothing. Taubin's filter is linear, so
+// smoothing the pose is smoothing the reference plus smoothing the deformation; the deformation
+// (a turn of the head, blendshapes) is smooth but for the small bumps a sob's blendshapes make
+// around the eye, which its few iterations remove (unsmoothed, one of them stopped the default
+// shot's path in a pit 2 mm below the source at frames 27 and 49).
+class PosedTearSurface final : public LiquidTearSurface {
+ public:
+  PosedTearSurface(const ShotAsset& asset, size_t primitive, int referenceFrame, const std::vector<Vec3>* carried)
+      : asset_(asset), primitive_(primitive), referencePose_(assetPoseAt(asset, double(referenceFrame))) {
+    const TriangleMesh skin = posedPrimitive(asset_, referencePose_, primitive_);
+    referencePosed_ = skin.positions;
+    referenceSmoothed_ = liquidPathSmoothedSkin(skin, carried).positions;
+    deformationFilter_ = std::make_shared<const TaubinSmoother>(skin, findCoincidentVertices(skin),
+                                                                kLiquidDeformationSmoothing);
+  }
+
+  LiquidTearSkin at(int frame) const override {
+    const AssetPose pose = assetPoseAt(asset_, double(frame));
+    LiquidTearSkin surface{posedPrimitive(asset_, pose, primitive_), TriangleMesh()};
+    surface.smoothed = surface.skin;
+    surface.smoothed.normals.clear();  // the walk uses the triangles' own normals
+    if (samePose(pose, referencePose_)) {
+      surface.smoothed.positions = referenceSmoothed_;
+      return surface;
+    }
+    std::vector<Vec3> deformation(referencePosed_.size());
+    for (size_t v = 0; v < deformation.size(); ++v) deformation[v] = surface.skin.positions[v] - referencePosed_[v];
+    deformation = deformationFilter_->smoothed(deformation);
+    for (size_t v = 0; v < deformation.size(); ++v) surface.smoothed.positions[v] = referenceSmoothed_[v] + deformation[v];
+    return surface;
+  }
+
+  bool sameAsPrevious(int frame) const override {
+    return samePose(assetPoseAt(asset_, double(frame)), assetPoseAt(asset_, double(frame - 1)));
+  }
+
+ private:
+  ShotAsset asset_;  // a copy (its meshes and rig are shared): the surface outlives any Shot copy
+  size_t primitive_;
+  AssetPose referencePose_;
+  std::vector<Vec3> referencePosed_;
+  std::vector<Vec3> referenceSmoothed_;
+  std::shared_ptr<const TaubinSmoother> deformationFilter_;
+};
+
 void resolveTear(const Shot& shot, ShotLiquidTear& tear, std::vector<LiquidTearProblem>& problems) {
   tear.sourcePoint = resolveSurfaceAnchor(shot, tear.asset, tear.part, tear.source);
   const ShotAsset& asset = shot.assets[tear.asset];
@@ -67,18 +136,21 @@ void resolveTear(const Shot& shot, ShotLiquidTear& tear, std::vector<LiquidTearP
   const size_t primitive = tear.sourcePoint.primitive;
   const std::vector<Vec3>* carried =
       primitive < tear.smoothedSkins.size() && tear.smoothedSkins[primitive] ? tear.smoothedSkins[primitive].get() : nullptr;
-  const TriangleMesh smoothed = liquidPathSmoothedSkin(skin, carried);
-  const FlowPath traced = traceLiquidPath(skin, smoothed, sourceOnSkin, tear.gravity, tear.maxLength);
-  tear.smoothedPathLength = traced.length();
-  tear.path = flowPathOnSkin(traced, skin);
-  if (tear.path.points.size() < 2 || tear.path.length() < kMinLiquidPathLength) {
+  // The courses from the simulation's first step on; the path checked and reported is the one the
+  // simulation starts on.
+  tear.courses = liquidTearCourses(shot, tear, tear.sourcePoint, carried);
+  const std::shared_ptr<const LiquidTearCourse> first = tear.courses->at(tear.courses->firstFrame());
+  if (first->path.points.size() < 2 || first->path.length() < kMinLiquidPathLength) {
     problems.push_back({childPointer(tear.pointer, "source"),
                         fmt::format("the flow path from the source runs only {:.3g} m over part '{}' before it stops "
                                     "({}); a liquid tear needs at least {} m (move the source or change gravity)",
-                                    tear.path.length(), tear.part, flowStopName(tear.path.stop), kMinLiquidPathLength)});
+                                    first->path.length(), tear.part, flowStopName(first->path.stop), kMinLiquidPathLength)});
     return;
   }
-  tear.input.path = liquidPathFromFlowPath(tear.path, skin);
+  const std::shared_ptr<const LiquidTearCourse> atShotStart = tear.courses->at(shot.frameStart);
+  tear.smoothedPathLength = atShotStart->smoothedLength;
+  tear.path = atShotStart->path;
+  tear.input.path = atShotStart->samples;
   tear.input.gravityDirection = tear.gravity.cast<double>();
   tear.input.params = tear.params;
   try {
@@ -91,6 +163,19 @@ void resolveTear(const Shot& shot, ShotLiquidTear& tear, std::vector<LiquidTearP
 }  // namespace
 
 FlowPath flowPathOnSkin(const FlowPath& traced, const TriangleMesh& skin) { return onSkin(traced, skin); }
+
+std::shared_ptr<const LiquidTearSurface> posedTearSurface(const ShotAsset& asset, size_t primitive, int referenceFrame,
+                                                          const std::vector<Vec3>* carried) {
+  return std::make_shared<const PosedTearSurface>(asset, primitive, referenceFrame, carried);
+}
+
+std::shared_ptr<const LiquidTearCourses> liquidTearCourses(const Shot& shot, const ShotLiquidTear& tear,
+                                                           const ShotSurfacePoint& source, const std::vector<Vec3>* carried) {
+  return std::make_shared<const LiquidTearCourses>(
+      posedTearSurface(shot.assets[tear.asset], source.primitive, shot.frameStart, carried),
+      SurfacePoint{source.triangle, source.barycentric}, tear.gravity, tear.maxLength,
+      liquidTearCourseFrame(shot, tear, 0.0));
+}
 
 TriangleMesh liquidPathSmoothedSkin(const TriangleMesh& skin, const std::vector<Vec3>* carried) {
   if (!carried || carried->size() != skin.vertexCount())

@@ -1,9 +1,11 @@
 #pragma once
-// Resolving a shot's liquid tears at load: the source on the skin and the flow path from it, traced
-// once on a smoothed copy of the skin posed at the shot's first frame (see ShotLiquidTear).
+// Resolving a shot's liquid tears at load: the source on the skin, and the courses of the flow path
+// from it (LiquidTearCourses), traced on a smoothed copy of the skin posed at each frame (see
+// ShotLiquidTear).
 #include <vector>
 
 #include "lacrima/geometry/mesh_smoothing.hpp"
+#include "lacrima/scenes/liquid_tear.hpp"  // kMinLiquidCourseLength
 #include "lacrima/scenes/shot_model.hpp"
 #include "shedding_tear_resolve.hpp"  // SheddingTearProblem: a problem at a JSON pointer
 
@@ -15,8 +17,14 @@ using LiquidTearProblem = SheddingTearProblem;
 // edges wide where an exact steepest-descent walk stops after millimetres; 20 Taubin pairs
 // remove them and keep the cheek's and nose's shape.
 inline constexpr TaubinOptions kLiquidPathSmoothing{20, 0.5f, -0.53f};  // the defaults, spelled out
+// The low-pass filter applied to the skin's deformation since the shot's first frame before it is
+// added to that frame's smoothed skin (posedTearSurface): a few pairs remove the small bumps of
+// blendshapes (measured on the default shot's 444 000-triangle face: ~8 ms a frame; without it the
+// course stopped in a pit 2 mm below the source at frames 27 and 49, with 1 pair it did not; 1, 2
+// and 3 pairs give the same 76.8 mm course at frame 72; 2 are taken for margin).
+inline constexpr TaubinOptions kLiquidDeformationSmoothing{2, 0.5f, -0.53f};
 // A path shorter than this cannot carry a bead (about one bead length): reported at load.
-inline constexpr float kMinLiquidPathLength = 0.002f;  // metres
+inline constexpr float kMinLiquidPathLength = kMinLiquidCourseLength;
 
 // The ICT face's strip of tear fluid along the lid margins (the lacrimal tear meniscus).
 inline constexpr const char* kLacrimalFluidPart = "M_LacrimalFluid";
@@ -40,8 +48,20 @@ TriangleMesh liquidPathSmoothedSkin(const TriangleMesh& skin, const std::vector<
 FlowPath traceLiquidPath(const TriangleMesh& skin, const TriangleMesh& smoothed, const SurfacePoint& start,
                          const Vec3& gravity, float maxLength);
 
-// For every liquid tear: the source resolved on the first frame's skin, the path traced and the
-// simulation input built and checked. Returns the problems found (a path too short to carry a bead,
+// The tear's primitive of `asset` posed at integer frames, with the smoothed copy its path is traced
+// on: at the pose of `referenceFrame` the skin smoothed by kLiquidPathSmoothing (or `carried`, see
+// liquidPathSmoothedSkin), at any other pose that plus the deformation since then smoothed by
+// kLiquidDeformationSmoothing. Keeps a copy of the asset (its meshes and rig shared).
+std::shared_ptr<const LiquidTearSurface> posedTearSurface(const ShotAsset& asset, size_t primitive, int referenceFrame,
+                                                          const std::vector<Vec3>* carried);
+// The tear's courses from the simulation's first step on, from `source` over the asset as it is now
+// (posedTearSurface with the shot's first frame as reference; `carried` as above).
+std::shared_ptr<const LiquidTearCourses> liquidTearCourses(const Shot& shot, const ShotLiquidTear& tear,
+                                                           const ShotSurfacePoint& source, const std::vector<Vec3>* carried);
+
+// For every liquid tear: the source resolved on the first frame's skin, its courses set up (the
+// course the simulation starts on traced and checked, the first frame's one kept as tear.path)
+// and the simulation input built and checked. Returns the problems found (a path too short to carry a bead,
 // parameters the simulation refuses).
 std::vector<LiquidTearProblem> resolveLiquidTears(Shot& shot);
 

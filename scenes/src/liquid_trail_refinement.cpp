@@ -25,7 +25,29 @@ float distanceToSegment(const Vec3& p, const Vec3& a, const Vec3& b) {
   return (p - (a + f * d)).norm();
 }
 
-// Traces the tear's path on the first frame's smoothed skin and refines the triangles along it.
+// The triangles along every course of the tear over the shot's frames (its path traced again on
+// each frame's pose, LiquidTearCourses), the courses placed on the first frame's skin: the film
+// lies along all of them. None when the tear has no path (resolveLiquidTears reports it).
+std::vector<bool> trailAlongCourses(const Shot& shot, const ShotLiquidTear& tear, const ShotSurfacePoint& source,
+                                    const TriangleMesh& skin, const std::vector<Vec3>& smoothed,
+                                    const std::vector<uint32_t>& weldMap) {
+  const std::shared_ptr<const LiquidTearCourses> courses = liquidTearCourses(shot, tear, source, &smoothed);
+  std::vector<bool> selected;
+  const LiquidTearCourse* previous = nullptr;
+  for (int frame = courses->firstFrame(); frame <= shot.frameEnd; ++frame) {
+    const std::shared_ptr<const LiquidTearCourse> course = courses->at(frame);
+    if (course.get() == previous || course->path.points.size() < 2) continue;
+    previous = course.get();
+    std::vector<Vec3> onFirstFrame;
+    for (const SurfacePoint& p : course->path.points) onFirstFrame.push_back(surfacePosition(skin, p));
+    const std::vector<bool> along = trailTriangles(skin, weldMap, onFirstFrame, kTrailRefinementMargin);
+    if (selected.empty()) selected.assign(along.size(), false);
+    for (size_t t = 0; t < along.size(); ++t) selected[t] = selected[t] || along[t];
+  }
+  return selected;
+}
+
+// Refines the triangles along the tear's courses on the first frame's smoothed skin.
 void refineAlongTear(const Shot& shot, const ShotLiquidTear& tear, GltfAsset& gltf, SmoothedSkins& smoothedSkins) {
   const ShotSurfacePoint source = resolveSurfaceAnchor(shot, tear.asset, tear.part, tear.source);
   const ShotAsset& asset = shot.assets[tear.asset];
@@ -34,12 +56,9 @@ void refineAlongTear(const Shot& shot, const ShotLiquidTear& tear, GltfAsset& gl
   const auto known = smoothedSkins.find(key);
   const TriangleMesh smoothed =
       liquidPathSmoothedSkin(skin, known == smoothedSkins.end() ? nullptr : &known->second);
-  const FlowPath path = flowPathOnSkin(
-      traceLiquidPath(skin, smoothed, SurfacePoint{source.triangle, source.barycentric}, tear.gravity, tear.maxLength),
-      skin);
-  if (path.points.size() < 2) return;  // resolveLiquidTears reports it
   GltfPrimitive& primitive = gltf.primitives[source.primitive];
-  const std::vector<bool> selected = trailTriangles(skin, primitive.weldMap, path.positions, kTrailRefinementMargin);
+  const std::vector<bool> selected = trailAlongCourses(shot, tear, source, skin, smoothed.positions, primitive.weldMap);
+  if (selected.empty()) return;
   std::vector<Vec3> carried = smoothed.positions;  // refined with the same stencils as the primitive
   primitive = refinePrimitive(primitive, selected, RefinementScheme::Linear, tear.trailRefinementLevels, &carried);
   smoothedSkins[key] = std::move(carried);

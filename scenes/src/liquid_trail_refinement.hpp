@@ -11,9 +11,9 @@ namespace lacrima::shotfile {
 // bead base widths from the path (1.5 half widths, liquid_tear_film.hpp), ~2.6 mm for an 8 uL bead.
 inline constexpr float kTrailRefinementMargin = 0.003f;  // metres
 
-// For every liquid tear with trailRefinement > 0, in file order: its path is traced as
-// resolveLiquidTears would (on the first frame's smoothed skin), the triangles along it are refined
-// linearly, replacing ShotAsset::gltf (the rig rebuilt, as refineDetailRegions does), and every
+// For every liquid tear with trailRefinement > 0, in file order: its courses over the shot's
+// frames are traced as resolveLiquidTears would (on each frame's smoothed skin), the triangles along
+// any of them (placed on the first frame's skin) are refined linearly, replacing ShotAsset::gltf (the rig rebuilt, as refineDetailRegions does), and every
 // liquid tear on that primitive keeps the smoothed skin carried over to the refined vertices
 // (ShotLiquidTear::smoothedSkin): a linear split of the smoothed skin is the same surface, so the
 // path traced again at resolve time runs where it ran before the refinement. Run after

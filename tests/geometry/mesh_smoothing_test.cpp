@@ -117,3 +117,32 @@ TEST(TaubinSmoothing, RejectsBadOptionsAndMaps) {
 
 }  // namespace
 }  // namespace lacrima
+
+namespace lacrima {
+namespace {
+
+// The smoother set up once (a liquid tear smooths every frame's deformation with it) is the same
+// filter: bitwise taubinSmoothed on the mesh's own positions, and linear (smoothing a sum is the
+// sum of the smoothings, up to rounding), which is what lets a pose be smoothed as a reference plus
+// its deformation.
+TEST(TaubinSmoother, IsTaubinSmoothedAndLinear) {
+  const TriangleMesh bumpy = heightFieldMesh(16, 1.0f, [](float x, float y) { return plane(x, y) + 0.02f * noise(x, y); });
+  const TaubinOptions options{5, 0.5f, -0.53f};
+  const TaubinSmoother smoother(bumpy, identityWeld(bumpy), options);
+  EXPECT_EQ(smoother.smoothed(bumpy.positions), taubinSmoothed(bumpy, identityWeld(bumpy), options).positions);
+  std::vector<Vec3> deformation(bumpy.positions.size()), sum(bumpy.positions.size());
+  for (size_t v = 0; v < deformation.size(); ++v) {
+    deformation[v] = Vec3(0.01f * noise(bumpy.positions[v].y(), bumpy.positions[v].x()), 0.0f, 0.003f);
+    sum[v] = bumpy.positions[v] + deformation[v];
+  }
+  const std::vector<Vec3> whole = smoother.smoothed(sum), base = smoother.smoothed(bumpy.positions),
+                          part = smoother.smoothed(deformation);
+  double worst = 0.0;
+  for (size_t v = 0; v < whole.size(); ++v) worst = std::max(worst, double((whole[v] - base[v] - part[v]).norm()));
+  EXPECT_LT(worst, 1e-6);
+  EXPECT_GT(double((part[40] - deformation[40]).norm()), 1e-4);  // the deformation itself was smoothed
+  EXPECT_THROW(smoother.smoothed(std::vector<Vec3>(3, Vec3::Zero())), InputError);
+}
+
+}  // namespace
+}  // namespace lacrima

@@ -194,6 +194,30 @@ TEST(LiquidTearShot, AFrameAloneEqualsTheSameFrameInASequence) {
   }
 }
 
+// The same on a face that moves (its course re-traced every frame): the bead meshes and the wet
+// trail of frame 60 built alone are bitwise those built after other frames of a sequence.
+TEST(LiquidTearShot, AFrameAloneEqualsTheSameFrameInASequenceWhenTheFaceMoves) {
+  const std::string roll = R"("rig": {"preset": "ict"}, "joints": {"head.rz": {"keys": [[1, 0], [60, 6]]}})";
+  const Shot shot = loadTearShot("liquid_moving_alone.json", kTear, "", roll);
+  const Frame alone = buildFrame(shot, 60);
+  const Shot sequenceShot = loadTearShot("liquid_moving_sequence.json", kTear, "", roll);
+  for (int f : {12, 27, 50}) buildFrame(sequenceShot, f);
+  const Frame inSequence = buildFrame(sequenceShot, 60);
+  EXPECT_GT(shot.liquidTears[0].courses->tracedCount(), 55u);  // the head's roll moved the course every frame
+  const auto a = beadsOf(alone), b = beadsOf(inSequence);
+  ASSERT_FALSE(a.empty());
+  ASSERT_EQ(a.size(), b.size());
+  for (size_t i = 0; i < a.size(); ++i) EXPECT_EQ(a[i]->mesh.positions, b[i]->mesh.positions);
+  const std::string name = "face/" + shot.assets[0].gltf->primitives[shot.liquidTears[0].sourcePoint.primitive].name;
+  const auto wetness = [&name](const Frame& frame) {
+    for (const MeshInstance& m : frame.meshes)
+      if (m.mesh.name == name) return m.wetness;
+    return std::vector<float>();
+  };
+  EXPECT_FALSE(wetness(alone).empty());
+  EXPECT_EQ(wetness(alone), wetness(inSequence));
+}
+
 TEST(LiquidTearShot, SimulationCostPerFrameIsSmall) {
   const Shot shot = loadTearShot("liquid_cost.json");
   const auto start = std::chrono::steady_clock::now();
@@ -217,17 +241,21 @@ TEST(LiquidTearShot, BeadsFollowTheDeformingFace) {
   const auto moving = beadsOf(buildFrame(shot, f)), resting = beadsOf(buildFrame(still, f));
   ASSERT_EQ(moving.size(), resting.size());
   ASSERT_FALSE(moving.empty());
-  // The liquid state does not depend on the face's motion (the path is traced once) ...
+  // The smile re-routes the course (it is traced again on each frame's pose), so the liquid state
+  // differs a little ...
   const TearLiquidState a = liquidTearStateAt(shot, shot.liquidTears[0], f),
                         b = liquidTearStateAt(still, still.liquidTears[0], f);
   ASSERT_EQ(a.beads.size(), b.beads.size());
-  EXPECT_EQ(a.beads[0].arcLength, b.beads[0].arcLength);
-  // ... but the bead sits at its path point on the smiling skin, which moved.
+  const FlowPath& course = liquidTearCourseAt(shot, shot.liquidTears[0], f)->path;
+  const FlowPath& stillCourse = liquidTearCourseAt(still, still.liquidTears[0], f)->path;
+  EXPECT_EQ(stillCourse.positions, still.liquidTears[0].path.positions);  // the still face keeps its first course
+  EXPECT_NE(course.positions, shot.liquidTears[0].path.positions);
+  EXPECT_NEAR(a.beads[0].arcLength, b.beads[0].arcLength, 0.005);
+  // ... and the bead sits at its course point on the smiling skin, which moved.
   const Frame frame = buildFrame(shot, f);
   const TriangleMesh& skin = skinOf(frame, shot);
-  const Vec3 onSkin = surfacePosition(skin, liquidTearPathPoint(shot.liquidTears[0], a.beads[0].arcLength));
-  const Vec3 onStill = surfacePosition(skinOf(buildFrame(still, f), still),
-                                       liquidTearPathPoint(still.liquidTears[0], b.beads[0].arcLength));
+  const Vec3 onSkin = surfacePosition(skin, liquidTearPathPoint(course, a.beads[0].arcLength));
+  const Vec3 onStill = surfacePosition(skinOf(buildFrame(still, f), still), liquidTearPathPoint(stillCourse, b.beads[0].arcLength));
   EXPECT_GT((onSkin - onStill).norm(), 5e-4f);
   const TriangleMesh& bead = beadsOf(frame)[0]->mesh;
   Vec3 centre = Vec3::Zero();

@@ -32,4 +32,22 @@ struct TaubinOptions {
 TriangleMesh taubinSmoothed(const TriangleMesh& mesh, const std::vector<uint32_t>& weldMap,
                             const TaubinOptions& options = {});
 
+// The same filter set up once for a topology and applied to many position sets (e.g. every frame
+// of an animation, or a displacement field): building the welded neighbour graph costs far more
+// than a few iterations. smoothed(mesh.positions) is bitwise taubinSmoothed(mesh, ...).positions.
+class TaubinSmoother {
+ public:
+  // Throws InputError as taubinSmoothed does.
+  TaubinSmoother(const TriangleMesh& mesh, const std::vector<uint32_t>& weldMap, const TaubinOptions& options = {});
+  // One value per vertex of the topology (InputError for another count); the copies of a welded
+  // vertex all get its representative's result.
+  std::vector<Vec3> smoothed(const std::vector<Vec3>& positions) const;
+
+ private:
+  std::vector<uint32_t> weldMap_;
+  TaubinOptions options_;
+  std::vector<std::vector<uint32_t>> neighbours_;  // per representative vertex, sorted, unique
+  std::vector<bool> boundary_;                     // an edge of a single triangle
+};
+
 }  // namespace lacrima

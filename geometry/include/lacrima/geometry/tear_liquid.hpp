@@ -46,12 +46,18 @@
 //   draw a pendant drop's neck).
 // * A bead whose volume falls below minBeadVolume has run out: its rest joins the film (Dried).
 //
-// Limits: one path, fixed in time (the caller recomputes the path; the state does not follow a
-// moving path); the path is assumed to follow the steepest descent, so the whole along-surface
+// * Re-routing (reroute): when the surface moves, the caller traces the path again and moves the
+//   liquid onto the new course by an arc-length map (FlowPathTransfer: each bead and each trail
+//   cell's film to the nearest point of the new course of the material point it sat on); volumes
+//   are kept, film is spread over the image of its cell (it thins where the course stretched).
+//
+// Limits: one path at a time (beads do not leave it or branch; re-routing moves beads and film
+// sideways onto the new course, with no motion of their own across it); the path is assumed to follow the steepest descent, so the whole along-surface
 // gravity g sin(alpha) drives the bead along it; beads do not evaporate (minutes for uL drops);
 // bead shape is reported for tilt min(alpha, 90 degrees); no drag on falling drops and only their
 // n = 2 shape mode; the film is uniform across the width of the widest bead that wetted each cell.
 #include <cstdint>
+#include <functional>
 #include <numbers>
 #include <vector>
 
@@ -203,6 +209,17 @@ class TearLiquidSimulation {
   void advanceTo(double t);
   void step();
 
+  // Moves the liquid onto a new course: the flow path traced again on the surface as it has moved
+  // (issue 5, "recomputed as the face moves"). newArcLength(s) is the arc length on `path` of the
+  // surface's material point at arc length s of the current path (e.g. FlowPathTransfer). Every
+  // bead goes to the image of its arc length (a bead at the source stays at 0); a hanging bead
+  // that is no longer at a drip site is released (it slides on if the new slope carries it);
+  // each trail cell's film is spread over the image of the cell (volume and width kept, so the
+  // film thins where the course stretched). Volumes are unchanged. Throws InputError for an
+  // invalid path (the simulation is then unchanged).
+  void reroute(std::vector<LiquidPathSample> path, const std::function<double(double)>& newArcLength);
+  const std::vector<LiquidPathSample>& path() const { return input_.path; }
+
   double time() const { return double(steps_) * input_.params.timeStep; }
   long long steps() const { return steps_; }
   double meniscusVolume() const { return meniscus_; }
@@ -236,6 +253,7 @@ class TearLiquidSimulation {
   void detachIfHeavy(Bead& bead, int id);
   double detachAmplitude(const Bead& bead) const;
   void dryFilm();
+  void rerouteFilm(const std::function<double(double)>& image, double newLength);
   double hangingLimit(double volume) const;
   double baseRadius(double volume) const;
   double retentionScale(double wetness) const;
@@ -265,6 +283,10 @@ class TearLiquidSimulation {
   std::vector<int> cellDepositor_;  // bead that last laid film there (-1: none)
   std::vector<double> cellOwnVolume_;  // the part of the film that bead laid
 };
+
+// The number of steps of `timeStep` a simulation takes to reach t (advanceTo(t) takes this many).
+// Throws InputError for a t that is not finite and >= 0.
+long long tearLiquidStepsTo(double t, double timeStep);
 
 // The state at time t of a fresh simulation (simulated from t = 0).
 TearLiquidState simulateTearLiquid(const TearLiquidInput& input, double t);

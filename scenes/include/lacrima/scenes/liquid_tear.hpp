@@ -1,7 +1,13 @@
 #pragma once
 // The liquid state of a shot's liquid tears at a frame (ShotLiquidTear; docs/shot-format.md
 // "Liquid tears"), for buildFrame and for anyone who needs more than the meshes (the trail's film
-// thickness along the path, for a wet-skin material).
+// thickness along the path, for a wet-skin material), and the flow path's course as it follows
+// the moving face.
+#include <memory>
+#include <mutex>
+#include <vector>
+
+#include "lacrima/geometry/flow_path_transfer.hpp"
 #include "lacrima/geometry/surface_point.hpp"
 #include "lacrima/geometry/tear_liquid.hpp"
 #include "lacrima/scenes/shot_model.hpp"
@@ -12,13 +18,122 @@ namespace lacrima {
 // shot's first frame or an earlier wellStart), clamped at 0.
 double liquidTearSeconds(const Shot& shot, const ShotLiquidTear& tear, double frame);
 
-// The tear's liquid state at a (fractional) frame, simulated from its simulationStartFrame: beads,
-// falling drops and the film thickness at each path sample (sampleFilmThickness[i] at the
-// path's point i, tear.path.points[i]). The same for a frame alone or within a sequence.
-TearLiquidState liquidTearStateAt(const Shot& shot, const ShotLiquidTear& tear, double frame);
+// ---- The course: the flow path re-traced as the face moves (issue 5) ---------------------------
 
-// The point at arc length s along the tear's path (clamped to the path), in the triangles of its
-// primitive, and the piece it lies on (piece i runs from path.points[i] to path.arrival[i + 1]).
+// The surface a tear runs over, posed at integer frames: the real skin of its primitive and the
+// smoothed copy (same topology) the flow path is traced on.
+struct LiquidTearSkin {
+  TriangleMesh skin;
+  TriangleMesh smoothed;
+};
+class LiquidTearSurface {
+ public:
+  virtual ~LiquidTearSurface() = default;
+  // The surface at integer frame k.
+  virtual LiquidTearSkin at(int frame) const = 0;
+  // True when the surface at frame k is bitwise the one at k - 1 (its course is kept, not traced).
+  virtual bool sameAsPrevious(int frame) const = 0;
+};
+
+// The flow path as traced at one integer frame's pose.
+struct LiquidTearCourse {
+  int frame = 0;                          // the frame whose pose it was traced on
+  FlowPath path;                          // positions and arc lengths on that frame's real skin
+  float smoothedLength = 0.0f;            // its length on the smoothed skin it was traced on
+  std::vector<LiquidPathSample> samples;  // the simulation's path (liquidPathFromFlowPath)
+  // From the course before it (traced at an earlier frame) to this one, measured on this frame's
+  // skin; null for the first course.
+  std::shared_ptr<const FlowPathTransfer> fromPrevious;
+};
+
+// The courses of one tear, one per integer frame from `firstFrame` on, traced on demand in frame
+// order and kept (a per-process cache: a sequence pays each course once; a frame built alone
+// traces the courses up to it and gets bitwise the same ones). A frame whose surface is the
+// previous frame's keeps that course (the same object); so does a frame whose re-traced path is
+// shorter than kMinLiquidCourseLength or than kMinLiquidCourseLengthRatio times the course it
+// would replace: the liquid stays on the last course that could carry it. (On the default shot
+// the blink squeezes a pit 2.6 mm below the inner eye corner for frames 35-37; re-routed there,
+// every bead on the cheek would be pulled back up to it, while a tear on the cheek follows the
+// cheek, not the lid.) Thread-safe.
+class LiquidTearCourses {
+ public:
+  // `start`: the source on the surface's triangles; gravity and maxLength as in ShotLiquidTear.
+  // Traces the first course (InputError from the surface or the walk propagate).
+  LiquidTearCourses(std::shared_ptr<const LiquidTearSurface> surface, const SurfacePoint& start, const Vec3& gravity,
+                    float maxLength, int firstFrame);
+
+  int firstFrame() const { return firstFrame_; }
+  const LiquidTearSurface& surface() const { return *surface_; }
+  // The course at integer frame k (frames before firstFrame get the first course).
+  std::shared_ptr<const LiquidTearCourse> at(int frame) const;
+  // Paths traced so far (one per frame whose pose changed, taken or not), for cost reports.
+  size_t tracedCount() const;
+
+ private:
+  std::shared_ptr<const LiquidTearCourse> trace(int frame, const LiquidTearSkin& surface,
+                                                const LiquidTearCourse* previous) const;
+
+  std::shared_ptr<const LiquidTearSurface> surface_;
+  SurfacePoint start_;
+  Vec3 gravity_;
+  float maxLength_;
+  int firstFrame_;
+  TriangleAdjacency adjacency_;  // the topology's, built once
+  mutable std::mutex mutex_;
+  mutable std::vector<std::shared_ptr<const LiquidTearCourse>> courses_;  // frame firstFrame_ + i
+  mutable size_t traced_ = 0;
+};
+
+// A re-traced course shorter than this keeps the previous one (about one bead length) ...
+inline constexpr float kMinLiquidCourseLength = 0.002f;  // metres
+// ... and so does one shorter than this fraction of the previous one (a modelling choice: on the
+// default shot successive courses differ in length by under 3%, a pit opening near the source cuts
+// one to 3%).
+inline constexpr float kMinLiquidCourseLengthRatio = 0.5f;
+
+// The frame whose course the simulation step starting at `seconds` runs on: the frame nearest
+// to that time (each course serves the half frame either side of its frame).
+int liquidTearCourseFrame(const Shot& shot, const ShotLiquidTear& tear, double seconds);
+
+// The tear's simulation with its course following the pose: from t = 0 on the first course, each
+// step on the course of its nearest frame, the liquid carried across at each change
+// (TearLiquidSimulation::reroute with the course's FlowPathTransfer). A pure function of the
+// time reached: a run advanced to t in one go or in several gives bitwise the same state.
+class LiquidTearRun {
+ public:
+  LiquidTearRun(const Shot& shot, const ShotLiquidTear& tear);
+  // Simulates to the (fractional) frame, which may not be earlier than the last one (InputError).
+  void advanceTo(double frame);
+  TearLiquidState state(double frame) const;  // after advanceTo(frame)
+  const TearLiquidSimulation& simulation() const { return simulation_; }
+  const LiquidTearCourse& course() const { return *course_; }
+  const std::shared_ptr<const LiquidTearCourse>& coursePointer() const { return course_; }
+  // Course changes that moved the liquid so far.
+  int reroutes() const { return reroutes_; }
+
+ private:
+  void followCourse(int frame);
+
+  const Shot& shot_;
+  const ShotLiquidTear& tear_;
+  std::shared_ptr<const LiquidTearCourse> course_;
+  int courseFrame_ = 0;
+  TearLiquidSimulation simulation_;
+  int reroutes_ = 0;
+};
+
+// The tear's liquid state at a (fractional) frame, simulated from its simulationStartFrame: beads,
+// falling drops and the film thickness at each sample of the course at that frame
+// (sampleFilmThickness[i] at liquidTearCourseAt(...)->path.points[i]). The same for a frame alone
+// or within a sequence.
+TearLiquidState liquidTearStateAt(const Shot& shot, const ShotLiquidTear& tear, double frame);
+// The course the state at that frame lies on (its arc lengths are this course's).
+std::shared_ptr<const LiquidTearCourse> liquidTearCourseAt(const Shot& shot, const ShotLiquidTear& tear, double frame);
+
+// The point at arc length s along a course (clamped to it), in the triangles of its primitive,
+// and the piece it lies on (piece i runs from path.points[i] to path.arrival[i + 1]).
+SurfacePoint liquidTearPathPoint(const FlowPath& path, double arcLength, size_t* piece = nullptr);
+// The same on the course of the shot's first frame (tear.path).
 SurfacePoint liquidTearPathPoint(const ShotLiquidTear& tear, double arcLength, size_t* piece = nullptr);
 
 }  // namespace lacrima

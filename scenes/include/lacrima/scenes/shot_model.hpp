@@ -225,13 +225,16 @@ struct ShotSheddingTear {
   double secondsAt(double frame, double fps) const { return (frame - startFrame) / fps; }
 };
 
+class LiquidTearCourses;  // liquid_tear.hpp
+
 // A liquid tear (issue 5; docs/shot-format.md "Liquid tears"): tear fluid welling at a skin point
 // and running down the flow path from it as beads that stick, slide, leave a drying film, hang and
-// drip (TearLiquidSimulation, tear_liquid.hpp). The path is traced once at load, on a smoothed copy
-// of the part posed at the shot's first frame, and kept in surface coordinates, so its beads ride
-// the posed skin of every frame. The liquid state at a frame is simulated from simulationStartFrame
-// (t = 0: the shot's first frame, or the welling start when that is earlier, so a shot can begin
-// mid-cry) to t = (frame - simulationStartFrame) / fps seconds: a pure function of the frame.
+// drip (TearLiquidSimulation, tear_liquid.hpp). The path is traced again at every integer frame on a
+// smoothed copy of the part posed there (its courses, LiquidTearCourses in liquid_tear.hpp), kept in
+// surface coordinates, so its beads ride the posed skin and turn with the face. The liquid state at
+// a frame is simulated from simulationStartFrame (t = 0: the shot's first frame, or the welling
+// start when that is earlier, so a shot can begin mid-cry) to t = (frame - simulationStartFrame) /
+// fps seconds, each step on the course of its nearest frame: a pure function of the frame.
 struct ShotLiquidTear {
   size_t asset = 0;              // index into Shot::assets
   std::string part;              // the part the source lies on and the path runs over
@@ -250,17 +253,21 @@ struct ShotLiquidTear {
   uint32_t materialId = 0;
   std::string pointer;           // the tear in the shot file ("/tears/0"), for problems found resolving it
   // Resolved by loadShot (liquid_tear_resolve.hpp): the source on the first frame's skin, the flow
-  // path from it (points in the primitive's triangles, piece i from points[i] to arrival[i + 1] in
-  // triangle points[i].triangle, arc lengths on the first frame's real skin), and its stop reason.
+  // path from it at the first frame (its course there: points in the primitive's triangles, piece i
+  // from points[i] to arrival[i + 1] in triangle points[i].triangle, arc lengths on the first
+  // frame's real skin), and its stop reason.
   ShotSurfacePoint sourcePoint;
   FlowPath path;
   float smoothedPathLength = 0.0f;  // the path's length on the smoothed skin it was traced on
-  TearLiquidInput input;            // the simulation's input (path samples on the first frame's skin)
+  TearLiquidInput input;            // the simulation's input (path samples of the first frame's course)
   // The lacrimal fluid strip that swells with the meniscus (meniscus_swelling.hpp): the asset's
   // primitive of part kLacrimalFluidPart nearest the source when within reach (-1: none), and the
   // falloff weight of each of its vertices (from the source, on the first frame's pose).
   int meniscusPrimitive = -1;
   std::vector<float> meniscusWeights;
+  // The flow path's courses as the face moves, one per integer frame from the simulation's start
+  // (liquid_tear.hpp); set by loadShot. `path` and `input.path` are its course at frameStart.
+  std::shared_ptr<const LiquidTearCourses> courses;
 };
 
 // Animated skin detail (seed 004 section 3; docs/shot-format.md "details"): a sum of basic

@@ -1,0 +1,139 @@
+// The courses of a liquid tear's flow path as the face moves, and the simulation run that follows
+// them; see lacrima/scenes/liquid_tear.hpp.
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "lacrima/geometry/error.hpp"
+#include "lacrima/scenes/liquid_tear.hpp"
+#include "liquid_tear_resolve.hpp"  // flowPathOnSkin
+
+namespace lacrima {
+
+namespace {
+
+bool carriesLiquid(const LiquidTearCourse& course) {
+  return course.path.points.size() >= 2 && course.path.length() >= kMinLiquidCourseLength;
+}
+
+TearLiquidInput inputOn(const ShotLiquidTear& tear, const LiquidTearCourse& course) {
+  TearLiquidInput input = tear.input;
+  input.path = course.samples;
+  return input;
+}
+
+const LiquidTearCourses& coursesOf(const ShotLiquidTear& tear) {
+  if (!tear.courses) throw InputError(fmt::format("liquid tear {}: its flow path was not resolved (load the shot with loadShot)", tear.pointer));
+  return *tear.courses;
+}
+
+}  // namespace
+
+// ---- Courses --------------------------------------------------------------------------------------
+
+LiquidTearCourses::LiquidTearCourses(std::shared_ptr<const LiquidTearSurface> surface, const SurfacePoint& start,
+                                     const Vec3& gravity, float maxLength, int firstFrame)
+    : surface_(std::move(surface)), start_(start), gravity_(gravity), maxLength_(maxLength), firstFrame_(firstFrame) {
+  const LiquidTearSkin first = surface_->at(firstFrame);
+  adjacency_ = buildTriangleAdjacency(first.skin, findCoincidentVertices(first.skin));
+  courses_.push_back(trace(firstFrame, first, nullptr));
+  traced_ = 1;
+}
+
+std::shared_ptr<const LiquidTearCourse> LiquidTearCourses::trace(int frame, const LiquidTearSkin& surface,
+                                                                 const LiquidTearCourse* previous) const {
+  FlowPathOptions options;
+  options.maxLength = maxLength_;
+  const FlowPath traced = traceFlowPath(surface.smoothed, adjacency_, start_, gravity_, options);
+  auto course = std::make_shared<LiquidTearCourse>();
+  course->frame = frame;
+  course->smoothedLength = traced.length();
+  course->path = shotfile::flowPathOnSkin(traced, surface.skin);
+  if (!carriesLiquid(*course)) return course;
+  course->samples = liquidPathFromFlowPath(course->path, surface.skin);
+  if (previous && carriesLiquid(*previous))
+    course->fromPrevious = std::make_shared<FlowPathTransfer>(previous->path, course->path, surface.skin);
+  return course;
+}
+
+std::shared_ptr<const LiquidTearCourse> LiquidTearCourses::at(int frame) const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (frame <= firstFrame_) return courses_.front();
+  // Courses are traced in frame order: each one's transfer starts from the one before it.
+  while (courses_.size() <= size_t(frame - firstFrame_)) {
+    const int next = firstFrame_ + int(courses_.size());
+    const std::shared_ptr<const LiquidTearCourse> previous = courses_.back();
+    if (surface_->sameAsPrevious(next)) {
+      courses_.push_back(previous);
+      continue;
+    }
+    const std::shared_ptr<const LiquidTearCourse> course = trace(next, surface_->at(next), previous.get());
+    ++traced_;
+    const bool runsOn = course->path.length() >= kMinLiquidCourseLengthRatio * previous->path.length();
+    courses_.push_back(carriesLiquid(*course) && course->fromPrevious && runsOn ? course : previous);
+  }
+  return courses_[size_t(frame - firstFrame_)];
+}
+
+size_t LiquidTearCourses::tracedCount() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return traced_;
+}
+
+int liquidTearCourseFrame(const Shot& shot, const ShotLiquidTear& tear, double seconds) {
+  return int(std::floor(tear.simulationStartFrame + seconds * shot.fps + 0.5 + 1e-9));
+}
+
+// ---- The run --------------------------------------------------------------------------------------
+
+LiquidTearRun::LiquidTearRun(const Shot& shot, const ShotLiquidTear& tear)
+    : shot_(shot),
+      tear_(tear),
+      course_(coursesOf(tear).at(liquidTearCourseFrame(shot, tear, 0.0))),
+      courseFrame_(liquidTearCourseFrame(shot, tear, 0.0)),
+      simulation_(inputOn(tear, *course_)) {}
+
+void LiquidTearRun::followCourse(int frame) {
+  while (courseFrame_ < frame) {
+    ++courseFrame_;
+    std::shared_ptr<const LiquidTearCourse> next = tear_.courses->at(courseFrame_);
+    if (next == course_) continue;
+    if (!next->fromPrevious) throw InputError(fmt::format("liquid tear {}: the course at frame {} has no transfer", tear_.pointer, courseFrame_));
+    const FlowPathTransfer& transfer = *next->fromPrevious;  // from course_, the course of the frame before
+    simulation_.reroute(next->samples, [&transfer](double s) { return transfer(s); });
+    course_ = std::move(next);
+    ++reroutes_;
+  }
+}
+
+void LiquidTearRun::advanceTo(double frame) {
+  const double t = liquidTearSeconds(shot_, tear_, frame);
+  const double dt = tear_.input.params.timeStep;
+  const long long target = tearLiquidStepsTo(t, dt);
+  if (target < simulation_.steps()) simulation_.advanceTo(t);  // refuses to go back, with its message
+  // Each step runs on the course of its start time's nearest frame; the state reached is left on
+  // the course of the next step, so a run stopped here and continued equals one that did not stop.
+  while (simulation_.steps() < target) {
+    followCourse(liquidTearCourseFrame(shot_, tear_, double(simulation_.steps()) * dt));
+    simulation_.step();
+  }
+  followCourse(liquidTearCourseFrame(shot_, tear_, double(simulation_.steps()) * dt));
+}
+
+TearLiquidState LiquidTearRun::state(double frame) const { return simulation_.state(liquidTearSeconds(shot_, tear_, frame)); }
+
+// ---- Queries --------------------------------------------------------------------------------------
+
+TearLiquidState liquidTearStateAt(const Shot& shot, const ShotLiquidTear& tear, double frame) {
+  LiquidTearRun run(shot, tear);
+  run.advanceTo(frame);
+  return run.state(frame);
+}
+
+std::shared_ptr<const LiquidTearCourse> liquidTearCourseAt(const Shot& shot, const ShotLiquidTear& tear, double frame) {
+  const double dt = tear.input.params.timeStep;
+  const long long steps = tearLiquidStepsTo(liquidTearSeconds(shot, tear, frame), dt);
+  return coursesOf(tear).at(liquidTearCourseFrame(shot, tear, double(steps) * dt));
+}
+
+}  // namespace lacrima
