@@ -20,11 +20,16 @@ float waterHemisphericalReflectance() {
   return value;
 }
 
-// The multiple-reflection sum of Lekner & Dorf 1988 (wet_skin.hpp), fbar = Fbar(n).
-Color wetAlbedoFromFbar(const Color& albedo, float n, float fbar) {
-  // Fraction of diffuse light in the film sent back to the base by the film's top (TIR included).
-  const float p = 1.0f - (1.0f - fbar) / (n * n);
+// Lekner & Dorf's multiple-reflection sum (wet_skin.hpp): a base of albedo a under a top that
+// sends back the fraction p of the light the base scatters up.
+Color trappedAlbedo(const Color& albedo, float p) {
   return (albedo * (1.0f - p)).cwiseQuotient(Color::Ones() - p * albedo);
+}
+
+// Its inverse: the albedo a0 the base has without that top, from the albedo a seen through it
+// (a = a0 (1 - p) / (1 - p a0) solved for a0).
+Color untrappedAlbedo(const Color& albedo, float p) {
+  return albedo.cwiseQuotient(Color::Constant(1.0f - p) + p * albedo);
 }
 
 }  // namespace
@@ -34,8 +39,18 @@ float wetFilmCoverage(float filmThickness) {
   return 1.0f - std::exp(-filmThickness / kWetFilmCoverageThickness);
 }
 
+float diffuseTrapping(float outerFbar, float n) { return 1.0f - (1.0f - outerFbar) / (n * n); }
+
 Color leknerDorfWetAlbedo(const Color& albedo, float n) {
-  return wetAlbedoFromFbar(albedo, n, fresnelHemisphericalReflectance(n));
+  return trappedAlbedo(albedo, diffuseTrapping(fresnelHemisphericalReflectance(n), n));
+}
+
+Color wetSkinBaseAlbedo(const Color& dryAlbedo, float skinIor, float filmIor, float filmFbar) {
+  // The skin's own surface traps with its index; the film's top with the water's Fresnel but the
+  // skin's escape cone (Snell's invariant across parallel layers; wet_skin.hpp).
+  const float skinFbar = fresnelHemisphericalReflectance(skinIor);
+  const float filmTrapping = diffuseTrapping(filmFbar, std::max(skinIor, filmIor));
+  return trappedAlbedo(untrappedAlbedo(dryAlbedo, diffuseTrapping(skinFbar, skinIor)), filmTrapping);
 }
 
 WetSkinBsdf::WetSkinBsdf(const SkinBsdf& skin, float coverage)
@@ -45,7 +60,8 @@ WetSkinBsdf::WetSkinBsdf(const SkinBsdf& skin, float coverage)
       wetAlbedo_(Color::Zero()),
       underNorm_(kInvPi / (1.0f - waterHemisphericalReflectance())) {
   if (coverage_ == 0.0f) return;  // the skin alone: nothing wet to set up
-  wetAlbedo_ = wetAlbedoFromFbar(skin.albedo(), kWaterIor, waterHemisphericalReflectance());
+  wetAlbedo_ = wetSkinBaseAlbedo(skin.albedo(), skin.ior(), kWaterIor, waterHemisphericalReflectance())
+                   .cwiseMin(kMaxSkinAlbedo);  // the skin's energy margin (wet_skin.hpp, Energy)
 }
 
 Vec3 WetSkinBsdf::perturbShadingNormal(const Vec3& position, const Vec3& ns, const Vec3& ng) const {

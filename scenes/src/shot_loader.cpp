@@ -1145,7 +1145,7 @@ class ShotReader {
     ObjectReader o(c_, v, pointer,
                    {"type", "asset", "part", "source", "material", "gravity", "maxLength", "rate", "wellStart",
                     "wellEnd", "overflowVolume", "spillVolume", "contactAngles", "filmThickness", "dryingTime",
-                    "hangingContactRadius", "viscosity", "trailRefinement"});
+                    "hangingContactRadius", "overhangAngle", "viscosity", "trailRefinement"});
     if (!o.ok()) return;
     const size_t before = c_.errorCount();
     ShotLiquidTear tear;
@@ -1176,6 +1176,8 @@ class ShotReader {
     if (auto x = o.number("filmThickness", Range::above(0))) p.filmThickness = *x;
     if (auto x = o.number("dryingTime", Range::above(0))) p.filmDryingTime = *x;
     if (auto x = o.number("hangingContactRadius", Range::atLeast(0))) p.hangingContactRadius = *x;
+    // A drip site: the skin's normal within this angle of gravity (degrees; TearLiquidParams::overhangCosine).
+    if (auto x = o.number("overhangAngle", Range::open(0, 180))) p.overhangCosine = std::cos(*x * std::numbers::pi / 180.0);
     if (auto x = o.number("viscosity", Range::above(0))) p.viscosity = *x;
     if (auto x = o.integer("trailRefinement", Range::closed(0, 3))) tear.trailRefinementLevels = int(*x);
     readMaterialMember(o, tear.material, tear.materialId);

@@ -1,7 +1,7 @@
 // Wet skin in renders (MeshInstance::wetness, materials/wet_skin.hpp): a skin floor under a tear
-// film is darker and more saturated under uniform light, by what the BSDF's albedo predicts, and
-// its highlight of a small light at the mirror direction is brighter; a zero or empty film, or a
-// film on a non-skin material, renders bitwise as dry.
+// film keeps its colour under uniform light (skin's own surface already traps its diffuse light),
+// by what the BSDF's albedo predicts, and its highlight of a small light at the mirror direction
+// is brighter; a zero or empty film, or a film on a non-skin material, renders bitwise as dry.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -47,12 +47,13 @@ float peakRed(const Film& film) {
 // Directional albedo of a BSDF at wo (2000x720 quadrature cells).
 Color directionalAlbedo(const Bsdf& bsdf, const Vec3& wo) { return test::directionalAlbedo(bsdf, wo, 2000, 720); }
 
-TEST(WetSkinRender, WetFloorIsDarkerAndMoreSaturatedAsTheBsdfPredicts) {
+TEST(WetSkinRender, WetFloorKeepsItsColourUnderUniformLightAsTheBsdfPredicts) {
   const Color dry = meanColor(renderFrame(skinFloor(-1.0f))), wet = meanColor(renderFrame(skinFloor(kTrailFilm)));
   std::printf("[ wet ] mean under uniform light: dry %.4f %.4f %.4f, wet %.4f %.4f %.4f\n", dry.x(), dry.y(), dry.z(),
               wet.x(), wet.y(), wet.z());
-  EXPECT_TRUE((wet < 0.85f * dry).all()) << "wet " << wet.transpose() << " dry " << dry.transpose();
-  EXPECT_LT(wet.z() / wet.x(), dry.z() / dry.x()) << "saturation";
+  // Lekner & Dorf's film over a base meeting air would make it ~30% darker (a brownish stain);
+  // over skin the diffuse stays within 1% and the film's reflection replaces the skin's.
+  EXPECT_TRUE(((wet - dry).cwiseAbs() < 0.05f * dry).all()) << "wet " << wet.transpose() << " dry " << dry.transpose();
   // Under a uniform environment of radiance 1 the floor shows its directional albedo (the view
   // spans 10 degrees around 45: a 2% tolerance).
   const SkinBsdf skin{SkinParams{}};

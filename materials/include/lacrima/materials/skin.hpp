@@ -64,6 +64,7 @@ class SkinBsdf final : public Bsdf {
   float pdf(const Vec3& wo, const Vec3& wi) const override;
   std::optional<BsdfSample> sample(const Vec3& wo, float uLobe, const Vec2& u) const override;
   Color albedo() const override { return albedo_; }  // clamped base albedo
+  float ior() const { return ior_; }                  // index of the surface layer
 
   // Pores: ns tilted by the pore field at the world position (pores.hpp); ns when poreDepth is 0.
   Vec3 perturbShadingNormal(const Vec3& position, const Vec3& ns, const Vec3& ng) const override;

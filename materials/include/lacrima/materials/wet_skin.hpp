@@ -10,24 +10,40 @@
 //   f_wet = f_coat + f_under
 //   f_coat  = D(wm) G2(wo, wi) Fw(wo.wm) / (4 cos_o cos_i): the film's air-water interface, a GGX
 //             lobe (Walter et al. 2007 eq. 20) with roughness kWetCoatRoughness = 0.1 (alpha 0.01;
-//             modelling choice: the film drapes over the skin's relief, so it is sharp but not a
-//             mirror, and a finite lobe keeps light sampling and MIS working), water index 1.337.
+//             modelling choice: a water surface is optically smooth, the film drapes over the
+//             skin's relief, so it is sharp but not a mirror, and a finite lobe keeps light
+//             sampling and MIS working; alpha 0.04 spread the trail's glints into a dull sheen
+//             on the default shot), water index 1.337.
 //   f_under = a_wet / pi * (1 - Fw(cos_o)) (1 - Fw(cos_i)) / (1 - Fwbar): the skin's diffuse base
 //             seen through the film, the same reciprocal Fresnel-weighted form as the skin's base
 //             (skin.hpp) with the water interface's Fresnel Fw and hemispherical reflectance Fwbar.
-//   a_wet   = a (1 - p) / (1 - a p), p = 1 - (1 - Fwbar) / n^2, per colour channel: Lekner & Dorf
-//             1988, "Why some things are darker when wet", Applied Optics 27(7):1278, the sum
-//             over repeated reflections between base and film of their Fig. 1 (absorbed fraction
-//             1 - a per hit on the base, fraction p of the scattered light sent back by the film's
-//             top, 1 - p = (1 - Fwbar) / n^2 escaping: diffuse light inside the film beyond the
-//             critical angle is totally reflected). Simplified: their second extension (the base
-//             absorbs more against water than against air) is left out, and the film does not
-//             absorb. Darker channels darken relatively more: wet skin is darker and more
-//             saturated. `a` is the skin's base albedo (its diffuse under the lipid interface):
-//             under water that interface is nearly index-matched (1.4 / 1.337, normal reflectance
-//             5e-4), so the skin's own specular lobes and Fresnel loss are dropped under the film.
+//   a_wet   = the skin's base albedo under the film, per colour channel, from Lekner & Dorf 1988,
+//             "Why some things are darker when wet", Applied Optics 27(7):1278: a base of albedo
+//             a0 under a top that sends back the fraction p of the diffuse light it scatters up
+//             looks like a (1 - p) / (1 - a0 p) (the sum over repeated reflections of their
+//             Fig. 1), p = 1 - (1 - Fbar) / n^2 for a flat top of index n over the base (diffuse
+//             light beyond the critical angle is totally reflected; Fbar its reflectance seen
+//             from outside). Their base (sand, cloth, paper) meets air directly when dry, so all
+//             of p darkens it when wet (p ~ 0.47 under water). Skin does not: its own surface
+//             (index n_s = the skin's ior, 1.4) already traps its diffuse light with
+//             p_s = 1 - (1 - Fbar(n_s)) / n_s^2 ~ 0.53, and the albedo `a` a shot gives is the
+//             dry look, so it already holds that trapping: a = a0 (1 - p_s) / (1 - a0 p_s).
+//             Under a flat film the skin-water interface is nearly index-matched (1.4 / 1.337,
+//             normal reflectance 5e-4) and n sin(theta) is the same in every parallel layer, so
+//             the escape cone into air is still the skin's, 1 / n_s^2, with the water's top
+//             Fresnel: p_w = 1 - (1 - Fbar(n_w)) / max(n_s, n_w)^2 (max: a base less dense than
+//             water fills the film's whole cone, Lekner & Dorf's case). So
+//             a_wet = a0 (1 - p_w) / (1 - a0 p_w) with a0 from the dry a: for skin of index 1.4
+//             the diffuse is within 1% of the dry one (p_w ~ p_s), not the ~30% darker a trail
+//             looked with p_w applied to `a` (a brownish stain). Wet skin reads wet by its
+//             sharp water highlight; off the highlight it is a little darker because the skin's
+//             broad specular sheen is gone under the film. Left out: Lekner & Dorf's second
+//             extension (the base absorbs more against water than against air; on skin, the
+//             stratum corneum swelling with water over minutes) and absorption in the film.
+//             The skin's own specular lobes and Fresnel loss are dropped under the film.
 // Energy: E_wet(wo) = E_coat(wo) + a_wet (1 - Fw(cos_o)) <= 1 with the same GGX margin as the skin
-// (skin.hpp, Energy; a_wet < a <= 0.99), and the convex mix with the skin keeps it <= 1.
+// (skin.hpp, Energy; a_wet is clamped to kMaxSkinAlbedo = 0.99 like the skin's albedo), and the
+// convex mix with the skin keeps it <= 1.
 //
 // Sampling: the wet layer with probability c (uLobe rescaled), then within it the coat with
 // probability Fw(cos_o) / (Fw(cos_o) + lum(a_wet)(1 - Fw(cos_o))) clamped to [0.1, 0.9] (visible
@@ -48,9 +64,17 @@ inline constexpr float kWaterIor = 1.337f;                 // the film is tear f
 // Covered fraction c in [0, 1) of skin under a film of thickness d metres (0 for d <= 0).
 float wetFilmCoverage(float filmThickness);
 
-// Lekner & Dorf 1988 (see above): the albedo of a Lambertian base of albedo `albedo` under a
-// non-absorbing film of index n, as seen by light that has entered the film (per channel).
+// p = 1 - (1 - Fbar) / n^2: the fraction of diffuse light inside a medium of index n that a flat
+// top sends back, Fbar the top's hemispherical reflectance seen from outside (Lekner & Dorf 1988).
+float diffuseTrapping(float outerFbar, float n);
+
+// Lekner & Dorf 1988 (see above): the albedo of a Lambertian base of albedo `albedo` in contact
+// with air when dry, under a non-absorbing film of index n (per channel).
 Color leknerDorfWetAlbedo(const Color& albedo, float n);
+
+// a_wet of skin (see above): its dry base albedo seen through its own surface of index skinIor,
+// that surface's trapping undone and the film's (top reflectance filmFbar) applied (per channel).
+Color wetSkinBaseAlbedo(const Color& dryAlbedo, float skinIor, float filmIor, float filmFbar);
 
 class WetSkinBsdf final : public Bsdf {
  public:
