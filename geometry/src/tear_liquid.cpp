@@ -178,8 +178,10 @@ double TearLiquidSimulation::tiltAt(double s) const {
   return std::acos(cosTilt);
 }
 
-bool TearLiquidSimulation::isDripSite(double s) const {
-  return s >= pathLength_ || input_.path[pieceAt(s)].normal.dot(gHat_) > input_.params.overhangCosine;
+bool TearLiquidSimulation::isDripSite(double s) const { return s >= pathLength_ || facesDown(s); }
+
+bool TearLiquidSimulation::facesDown(double s) const {
+  return input_.path[pieceAt(s)].normal.dot(gHat_) > input_.params.overhangCosine;
 }
 
 double TearLiquidSimulation::nextDripSite(double from, double to) const {
@@ -384,7 +386,9 @@ double TearLiquidSimulation::hangingLimit(double volume) const {
 }
 
 void TearLiquidSimulation::detachIfHeavy(Bead& bead, int id) {
-  if (bead.volume <= hangingLimit(bead.volume)) return;
+  // Tate's limit holds a pendant drop: only under an overhang does it let go. A bead stopped at the
+  // path's end on a wall or in a pit pools there (falling, it would pass through the skin below it).
+  if (!facesDown(bead.arcLength) || bead.volume <= hangingLimit(bead.volume)) return;
   FallingDrop drop;
   drop.beadId = id;
   drop.detachTime = time() + input_.params.timeStep;

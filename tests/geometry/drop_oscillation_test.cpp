@@ -18,17 +18,28 @@ namespace {
 
 constexpr double kPiD = std::numbers::pi;
 
-// A vertical wall (normal +z, gravity -y) 2 cm down; with `ceiling` it then turns under into a
-// ceiling (normal -y) for 1 cm. The bead hangs at the path's end (wall) or at the turn (ceiling)
-// and drips.
+// A vertical wall (normal +z, gravity -y) 2 cm down that then turns under, the way a cheek turns
+// under the jaw: without `ceiling` a 1 mm ledge whose normal is kLedgeFromDown from straight down
+// (just inside the default overhang cone of 60 degrees), with `ceiling` a ceiling (normal -y) for
+// 1 cm. The bead hangs where the skin starts to face down (s = 2 cm) and drips; a wall's end
+// alone is no drip site (a pendant drop needs an overhang).
+constexpr double kLedgeFromDown = 59.0 * kPiD / 180.0;
+
 TearLiquidInput dripInput(bool ceiling = false) {
   TearLiquidInput input;
-  const int samples = ceiling ? 30 : 20;
+  const Vec3d ledgeNormal(0.0, -std::cos(kLedgeFromDown), std::sin(kLedgeFromDown));
+  const Vec3d ledgeDown(0.0, -std::sin(kLedgeFromDown), -std::cos(kLedgeFromDown));  // in the ledge, downhill
+  const int samples = ceiling ? 30 : 21;
   for (int i = 0; i <= samples; ++i) {
     LiquidPathSample sample;
     sample.arcLength = i * 1e-3;
-    sample.position = i <= 20 ? Vec3d(0.0, -sample.arcLength, 0.0) : Vec3d(0.0, -0.02, sample.arcLength - 0.02);
-    sample.normal = i < 20 ? Vec3d(Vec3d::UnitZ()) : Vec3d(-Vec3d::UnitY());
+    const Vec3d corner(0.0, -0.02, 0.0);
+    if (i <= 20) {
+      sample.position = Vec3d(0.0, -sample.arcLength, 0.0);
+    } else {
+      sample.position = ceiling ? Vec3d(0.0, -0.02, sample.arcLength - 0.02) : Vec3d(corner + 1e-3 * ledgeDown);
+    }
+    sample.normal = i < 20 ? Vec3d(Vec3d::UnitZ()) : ceiling ? Vec3d(-Vec3d::UnitY()) : ledgeNormal;
     input.path.push_back(sample);
   }
   input.params.source = WellingSource{.rate = 10.0 * kMicrolitre, .overflowVolume = 8.0 * kMicrolitre,
@@ -116,8 +127,11 @@ TEST(DropOscillation, DropLeavesAWallProlateWithTheHangingBeadsStretch) {
   const TearLiquidSimulation simulation = simulatedToFirstDrop(input);
   const FallingDrop drop = simulation.drops()[0];
   const BeadShape shape = hangingShape(input, drop.volume);
-  // On the wall the bead's long axis is along gravity: c = halfLength, a^2 c = halfLength halfWidth height / 2.
-  const double k = shape.halfLength / std::sqrt(shape.halfWidth * 0.5 * shape.height);
+  // On the ledge (drawn as on a wall) the bead's long axis runs down the ledge, sin(59 deg) along
+  // gravity, its height along the normal, cos(59 deg) along gravity: c is the support of its
+  // half-extent ellipsoid along gravity, a^2 c = halfLength halfWidth height / 2.
+  const double polar = std::hypot(shape.halfLength * std::sin(kLedgeFromDown), 0.5 * shape.height * std::cos(kLedgeFromDown));
+  const double k = polar / std::sqrt(shape.halfLength * shape.halfWidth * 0.5 * shape.height / polar);
   std::printf("[ drop ] from a wall: %.2f uL, drawn bead %.3f x %.3f x %.3f mm, k = %.3f\n", drop.volume * 1e9,
               shape.halfLength * 1e3, shape.halfWidth * 1e3, shape.height * 1e3, k);
   EXPECT_GT(k, 1.2);

@@ -268,6 +268,32 @@ TEST(TearLiquid, MeniscusFillsLinearlyThenOverflowsAsABead) {
   EXPECT_GT(state.beads[0].arcLength, 0.0);
 }
 
+// A pendant drop needs an overhang: a bead that reaches the end of a path on a wall pools there,
+// far past Tate's limit, instead of letting go (it would fall through the skin below it); the
+// same path turning under drips.
+TEST(TearLiquid, ABeadAtAWallsEndPoolsAndOnlyAnOverhangDrips) {
+  auto run = [](double overhangFrom) {
+    TearLiquidInput input;
+    input.path = planePath(deg(90.0), 0.03, 1e-3, overhangFrom);
+    input.params.source = WellingSource{.rate = 20.0 * kUl, .overflowVolume = 8.0 * kUl, .spillVolume = 8.0 * kUl};
+    input.params.hangingContactRadius = 0.5e-3;  // Tate's limit about 14 uL
+    TearLiquidSimulation simulation(input);
+    simulation.advanceTo(6.0);
+    return simulation;
+  };
+  const TearLiquidSimulation wall = run(1e30);
+  const double limit = hangingDropMaxVolume(TearFluid{}, 0.5e-3);
+  EXPECT_TRUE(wall.drops().empty());
+  double pooled = 0.0;
+  for (const Bead& bead : wall.beads())
+    if (bead.phase == BeadPhase::Hanging) pooled = std::max(pooled, bead.volume);
+  std::printf("[ liquid ] at a wall's end a bead pools to %.1f uL (Tate's limit %.1f uL)\n", pooled / kUl, limit / kUl);
+  EXPECT_GT(pooled, 2.0 * limit);
+  EXPECT_LT(wall.budget().relativeImbalance(), 1e-6);
+  const TearLiquidSimulation ledge = run(0.02);
+  EXPECT_FALSE(ledge.drops().empty());
+}
+
 TEST(TearLiquid, TrailFilmDriesWithItsTimeConstant) {
   TearLiquidInput input = noWelling(planePath(deg(60.0), 0.1));
   input.params.initialBeads = {{0.003, 10.0 * kUl}};

@@ -30,10 +30,14 @@
 //   is counted as dried.
 // * Coalescence: a bead reaching the bead ahead merges with it (volumes add, momentum kept).
 // * Drip: at the path's end or where the surface faces down (n . g_hat > overhangCosine) the bead
-//   stops and hangs; it detaches when its volume exceeds Tate's limit 2 pi r gamma / (rho g)
+//   stops and hangs; where the surface faces down it detaches when its volume exceeds Tate's limit
+//   2 pi r gamma / (rho g)
 //   (hangingDropMaxVolume; Tate 1864), r = its spherical cap's base radius at the mean contact
 //   angle, or hangingContactRadius when that is positive. The whole bead detaches (modelling
 //   choice: no residual drop) and falls ballistically without drag: x(t) = x0 + g (t - t0)^2 / 2.
+//   At a path end that does not face down (a pit, a wall where the path was cut) the bead pools
+//   and grows: a pendant drop needs an overhang, and a drop let go there would fall through the
+//   skin below it.
 // * Falling drops ring in the Rayleigh/Lamb mode n = 2 about their velocity axis, damped by the
 //   viscosity (drop_oscillation.hpp). The initial amplitude comes from the hanging bead as drawn
 //   (beadShape at min(tilt, 90 degrees), long axis along the path): the ellipsoid of its half
@@ -259,6 +263,8 @@ class TearLiquidSimulation {
   double retentionScale(double wetness) const;
   double wetnessAhead(const Bead& bead, int id) const;
   bool isDripSite(double arcLength) const;
+  // The skin at arcLength faces down (n . g_hat > overhangCosine): a hanging bead can let go there.
+  bool facesDown(double arcLength) const;
   double nextDripSite(double from, double to) const;
   size_t pieceAt(double arcLength) const;
   Vec3d positionAt(double arcLength) const;
