@@ -1,6 +1,7 @@
 #pragma once
 // The process's own memory use, for `lacrima render --report-memory`: a per-frame leak shows as a
-// peak that keeps growing over a long sequence (tools/hardening.sh, docs/hardening.md).
+// peak that keeps growing over a long sequence (tools/hardening.sh, docs/hardening.md); and the
+// heap settings that keep `lacrima render`'s memory flat from frame to frame.
 #include <string>
 
 namespace lacrima::cli {
