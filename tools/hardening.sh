@@ -111,7 +111,7 @@ run_memory() {
   grep -q '"end": 240' "$scratch/shots/tear_closeup_240.json" || { say "memory: cannot extend the shot"; return 1; }
   say "memory: 240 frames of tear_closeup at 64x36, 1 spp"
   "$build/tools/lacrima" render "$scratch/shots/tear_closeup_240.json" --width 64 --height 36 --spp 1 --quiet \
-    --report-memory --out "$scratch/f.####.exr" 2>&1 | grep -E "^frame (1|10|60|120|240): memory|^lacrima:" >&2
+    --report-memory --out "$scratch/f.####.exr" 2>&1 | grep -E "^frame (1|10|60|100|120|240): memory: |^lacrima:" >&2
   rm -rf "$scratch"
 }
 

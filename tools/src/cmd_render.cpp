@@ -97,6 +97,11 @@ void announceStopAfterFrame(int frameNumber) {
                isatty(STDERR_FILENO) ? "\r\033[K" : "", frameNumber);
 }
 
+// "frame 12: memory after render: peak RSS ..." (stage: "" for the line after the whole frame).
+void reportMemory(int frameNumber, const char* stage) {
+  std::fprintf(stderr, "frame %d: memory%s: %s\n", frameNumber, stage, formatMemoryUsage(currentMemoryUsage()).c_str());
+}
+
 // NotWritten: the frame rendered but its file could not be written (disk full, directory gone):
 // the next frames would fail the same way, so the run stops.
 enum class FrameOutcome { Written, Failed, NotWritten, Abandoned };
@@ -105,6 +110,7 @@ enum class FrameOutcome { Written, Failed, NotWritten, Abandoned };
 FrameOutcome renderOneFrame(Renderer& renderer, const RenderOptions& o, const Shot& shot, const std::string& pattern,
                             int frameNumber, int index, int count, const SequenceProgress& sequence, double& seconds) {
   Frame frame = buildFrame(shot, frameNumber);
+  if (o.reportMemory) reportMemory(frameNumber, " after buildFrame");
   applyOverrides(o, frame.settings);
   frame.settings.frameNumber = frameNumber;
   ProgressReporter reporter(frameNumber, index, count, sequence, o.quiet);
@@ -125,6 +131,7 @@ FrameOutcome renderOneFrame(Renderer& renderer, const RenderOptions& o, const Sh
   }
   reporter.finish();
   seconds = stats.seconds;
+  if (o.reportMemory) reportMemory(frameNumber, " after render");
 
   const RenderSettings& s = frame.settings;
   const double nonFiniteFraction = double(stats.nonFiniteSamples) / double(std::max<uint64_t>(1, stats.cameraPaths));
@@ -204,6 +211,7 @@ void printStopHint(const std::vector<int>& frames, const SequenceTally& tally, c
 int runRender(const RenderOptions& o) {
   try {
     const auto start = std::chrono::steady_clock::now();
+    useHeapSettingsForSequences();  // before the shot's allocations
     const Shot shot = loadShot(o.shotPath);
     const std::vector<int> frames = selectShotFrames(o.frames, shot);
     const std::string pattern = resolveOutputPattern(o, shot, frames.size());
@@ -233,8 +241,8 @@ int runRender(const RenderOptions& o) {
         break;
       }
       tally.renderSeconds += seconds;
-      if (o.reportMemory)
-        std::fprintf(stderr, "frame %d: memory: %s\n", frameNumber, formatMemoryUsage(currentMemoryUsage()).c_str());
+      releaseFreeHeapMemory();  // what this frame freed, before the next frame's allocations
+      if (o.reportMemory) reportMemory(frameNumber, "");
       if (outcome == FrameOutcome::Written) {
         tally.complete.push_back(frameNumber);
         ++tally.rendered;

@@ -115,7 +115,9 @@ void addRender(CLI::App& app, RenderOptions& o) {
                    "resolution, spp, seed and max depth; render the others (a truncated or corrupt file again)");
   render->add_flag("--report-memory", o.reportMemory,
                    "After every frame and at the end, print the process's peak and current resident memory "
-                   "(a peak that grows frame after frame is a leak)");
+                   "and malloc's heap in use / held (also after building and after rendering each frame); a "
+                   "peak that grows frame after frame is a leak, a heap held that grows while in use stays "
+                   "flat is fragmentation");
   render->callback([&o] { throw CLI::RuntimeError(runRender(o)); });
 }
 

@@ -3,6 +3,10 @@
 #include <fmt/format.h>
 #include <sys/resource.h>
 
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
+
 #include <algorithm>
 #include <fstream>
 #include <iterator>
@@ -20,6 +24,20 @@ double statusKiloBytes(const std::string& status, const std::string& name) {
   return -1;
 }
 
+// glibc's own initial threshold (M_MMAP_THRESHOLD in mallopt(3)), held fixed.
+constexpr int kMmapThresholdBytes = 128 * 1024;
+constexpr double kBytesPerMiB = 1024.0 * 1024.0;
+
+void addHeapUsage(MemoryUsage& usage) {
+#if defined(__GLIBC__)
+  const struct mallinfo2 info = mallinfo2();
+  usage.heapInUseMiB = double(info.uordblks + info.hblkhd) / kBytesPerMiB;  // allocated chunks + mmapped blocks
+  usage.heapHeldMiB = double(info.arena + info.hblkhd) / kBytesPerMiB;      // from the OS: arenas + mmapped blocks
+#else
+  (void)usage;
+#endif
+}
+
 }  // namespace
 
 MemoryUsage currentMemoryUsage() {
@@ -30,16 +48,33 @@ MemoryUsage currentMemoryUsage() {
   if (peak >= 0) {
     usage.peakMiB = peak / 1024.0;
     usage.residentMiB = std::max(resident, 0.0) / 1024.0;
+    addHeapUsage(usage);
     return usage;
   }
   rusage self{};
   getrusage(RUSAGE_SELF, &self);
   usage.peakMiB = double(self.ru_maxrss) / 1024.0;  // kB on Linux
+  addHeapUsage(usage);
   return usage;
 }
 
+void useHeapSettingsForSequences() {
+#if defined(__GLIBC__)
+  mallopt(M_MMAP_THRESHOLD, kMmapThresholdBytes);  // setting it turns the dynamic threshold off
+#endif
+}
+
+void releaseFreeHeapMemory() {
+#if defined(__GLIBC__)
+  malloc_trim(0);
+#endif
+}
+
 std::string formatMemoryUsage(const MemoryUsage& usage) {
-  return fmt::format("peak RSS {:.1f} MiB, RSS {:.1f} MiB", usage.peakMiB, usage.residentMiB);
+  std::string text = fmt::format("peak RSS {:.1f} MiB, RSS {:.1f} MiB", usage.peakMiB, usage.residentMiB);
+  if (usage.heapInUseMiB >= 0)
+    text += fmt::format(", heap {:.1f} MiB in use of {:.1f} MiB", usage.heapInUseMiB, usage.heapHeldMiB);
+  return text;
 }
 
 }  // namespace lacrima::cli
