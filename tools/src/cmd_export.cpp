@@ -9,6 +9,7 @@
 #include "commands.hpp"
 #include "frame_selection.hpp"
 #include "lacrima/scenes/shot.hpp"
+#include "memory_usage.hpp"
 #include "mesh_export.hpp"
 
 namespace lacrima::cli {
@@ -46,11 +47,15 @@ void exportFrame(const ExportOptions& o, const Shot& shot, const std::string& pa
 int runExport(const ExportOptions& o) {
   try {
     const auto start = std::chrono::steady_clock::now();
+    useHeapSettingsForSequences();  // as render: a long export keeps its memory flat
     const Shot shot = loadShot(o.shotPath);
     const std::vector<int> frames = selectShotFrames(o.frames, shot);
     const std::string pattern = exportPattern(o, shot, frames.size());
     printShotWarnings(shot);
-    for (int frameNumber : frames) exportFrame(o, shot, pattern, frameNumber);
+    for (int frameNumber : frames) {
+      exportFrame(o, shot, pattern, frameNumber);
+      releaseFreeHeapMemory();
+    }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::fprintf(stderr, "lacrima: %zu frame%s exported as %s in %.2f s\n", frames.size(),
                  frames.size() == 1 ? "" : "s", o.format.c_str(), seconds);
