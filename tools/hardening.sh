@@ -48,12 +48,30 @@ configure_and_build() {
 # 2-5x slower; their code still runs in the other tests).
 timing_tests="LiquidTearShot.SimulationCostPerFrameIsSmall"
 
+# One test executable as JOBS gtest shards side by side (the tests are single-threaded and ASan
+# makes them slow; each shard runs every JOBS-th test), each shard's output printed when it ends.
+run_sharded() {
+  local exe="$1" logs pids=() failed=0 i
+  logs="$(mktemp -d)"
+  for ((i = 0; i < jobs; ++i)); do
+    GTEST_TOTAL_SHARDS="$jobs" GTEST_SHARD_INDEX="$i" "$exe" --gtest_brief=1 \
+      --gtest_filter="${GTEST_FILTER:-*}-$timing_tests" > "$logs/$i.log" 2>&1 &
+    pids+=($!)
+  done
+  for ((i = 0; i < jobs; ++i)); do
+    wait "${pids[$i]}" || failed=1
+    cat "$logs/$i.log" >&2
+  done
+  rm -rf "$logs"
+  return "$failed"
+}
+
 run_unit_tests() {
   local folders=(geometry materials scenes fuzz)
   [ "${RENDERER_TESTS:-0}" = 1 ] && folders+=(renderer)
   for folder in "${folders[@]}"; do
-    say "unit tests: $folder"
-    "$tree/tests/lacrima_${folder}_tests" --gtest_brief=1 --gtest_filter="${GTEST_FILTER:-*}-$timing_tests"
+    say "unit tests: $folder ($jobs shards)"
+    run_sharded "$tree/tests/lacrima_${folder}_tests"
   done
 }
 

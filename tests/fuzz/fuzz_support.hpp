@@ -15,15 +15,17 @@ namespace lacrima::fuzz {
 
 inline const std::filesystem::path& workDirectory();
 
-// A fresh folder holding copies of the seed assets: under the test output folder for the
-// replay test, a private temporary one (removed at exit) for a fuzzer run.
+// A fresh folder holding copies of the seed assets, private to this process (tests run side by
+// side under ctest -j and gtest shards), removed at exit: under the test output folder for the
+// replay test, under the temporary folder for a fuzzer run.
 inline std::filesystem::path makeWorkDirectory() {
 #ifdef LACRIMA_TEST_OUTPUT_DIR
-  const std::filesystem::path dir = LACRIMA_TEST_OUTPUT_DIR "/fuzz";
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
+  const std::filesystem::path parent = LACRIMA_TEST_OUTPUT_DIR "/fuzz";
 #else
-  std::string templ = (std::filesystem::temp_directory_path() / "lacrima-fuzz-XXXXXX").string();
+  const std::filesystem::path parent = std::filesystem::temp_directory_path();
+#endif
+  std::filesystem::create_directories(parent);
+  std::string templ = (parent / "lacrima-fuzz-XXXXXX").string();
   if (!mkdtemp(templ.data())) {
     std::perror("lacrima fuzz: mkdtemp");
     std::abort();
@@ -33,16 +35,16 @@ inline std::filesystem::path makeWorkDirectory() {
     std::error_code ignored;
     std::filesystem::remove_all(workDirectory(), ignored);
   });
-#endif
   for (const auto& entry : std::filesystem::directory_iterator(LACRIMA_SOURCE_DIR "/tests/fuzz/seed_assets"))
     std::filesystem::copy_file(entry.path(), dir / entry.path().filename());
   return dir;
 }
 
-// The folder, made on first use and kept for the whole run.
+// The folder, made on first use and kept for the whole run (never destroyed: the atexit handler
+// that removes it runs after static destructors registered later).
 inline const std::filesystem::path& workDirectory() {
-  static const std::filesystem::path dir = makeWorkDirectory();
-  return dir;
+  static const std::filesystem::path* dir = new std::filesystem::path(makeWorkDirectory());
+  return *dir;
 }
 
 // Writes the input to `name` in the work folder and returns its path. `name` must not be one of
