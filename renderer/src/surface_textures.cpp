@@ -10,23 +10,25 @@
 
 namespace lacrima {
 
-struct SurfaceTextures::System {
-  System() : textures(OIIO::TextureSystem::create(false)) {
-    // One-channel (grey) maps read as RGB where three channels are asked for.
-    textures->attribute("gray_to_rgb", 1);
-    // Plain images (PNG, flat EXR) get MIP levels built when first needed; maketx files have theirs.
-    textures->attribute("automip", 1);
-  }
-  ~System() { OIIO::TextureSystem::destroy(textures); }
-  System(const System&) = delete;
-  System& operator=(const System&) = delete;
-
-  OIIO::TextureSystem* textures;  // private to this frame, thread-safe
-};
-
 namespace {
 
 constexpr int kColourChannels = 3;
+
+// One TextureSystem for the process, made when a first frame has maps and never destroyed: its
+// cache of tiles and of the MIP levels built on the fly outlives a frame, so a sequence reads and
+// filters each map once instead of once per frame (about 15 % of a frame's time with a 1024^2
+// albedo map). The cache is bounded by OIIO's max_memory_MB.
+OIIO::TextureSystem& processTextureSystem() {
+  static OIIO::TextureSystem* const textures = [] {
+    OIIO::TextureSystem* made = OIIO::TextureSystem::create(false);  // lacrima's own, not OIIO's shared one
+    // One-channel (grey) maps read as RGB where three channels are asked for.
+    made->attribute("gray_to_rgb", 1);
+    // Plain images (PNG, flat EXR) get MIP levels built when first needed; maketx files have theirs.
+    made->attribute("automip", 1);
+    return made;
+  }();
+  return *textures;
+}
 
 }  // namespace
 
@@ -39,7 +41,7 @@ UvFootprint uvFootprint(float width, const Vec3& dpdu, const Vec3& dpdv) {
 SurfaceTextures::SurfaceTextures(const std::vector<Material>& materials) {
   const bool anyMaps = std::any_of(materials.begin(), materials.end(), [](const Material& m) { return m.textures.any(); });
   if (!anyMaps) return;
-  system_ = std::make_unique<System>();
+  textures_ = &processTextureSystem();
   maps_.resize(materials.size());
   for (size_t id = 0; id < materials.size(); ++id) {
     const Material& m = materials[id];
@@ -57,8 +59,10 @@ SurfaceTextures::~SurfaceTextures() = default;
 // colour: an albedo map, the only kind whose Auto encoding can be sRGB (material.hpp).
 SurfaceTextures::OpenMap SurfaceTextures::open(const Material& material, const TextureMap& map, const char* role,
                                                bool colour) {
-  OIIO::TextureSystem& ts = *system_->textures;
+  OIIO::TextureSystem& ts = *textures_;
   const OIIO::ustring name(map.file.string());
+  // A map rewritten since an earlier frame opened it is read again (its modification time).
+  ts.invalidate(name, false);
   OIIO::TextureSystem::TextureHandle* handle = ts.get_texture_handle(name);
   OIIO::ImageSpec spec;
   if (!handle || !ts.get_imagespec(handle, nullptr, 0, spec))
@@ -74,7 +78,7 @@ SurfaceTextures::OpenMap SurfaceTextures::open(const Material& material, const T
 }
 
 void SurfaceTextures::sample(const OpenMap& map, const Vec2& uv, const UvFootprint& footprint, float* result) const {
-  OIIO::TextureSystem& ts = *system_->textures;
+  OIIO::TextureSystem& ts = *textures_;
   OIIO::TextureOpt options;
   options.swrap = options.twrap = OIIO::TextureOpt::WrapPeriodic;
   options.mipmode = OIIO::TextureOpt::MipModeTrilinear;

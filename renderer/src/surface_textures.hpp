@@ -1,7 +1,8 @@
 #pragma once
 // Texture maps of diffuse and skin materials (MaterialTextures in material.hpp), looked up through
-// one OpenImageIO TextureSystem per frame. The system is created only when some material has a
-// map: frames without textures pay nothing.
+// one OpenImageIO TextureSystem for the whole process (its tile and MIP cache serves every frame
+// of a sequence). The system is created only when some material has a map: frames without
+// textures pay nothing.
 //
 // Lookups are trilinear MIP-map lookups (bilinear in the two levels around the footprint) with an
 // isotropic footprint: the width of the pixel's cone where the path meets the surface, in uv
@@ -14,8 +15,9 @@
 // sRGB albedo maps (TextureEncoding, material.hpp) are decoded after the filtered lookup, per
 // channel with the IEC 61966-2-1 curve: interpolation and MIP averaging act on encoded values,
 // which is exact where the texels under the filter agree and slightly dark where they differ.
+#include <OpenImageIO/oiioversion.h>
+
 #include <cstdint>
-#include <memory>
 #include <optional>
 #include <vector>
 
@@ -23,6 +25,10 @@
 #include "lacrima/materials/material.hpp"
 #include "lacrima/materials/texture_values.hpp"
 
+
+OIIO_NAMESPACE_BEGIN
+class TextureSystem;
+OIIO_NAMESPACE_END
 
 namespace lacrima {
 
@@ -62,8 +68,7 @@ class SurfaceTextures {
   OpenMap open(const Material& material, const TextureMap& map, const char* role, bool colour);
   void sample(const OpenMap& map, const Vec2& uv, const UvFootprint& footprint, float* result) const;
 
-  struct System;  // the OIIO TextureSystem
-  std::unique_ptr<System> system_;
+  OIIO::TextureSystem* textures_ = nullptr;  // the process's (surface_textures.cpp); null without maps
   std::vector<MaterialMaps> maps_;  // per material; empty when no material has maps
 };
 

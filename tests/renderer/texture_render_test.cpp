@@ -8,6 +8,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include <cmath>
+#include <chrono>
 #include <functional>
 
 #include "lacrima/geometry/error.hpp"
@@ -252,6 +253,19 @@ TEST(TextureRender, SkinMapsOfOneRenderBitwiseAsTheUntexturedSkin) {
   std::printf("[ mean free path map ] slab red: %.4f +- %.4f, halved %.4f +- %.4f\n", full.mean, full.standardError,
               half.mean, half.standardError);
   EXPECT_LT(half.mean + 3.0 * (half.standardError + full.standardError), full.mean);
+}
+
+// The texture cache lives for the process (surface_textures.hpp): a map rewritten between two
+// frames is read again, not served from the cache (its modification time is moved on by 2 s:
+// OIIO compares whole seconds).
+TEST(TextureRender, AMapRewrittenBetweenFramesIsReadAgain) {
+  const auto map = writeTexture("rewritten.exr", checker);
+  const Film before = renderFrame(texturedQuad(albedoMap(map)));
+  writeTexture("rewritten.exr", [](int, int) { return kAlbedoA; });
+  std::filesystem::last_write_time(map, std::filesystem::last_write_time(map) + std::chrono::seconds(2));
+  const Film after = renderFrame(texturedQuad(albedoMap(map)));
+  expectColorNear(quadrantMean(before, 0, 0), kAlbedoB, 1e-4f, "the checker's top left");
+  expectColorNear(quadrantMean(after, 0, 0), kAlbedoA, 1e-4f, "the new map's top left");
 }
 
 TEST(TextureRender, TexturedFrameIsIndependentOfTheThreadCount) {
