@@ -33,7 +33,7 @@ void requireNonNegative(double value, const char* what) {
     throw InputError(fmt::format("tear liquid: {} must be finite and >= 0, got {}", what, value));
 }
 
-void validatePath(std::vector<LiquidPathSample>& path) {
+void validatePath(std::vector<LiquidPathSample>& path, size_t regionCount) {
   if (path.size() < 2)
     throw InputError(fmt::format("tear liquid: the path needs at least 2 samples, got {}", path.size()));
   if (path.front().arcLength != 0.0)
@@ -44,6 +44,9 @@ void validatePath(std::vector<LiquidPathSample>& path) {
       throw InputError(fmt::format("tear liquid: path sample {} needs a finite position and a non-zero normal", i));
     sample.normal.normalize();
     requireFinite(sample.arcLength, "path arc length");
+    if (sample.contactAngleRegion < -1 || sample.contactAngleRegion >= int(regionCount))
+      throw InputError(fmt::format("tear liquid: path sample {} names contact angle region {}, there are {}", i,
+                                   sample.contactAngleRegion, regionCount));
     if (i > 0 && !(sample.arcLength > path[i - 1].arcLength))
       throw InputError(fmt::format("tear liquid: path arc length must increase strictly, sample {} has {} after {}", i,
                                    sample.arcLength, path[i - 1].arcLength));
@@ -132,15 +135,18 @@ double VolumeBudget::relativeImbalance() const {
 // ---- Set-up ---------------------------------------------------------------------------------------
 
 TearLiquidSimulation::TearLiquidSimulation(TearLiquidInput input) : input_(std::move(input)) {
-  validatePath(input_.path);
+  validatePath(input_.path, input_.params.contactAngleRegions.size());
   pathLength_ = input_.path.back().arcLength;
   const TearLiquidParams& p = input_.params;
   validateParams(p, pathLength_);
   if (!input_.gravityDirection.allFinite() || !(input_.gravityDirection.norm() > 0.0))
     throw InputError("tear liquid: gravity direction must be finite and non-zero");
   gHat_ = input_.gravityDirection.normalized();
-  sliding_ = SlidingModel{p.fluid, p.contactAngles, p.retentionFactor};
-  widthPerCubeRoot_ = slidingBaseWidth(sliding_, kMicrolitre) / std::cbrt(kMicrolitre);  // validates the model
+  sliding_.push_back(SlidingModel{p.fluid, p.contactAngles, p.retentionFactor});
+  for (const ContactAngleHysteresis& angles : p.contactAngleRegions)
+    sliding_.push_back(SlidingModel{p.fluid, angles, p.retentionFactor});
+  for (const SlidingModel& model : sliding_)  // slidingBaseWidth validates the model
+    widthPerCubeRoot_.push_back(slidingBaseWidth(model, kMicrolitre) / std::cbrt(kMicrolitre));
   const size_t cells = size_t(std::ceil(pathLength_ / p.trailCellLength));
   cellVolume_.assign(std::max<size_t>(cells, 1), 0.0);
   cellWidth_.assign(cellVolume_.size(), 0.0);
@@ -217,32 +223,60 @@ double TearLiquidSimulation::filmWidthAt(double s) const {
 
 // Wetness met by the bead's front contact line (ignoring film the bead laid itself).
 double TearLiquidSimulation::wetnessAhead(const Bead& bead, int id) const {
-  const size_t cell = cellAt(std::min(bead.arcLength + baseRadius(bead.volume), pathLength_));
+  const size_t cell = cellAt(std::min(bead.arcLength + baseRadius(bead.volume, bead.arcLength), pathLength_));
   if (cellDepositor_[cell] == id) return 0.0;
   return std::min(1.0, cellThickness(cell) / input_.params.filmThickness);
 }
 
 // ---- Laws -----------------------------------------------------------------------------------------
 
-double TearLiquidSimulation::baseRadius(double volume) const { return 0.5 * widthPerCubeRoot_ * std::cbrt(volume); }
+size_t TearLiquidSimulation::anglesAt(double s) const {
+  return size_t(input_.path[pieceAt(s)].contactAngleRegion + 1);
+}
+
+const ContactAngleHysteresis& TearLiquidSimulation::contactAnglesAt(double s) const {
+  return sliding_[anglesAt(s)].hysteresis;
+}
+
+double TearLiquidSimulation::baseRadius(double volume, double s) const {
+  return 0.5 * widthPerCubeRoot_[anglesAt(s)] * std::cbrt(volume);
+}
 
 double TearLiquidSimulation::retentionScale(double wetness) const {
   return 1.0 - wetness * (1.0 - input_.params.wetRetentionFactor);
 }
 
 bool TearLiquidSimulation::slides(double volume, double tilt, double wetness) const {
-  if (wetness <= 0.0) return dropSlides(sliding_, volume, tilt);  // exactly the SlidingModel criterion when dry
-  const double drive = sliding_.fluid.density * volume * sliding_.fluid.gravity * std::sin(tilt);
-  return drive > 0.0 && drive >= retentionScale(wetness) * retentionForce(sliding_, volume);
+  return slidesWith(0, volume, tilt, wetness);
+}
+
+bool TearLiquidSimulation::slidesAt(double s, double volume, double tilt, double wetness) const {
+  return slidesWith(anglesAt(s), volume, tilt, wetness);
+}
+
+bool TearLiquidSimulation::slidesWith(size_t angles, double volume, double tilt, double wetness) const {
+  const SlidingModel& model = sliding_[angles];
+  if (wetness <= 0.0) return dropSlides(model, volume, tilt);  // exactly the SlidingModel criterion when dry
+  const double drive = model.fluid.density * volume * model.fluid.gravity * std::sin(tilt);
+  return drive > 0.0 && drive >= retentionScale(wetness) * retentionForce(model, volume);
 }
 
 double TearLiquidSimulation::terminalSpeed(double volume, double tilt, double wetness) const {
+  return terminalSpeedWith(0, volume, tilt, wetness);
+}
+
+double TearLiquidSimulation::terminalSpeedAt(double s, double volume, double tilt, double wetness) const {
+  return terminalSpeedWith(anglesAt(s), volume, tilt, wetness);
+}
+
+double TearLiquidSimulation::terminalSpeedWith(size_t angles, double volume, double tilt, double wetness) const {
   // de Gennes 1985 wedge dissipation: F_drive - F_retention = 3 mu v ln(L/a) w / theta_mean.
   const TearLiquidParams& p = input_.params;
-  const double drive = sliding_.fluid.density * volume * sliding_.fluid.gravity * std::sin(tilt);
-  const double excess = drive - retentionScale(wetness) * retentionForce(sliding_, volume);
-  const double thetaMean = 0.5 * (p.contactAngles.advancing + p.contactAngles.receding);
-  const double width = slidingBaseWidth(sliding_, volume);
+  const SlidingModel& model = sliding_[angles];
+  const double drive = model.fluid.density * volume * model.fluid.gravity * std::sin(tilt);
+  const double excess = drive - retentionScale(wetness) * retentionForce(model, volume);
+  const double thetaMean = 0.5 * (model.hysteresis.advancing + model.hysteresis.receding);
+  const double width = slidingBaseWidth(model, volume);
   return std::max(0.0, thetaMean * excess / (3.0 * p.viscosity * p.contactLineLogRatio * width));
 }
 
@@ -294,13 +328,14 @@ void TearLiquidSimulation::moveBead(Bead& bead, int id) {
   }
   const double tilt = tiltAt(bead.arcLength);
   const double wetness = wetnessAhead(bead, id);
-  if (!slides(bead.volume, tilt, wetness)) {
+  const size_t angles = anglesAt(bead.arcLength);
+  if (!slidesWith(angles, bead.volume, tilt, wetness)) {
     bead.phase = bead.arcLength == 0.0 ? BeadPhase::Welling : BeadPhase::Pinned;
     bead.speed = 0.0;
     return;
   }
   bead.phase = BeadPhase::Sliding;
-  const double target = std::max(terminalSpeed(bead.volume, tilt, wetness), p.minSlideSpeed);
+  const double target = std::max(terminalSpeedWith(angles, bead.volume, tilt, wetness), p.minSlideSpeed);
   bead.speed = target + (bead.speed - target) * std::exp(-p.timeStep / p.speedRelaxationTime);
   const double wanted = bead.arcLength + bead.speed * p.timeStep;
   const double reached = nextDripSite(bead.arcLength, wanted);
@@ -316,13 +351,16 @@ void TearLiquidSimulation::moveBead(Bead& bead, int id) {
 void TearLiquidSimulation::depositTrail(Bead& bead, int id, double distance) {
   if (!(distance > 0.0)) return;
   const TearLiquidParams& p = input_.params;
+  // The width where the bead starts the step holds for all of it (the angles change between pieces).
+  const double widthPerCubeRoot = widthPerCubeRoot_[anglesAt(bead.arcLength)];
   // Exact dry consumption over the distance: d(V^(2/3))/ds = -(2/3) h_f c_w.
   const double remaining = std::cbrt(bead.volume) * std::cbrt(bead.volume) -
-                           (2.0 / 3.0) * p.filmThickness * widthPerCubeRoot_ * distance;
+                           (2.0 / 3.0) * p.filmThickness * widthPerCubeRoot * distance;
   const double dryDeposit = remaining > 0.0 ? bead.volume - remaining * std::sqrt(remaining) : bead.volume;
-  const double width = 2.0 * baseRadius(bead.volume);
+  const double radius = 0.5 * widthPerCubeRoot * std::cbrt(bead.volume);
+  const double width = 2.0 * radius;
   // The film is laid by the rear contact line, a base radius behind the centre.
-  const double rear0 = bead.arcLength - baseRadius(bead.volume);
+  const double rear0 = bead.arcLength - radius;
   const double rear1 = rear0 + distance;
   double deposited = 0.0;
   for (size_t cell = cellAt(rear0); cell < cellVolume_.size(); ++cell) {
@@ -348,8 +386,9 @@ void TearLiquidSimulation::depositTrail(Bead& bead, int id, double distance) {
 }
 
 void TearLiquidSimulation::runOut(Bead& bead, int id) {
-  const size_t cell = cellAt(bead.arcLength - baseRadius(bead.volume));
-  cellWidth_[cell] = std::max(cellWidth_[cell], 2.0 * baseRadius(bead.volume));
+  const double radius = baseRadius(bead.volume, bead.arcLength);
+  const size_t cell = cellAt(bead.arcLength - radius);
+  cellWidth_[cell] = std::max(cellWidth_[cell], 2.0 * radius);
   if (cellDepositor_[cell] != id) cellOwnVolume_[cell] = 0.0;
   cellVolume_[cell] += bead.volume;
   cellOwnVolume_[cell] += bead.volume;
@@ -368,7 +407,8 @@ void TearLiquidSimulation::coalesce() {
   for (size_t k = 0; k + 1 < order.size(); ++k) {
     Bead& behind = beads_[order[k]];
     Bead& ahead = beads_[order[k + 1]];
-    if (ahead.arcLength - behind.arcLength > baseRadius(behind.volume) + baseRadius(ahead.volume)) continue;
+    const double reach = baseRadius(behind.volume, behind.arcLength) + baseRadius(ahead.volume, ahead.arcLength);
+    if (ahead.arcLength - behind.arcLength > reach) continue;
     const double volume = ahead.volume + behind.volume;
     if (ahead.phase != BeadPhase::Hanging)
       ahead.speed = (ahead.volume * ahead.speed + behind.volume * behind.speed) / volume;  // momentum kept
@@ -380,22 +420,23 @@ void TearLiquidSimulation::coalesce() {
   }
 }
 
-double TearLiquidSimulation::hangingLimit(double volume) const {
-  const double radius = input_.params.hangingContactRadius > 0.0 ? input_.params.hangingContactRadius : baseRadius(volume);
-  return hangingDropMaxVolume(sliding_.fluid, radius);  // Tate 1864
+double TearLiquidSimulation::hangingLimit(double volume, double s) const {
+  const double radius =
+      input_.params.hangingContactRadius > 0.0 ? input_.params.hangingContactRadius : baseRadius(volume, s);
+  return hangingDropMaxVolume(input_.params.fluid, radius);  // Tate 1864
 }
 
 void TearLiquidSimulation::detachIfHeavy(Bead& bead, int id) {
   // Tate's limit holds a pendant drop: only under an overhang does it let go. A bead stopped at the
   // path's end on a wall or in a pit pools there (falling, it would pass through the skin below it).
-  if (!facesDown(bead.arcLength) || bead.volume <= hangingLimit(bead.volume)) return;
+  if (!facesDown(bead.arcLength) || bead.volume <= hangingLimit(bead.volume, bead.arcLength)) return;
   FallingDrop drop;
   drop.beadId = id;
   drop.detachTime = time() + input_.params.timeStep;
   // The drop hangs below its contact point: its centre one sphere radius further along gravity.
   drop.detachCentre = positionAt(bead.arcLength) + gHat_ * equivalentRadius(bead.volume);
   drop.volume = bead.volume;
-  drop.oscillation = dropOscillation(sliding_.fluid, input_.params.viscosity, bead.volume, detachAmplitude(bead));
+  drop.oscillation = dropOscillation(input_.params.fluid, input_.params.viscosity, bead.volume, detachAmplitude(bead));
   drops_.push_back(drop);
   detached_ += bead.volume;
   bead.volume = 0.0;
@@ -403,11 +444,11 @@ void TearLiquidSimulation::detachIfHeavy(Bead& bead, int id) {
 }
 
 double TearLiquidSimulation::detachAmplitude(const Bead& bead) const {
-  const ContactAngleHysteresis& angles = input_.params.contactAngles;
+  const ContactAngleHysteresis& angles = contactAnglesAt(bead.arcLength);
   const double thetaMean = 0.5 * (angles.advancing + angles.receding);
   // The hanging bead as state() reports and the frame draws it (tilt clamped to a wall): long axis
   // along the path's piece, footprint across it, height along the normal.
-  const BeadShape shape = beadShape(sliding_.fluid, bead.volume, thetaMean, std::min(tiltAt(bead.arcLength), 0.5 * kPiD));
+  const BeadShape shape = beadShape(input_.params.fluid, bead.volume, thetaMean, std::min(tiltAt(bead.arcLength), 0.5 * kPiD));
   const size_t piece = pieceAt(bead.arcLength);
   const Vec3d normal = input_.path[piece].normal.normalized();
   const Vec3d forward = input_.path[piece + 1].position - input_.path[piece].position;
@@ -437,7 +478,7 @@ void TearLiquidSimulation::dryFilm() {
 // ---- Re-routing -----------------------------------------------------------------------------------
 
 void TearLiquidSimulation::reroute(std::vector<LiquidPathSample> path, const std::function<double(double)>& newArcLength) {
-  validatePath(path);
+  validatePath(path, input_.params.contactAngleRegions.size());
   const double newLength = path.back().arcLength;
   const auto image = [&](double s) {
     const double mapped = newArcLength(s);
@@ -534,7 +575,6 @@ TearLiquidState TearLiquidSimulation::state(double t) const {
   TearLiquidState state;
   state.time = t;
   state.meniscusVolume = meniscus_;
-  const double thetaMean = 0.5 * (p.contactAngles.advancing + p.contactAngles.receding);
   for (size_t id = 0; id < beads_.size(); ++id) {
     const Bead& bead = beads_[id];
     if (!isLive(bead)) continue;
@@ -547,7 +587,9 @@ TearLiquidState TearLiquidSimulation::state(double t) const {
     view.position = positionAt(bead.arcLength);
     view.normal = input_.path[pieceAt(bead.arcLength)].normal;
     view.tilt = tiltAt(bead.arcLength);
-    view.shape = beadShape(p.fluid, bead.volume, thetaMean, std::min(view.tilt, 0.5 * kPiD));
+    const ContactAngleHysteresis& angles = contactAnglesAt(bead.arcLength);
+    view.contactAngle = 0.5 * (angles.advancing + angles.receding);
+    view.shape = beadShape(p.fluid, bead.volume, view.contactAngle, std::min(view.tilt, 0.5 * kPiD));
     state.beads.push_back(view);
   }
   const Vec3d g = gHat_ * p.fluid.gravity;

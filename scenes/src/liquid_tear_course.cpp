@@ -31,9 +31,26 @@ const LiquidTearCourses& coursesOf(const ShotLiquidTear& tear) {
 
 // ---- Courses --------------------------------------------------------------------------------------
 
+void assignContactAngleRegions(std::vector<LiquidPathSample>& samples, const TriangleMesh& skin,
+                               const std::vector<LiquidCourseRegion>& regions) {
+  std::vector<Vec3d> centres;
+  for (const LiquidCourseRegion& region : regions) centres.push_back(surfacePosition(skin, region.center).cast<double>());
+  for (LiquidPathSample& sample : samples) {
+    sample.contactAngleRegion = -1;
+    for (size_t i = 0; i < regions.size() && sample.contactAngleRegion < 0; ++i)
+      if ((sample.position - centres[i]).norm() <= regions[i].radius) sample.contactAngleRegion = int(i);
+  }
+}
+
 LiquidTearCourses::LiquidTearCourses(std::shared_ptr<const LiquidTearSurface> surface, const SurfacePoint& start,
-                                     const Vec3& gravity, float maxLength, int firstFrame)
-    : surface_(std::move(surface)), start_(start), gravity_(gravity), maxLength_(maxLength), firstFrame_(firstFrame) {
+                                     const Vec3& gravity, float maxLength, int firstFrame,
+                                     std::vector<LiquidCourseRegion> regions)
+    : surface_(std::move(surface)),
+      start_(start),
+      gravity_(gravity),
+      maxLength_(maxLength),
+      firstFrame_(firstFrame),
+      regions_(std::move(regions)) {
   const LiquidTearSkin first = surface_->at(firstFrame);
   adjacency_ = buildTriangleAdjacency(first.skin, findCoincidentVertices(first.skin));
   courses_.push_back(trace(firstFrame, first, nullptr));
@@ -51,6 +68,7 @@ std::shared_ptr<const LiquidTearCourse> LiquidTearCourses::trace(int frame, cons
   course->path = shotfile::flowPathOnSkin(traced, surface.skin);
   if (!carriesLiquid(*course)) return course;
   course->samples = liquidPathFromFlowPath(course->path, surface.skin);
+  assignContactAngleRegions(course->samples, surface.skin, regions_);
   if (previous && carriesLiquid(*previous))
     course->fromPrevious = std::make_shared<FlowPathTransfer>(previous->path, course->path, surface.skin);
   return course;

@@ -61,8 +61,7 @@ TriangleMesh beadMesh(const ShotLiquidTear& tear, const FlowPath& course, const 
   placement.halfLength = float(bead.shape.halfLength);
   placement.halfWidth = float(bead.shape.halfWidth);
   placement.height = float(bead.shape.height);
-  const ContactAngleHysteresis& angles = tear.params.contactAngles;
-  placement.contactAngle = float(0.5 * (angles.advancing + angles.receding));  // as BeadView's shape
+  placement.contactAngle = float(bead.contactAngle);  // the local mean angle, as BeadView's shape
   placement.baseOffset = kLiquidBeadBaseOffset;
   return makeLiquidBeadMesh(skin, placement);
 }

@@ -126,8 +126,26 @@ class PosedTearSurface final : public LiquidTearSurface {
   std::shared_ptr<const TaubinSmoother> deformationFilter_;
 };
 
+// Each contact-angle region's centre on the first frame's skin; false (reported) when one lies on
+// another primitive of the part than the source (the course's surface is the source's primitive).
+bool resolveRegions(const Shot& shot, ShotLiquidTear& tear, std::vector<LiquidTearProblem>& problems) {
+  bool ok = true;
+  for (size_t i = 0; i < tear.contactAngleRegions.size(); ++i) {
+    ShotContactAngleRegion& region = tear.contactAngleRegions[i];
+    region.centerPoint = resolveSurfaceAnchor(shot, tear.asset, tear.part, region.center);
+    if (region.centerPoint.primitive == tear.sourcePoint.primitive) continue;
+    problems.push_back({childPointer(childPointer(childPointer(tear.pointer, "contactAngleRegions"), i), "center"),
+                        fmt::format("the region's centre lies on primitive {} of part '{}', the source on primitive {}; "
+                                    "a region must lie on the source's primitive",
+                                    region.centerPoint.primitive, tear.part, tear.sourcePoint.primitive)});
+    ok = false;
+  }
+  return ok;
+}
+
 void resolveTear(const Shot& shot, ShotLiquidTear& tear, std::vector<LiquidTearProblem>& problems) {
   tear.sourcePoint = resolveSurfaceAnchor(shot, tear.asset, tear.part, tear.source);
+  if (!resolveRegions(shot, tear, problems)) return;
   const ShotAsset& asset = shot.assets[tear.asset];
   const AssetPose pose = assetPoseAt(asset, double(shot.frameStart));
   const TriangleMesh skin = posedPrimitive(asset, pose, tear.sourcePoint.primitive);
@@ -138,7 +156,10 @@ void resolveTear(const Shot& shot, ShotLiquidTear& tear, std::vector<LiquidTearP
       primitive < tear.smoothedSkins.size() && tear.smoothedSkins[primitive] ? tear.smoothedSkins[primitive].get() : nullptr;
   // The courses from the simulation's first step on; the path checked and reported is the one the
   // simulation starts on.
-  tear.courses = liquidTearCourses(shot, tear, tear.sourcePoint, carried);
+  std::vector<LiquidCourseRegion> regions;
+  for (const ShotContactAngleRegion& region : tear.contactAngleRegions)
+    regions.push_back({SurfacePoint{region.centerPoint.triangle, region.centerPoint.barycentric}, region.radius});
+  tear.courses = liquidTearCourses(shot, tear, tear.sourcePoint, carried, std::move(regions));
   const std::shared_ptr<const LiquidTearCourse> first = tear.courses->at(tear.courses->firstFrame());
   if (first->path.points.size() < 2 || first->path.length() < kMinLiquidPathLength) {
     problems.push_back({childPointer(tear.pointer, "source"),
@@ -170,11 +191,12 @@ std::shared_ptr<const LiquidTearSurface> posedTearSurface(const ShotAsset& asset
 }
 
 std::shared_ptr<const LiquidTearCourses> liquidTearCourses(const Shot& shot, const ShotLiquidTear& tear,
-                                                           const ShotSurfacePoint& source, const std::vector<Vec3>* carried) {
+                                                           const ShotSurfacePoint& source, const std::vector<Vec3>* carried,
+                                                           std::vector<LiquidCourseRegion> regions) {
   return std::make_shared<const LiquidTearCourses>(
       posedTearSurface(shot.assets[tear.asset], source.primitive, shot.frameStart, carried),
       SurfacePoint{source.triangle, source.barycentric}, tear.gravity, tear.maxLength,
-      liquidTearCourseFrame(shot, tear, 0.0));
+      liquidTearCourseFrame(shot, tear, 0.0), std::move(regions));
 }
 
 TriangleMesh liquidPathSmoothedSkin(const TriangleMesh& skin, const std::vector<Vec3>* carried) {

@@ -55,9 +55,11 @@ FlowPath traceLiquidPath(const TriangleMesh& skin, const TriangleMesh& smoothed,
 std::shared_ptr<const LiquidTearSurface> posedTearSurface(const ShotAsset& asset, size_t primitive, int referenceFrame,
                                                           const std::vector<Vec3>* carried);
 // The tear's courses from the simulation's first step on, from `source` over the asset as it is now
-// (posedTearSurface with the shot's first frame as reference; `carried` as above).
+// (posedTearSurface with the shot's first frame as reference; `carried` as above), with the
+// contact-angle `regions` on the source's primitive (none: every sample has the tear's angles).
 std::shared_ptr<const LiquidTearCourses> liquidTearCourses(const Shot& shot, const ShotLiquidTear& tear,
-                                                           const ShotSurfacePoint& source, const std::vector<Vec3>* carried);
+                                                           const ShotSurfacePoint& source, const std::vector<Vec3>* carried,
+                                                           std::vector<LiquidCourseRegion> regions = {});
 
 // For every liquid tear: the source resolved on the first frame's skin, its courses set up (the
 // course the simulation starts on traced and checked, the first frame's one kept as tear.path)

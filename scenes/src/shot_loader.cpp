@@ -1145,7 +1145,7 @@ class ShotReader {
     ObjectReader o(c_, v, pointer,
                    {"type", "asset", "part", "source", "material", "gravity", "maxLength", "rate", "wellStart",
                     "wellEnd", "overflowVolume", "spillVolume", "contactAngles", "filmThickness", "dryingTime",
-                    "hangingContactRadius", "overhangAngle", "viscosity", "trailRefinement"});
+                    "hangingContactRadius", "overhangAngle", "viscosity", "trailRefinement", "contactAngleRegions"});
     if (!o.ok()) return;
     const size_t before = c_.errorCount();
     ShotLiquidTear tear;
@@ -1173,6 +1173,7 @@ class ShotReader {
         source.spillVolume = *x * kMicrolitre;
     }
     readContactAngles(o, p.contactAngles);
+    if (asset) readContactAngleRegions(o, *asset, tear);
     if (auto x = o.number("filmThickness", Range::above(0))) p.filmThickness = *x;
     if (auto x = o.number("dryingTime", Range::above(0))) p.filmDryingTime = *x;
     if (auto x = o.number("hangingContactRadius", Range::atLeast(0))) p.hangingContactRadius = *x;
@@ -1213,6 +1214,31 @@ class ShotReader {
     }
     angles.advancing = double(x->x()) * std::numbers::pi / 180.0;
     angles.receding = double(x->y()) * std::numbers::pi / 180.0;
+  }
+
+  // "contactAngleRegions": [{"center": anchor on the tear's part, "radius": m > 0, "contactAngles":
+  // [advancing, receding]}, ...]; their angles also go to params.contactAngleRegions (same index).
+  void readContactAngleRegions(ObjectReader& o, size_t asset, ShotLiquidTear& tear) {
+    const Json* v = o.find("contactAngleRegions");
+    if (!v) return;
+    if (!v->is_array()) {
+      o.error("contactAngleRegions", "expected an array of regions {\"center\", \"radius\", \"contactAngles\"}, found " +
+                                         describeValue(*v));
+      return;
+    }
+    for (size_t i = 0; i < v->size(); ++i) {
+      ObjectReader r(c_, (*v)[i], childPointer(o.at("contactAngleRegions"), i), {"center", "radius", "contactAngles"});
+      if (!r.ok()) continue;
+      const size_t before = c_.errorCount();
+      ShotContactAngleRegion region;
+      readAnchor(r, "center", asset, tear.part, region.center);
+      if (auto x = r.number("radius", Range::above(0), true)) region.radius = *x;
+      if (!r.has("contactAngles")) r.missing("contactAngles", "[advancing, receding] in degrees");
+      readContactAngles(r, region.contactAngles);
+      if (c_.errorCount() != before) continue;
+      tear.contactAngleRegions.push_back(region);
+      tear.params.contactAngleRegions.push_back(region.contactAngles);
+    }
   }
 
   // One basic pattern: {"pattern": name, "alpha", "beta", "gamma"} (the object itself for a

@@ -49,6 +49,14 @@
 //   skin and the drop leaves oblate; a real pendant drop would be prolate (the cap model does not
 //   draw a pendant drop's neck).
 // * A bead whose volume falls below minBeadVolume has run out: its rest joins the film (Dried).
+// * Contact angles per skin region (issue 5: skin 55-110 degrees, per region): each path piece
+//   has the contact angles of its start sample (LiquidPathSample::contactAngleRegion, an index
+//   into params.contactAngleRegions; -1: params.contactAngles). Every law above that depends on
+//   the angles (retention and the sliding criterion, terminal speed, base width c_w V^(1/3) and
+//   so the trail's width and consumption, bead shape, hanging contact radius, detach amplitude)
+//   uses the angles of the piece under the bead's centre, for the whole step. The angles change
+//   sharply at a piece boundary (modelling choice: no blend across a region's border); a bead
+//   entering a region of larger hysteresis can pin there, one of smaller hysteresis can set off.
 //
 // * Re-routing (reroute): when the surface moves, the caller traces the path again and moves the
 //   liquid onto the new course by an arc-length map (FlowPathTransfer: each bead and each trail
@@ -79,6 +87,9 @@ struct LiquidPathSample {
   double arcLength = 0.0;
   Vec3d position = Vec3d::Zero();
   Vec3d normal = Vec3d::UnitZ();
+  // The contact angles of the piece from this sample to the next: an index into
+  // TearLiquidParams::contactAngleRegions, or -1 for TearLiquidParams::contactAngles.
+  int contactAngleRegion = -1;
 };
 
 // The samples of a traced flow path on `mesh` (the mesh it was traced on), each with the
@@ -104,6 +115,8 @@ struct InitialBead {
 struct TearLiquidParams {
   TearFluid fluid;
   ContactAngleHysteresis contactAngles{95.0 * std::numbers::pi / 180.0, 65.0 * std::numbers::pi / 180.0};
+  // Contact angles of skin regions, used where a path sample names one (contactAngleRegion).
+  std::vector<ContactAngleHysteresis> contactAngleRegions;
   double retentionFactor = kElSherbiniJacobiRetentionFactor;
   double viscosity = 1.5e-3;           // Pa s: tears 1-3 mPa s at high shear (assumption)
   double contactLineLogRatio = 13.8;   // ln(L/a), macroscopic over molecular cut-off (de Gennes 1985: 10-20)
@@ -168,7 +181,8 @@ struct BeadView {
   Vec3d position = Vec3d::Zero();  // on the path
   Vec3d normal = Vec3d::UnitZ();
   double tilt = 0.0;               // radians from the horizontal, [0, pi]
-  BeadShape shape;                 // beadShape at the mean contact angle and min(tilt, 90 degrees)
+  double contactAngle = 0.0;       // radians: the mean of the contact angles where the bead sits
+  BeadShape shape;                 // beadShape at contactAngle and min(tilt, 90 degrees)
 };
 
 struct DropView {
@@ -242,9 +256,14 @@ class TearLiquidSimulation {
   TearLiquidState state(double t) const;
 
   // Terminal sliding speed (m/s, >= 0, before the minSlideSpeed floor) of a bead of this volume
-  // at this tilt with this wetness in [0, 1].
+  // at this tilt with this wetness in [0, 1], at params.contactAngles (the *At forms: at the
+  // contact angles of arc length s).
   double terminalSpeed(double volume, double tilt, double wetness) const;
   bool slides(double volume, double tilt, double wetness) const;
+  double terminalSpeedAt(double arcLength, double volume, double tilt, double wetness) const;
+  bool slidesAt(double arcLength, double volume, double tilt, double wetness) const;
+  // The contact angles at arc length s (of the piece there).
+  const ContactAngleHysteresis& contactAnglesAt(double arcLength) const;
   // Surface tilt from the horizontal (radians, [0, pi]) and overhang test at arc length s.
   double tiltAt(double arcLength) const;
 
@@ -258,8 +277,12 @@ class TearLiquidSimulation {
   double detachAmplitude(const Bead& bead) const;
   void dryFilm();
   void rerouteFilm(const std::function<double(double)>& image, double newLength);
-  double hangingLimit(double volume) const;
-  double baseRadius(double volume) const;
+  double hangingLimit(double volume, double arcLength) const;
+  double baseRadius(double volume, double arcLength) const;
+  // Index into sliding_ / widthPerCubeRoot_ of the piece at arc length s (0: params.contactAngles).
+  size_t anglesAt(double arcLength) const;
+  double terminalSpeedWith(size_t angles, double volume, double tilt, double wetness) const;
+  bool slidesWith(size_t angles, double volume, double tilt, double wetness) const;
   double retentionScale(double wetness) const;
   double wetnessAhead(const Bead& bead, int id) const;
   bool isDripSite(double arcLength) const;
@@ -273,9 +296,10 @@ class TearLiquidSimulation {
   double cellThickness(size_t cell) const;
 
   TearLiquidInput input_;
-  SlidingModel sliding_;
+  // Per contact angles: [0] params.contactAngles, [1 + i] params.contactAngleRegions[i].
+  std::vector<SlidingModel> sliding_;
+  std::vector<double> widthPerCubeRoot_;  // c_w in w = c_w V^(1/3)
   Vec3d gHat_;
-  double widthPerCubeRoot_ = 0.0;  // c_w in w = c_w V^(1/3)
   double pathLength_ = 0.0;
   long long steps_ = 0;
   double meniscus_ = 0.0;

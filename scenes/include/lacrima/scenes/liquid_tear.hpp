@@ -35,12 +35,27 @@ class LiquidTearSurface {
   virtual bool sameAsPrevious(int frame) const = 0;
 };
 
+// A contact-angle region on the surface a tear runs over (ShotContactAngleRegion resolved): its
+// centre on the surface's triangles and its radius in metres.
+struct LiquidCourseRegion {
+  SurfacePoint center;
+  double radius = 0.0;
+};
+
+// Sets each sample's contactAngleRegion: the index of the first region whose centre (posed on
+// `skin`, the skin the samples lie on) is within its radius of the sample (straight-line
+// distance), -1 for none.
+void assignContactAngleRegions(std::vector<LiquidPathSample>& samples, const TriangleMesh& skin,
+                               const std::vector<LiquidCourseRegion>& regions);
+
 // The flow path as traced at one integer frame's pose.
 struct LiquidTearCourse {
   int frame = 0;                          // the frame whose pose it was traced on
   FlowPath path;                          // positions and arc lengths on that frame's real skin
   float smoothedLength = 0.0f;            // its length on the smoothed skin it was traced on
-  std::vector<LiquidPathSample> samples;  // the simulation's path (liquidPathFromFlowPath)
+  // The simulation's path (liquidPathFromFlowPath), its contact-angle regions assigned on this
+  // frame's skin (assignContactAngleRegions).
+  std::vector<LiquidPathSample> samples;
   // From the course before it (traced at an earlier frame) to this one, measured on this frame's
   // skin; null for the first course.
   std::shared_ptr<const FlowPathTransfer> fromPrevious;
@@ -57,10 +72,11 @@ struct LiquidTearCourse {
 // cheek, not the lid.) Thread-safe.
 class LiquidTearCourses {
  public:
-  // `start`: the source on the surface's triangles; gravity and maxLength as in ShotLiquidTear.
-  // Traces the first course (InputError from the surface or the walk propagate).
+  // `start`: the source on the surface's triangles; gravity and maxLength as in ShotLiquidTear;
+  // `regions`: the tear's contact-angle regions, in order. Traces the first course (InputError
+  // from the surface or the walk propagate).
   LiquidTearCourses(std::shared_ptr<const LiquidTearSurface> surface, const SurfacePoint& start, const Vec3& gravity,
-                    float maxLength, int firstFrame);
+                    float maxLength, int firstFrame, std::vector<LiquidCourseRegion> regions = {});
 
   int firstFrame() const { return firstFrame_; }
   const LiquidTearSurface& surface() const { return *surface_; }
@@ -78,6 +94,7 @@ class LiquidTearCourses {
   Vec3 gravity_;
   float maxLength_;
   int firstFrame_;
+  std::vector<LiquidCourseRegion> regions_;
   TriangleAdjacency adjacency_;  // the topology's, built once
   mutable std::mutex mutex_;
   mutable std::vector<std::shared_ptr<const LiquidTearCourse>> courses_;  // frame firstFrame_ + i

@@ -235,6 +235,16 @@ class LiquidTearCourses;  // liquid_tear.hpp
 // a frame is simulated from simulationStartFrame (t = 0: the shot's first frame, or the welling
 // start when that is earlier, so a shot can begin mid-cry) to t = (frame - simulationStartFrame) /
 // fps seconds, each step on the course of its nearest frame: a pure function of the frame.
+// A skin region with its own contact angles for a liquid tear ("contactAngleRegions"): the path
+// pieces that start within `radius` (straight-line distance, on the pose the course was traced
+// on) of the centre use `contactAngles` (TearLiquidParams::contactAngleRegions, same index).
+struct ShotContactAngleRegion {
+  ShotSurfaceAnchor center;             // as written, on the tear's part
+  double radius = 0.0;                  // metres, > 0
+  ContactAngleHysteresis contactAngles;  // radians
+  ShotSurfacePoint centerPoint;         // resolved by loadShot (on the source's primitive)
+};
+
 struct ShotLiquidTear {
   size_t asset = 0;              // index into Shot::assets
   std::string part;              // the part the source lies on and the path runs over
@@ -242,6 +252,9 @@ struct ShotLiquidTear {
   Vec3 gravity = Vec3(0, -1, 0);  // non-zero; only its direction matters
   float maxLength = 0.12f;       // metres of flow path at most
   TearLiquidParams params;       // SI units (the file's uL and degrees converted; welling times from t = 0)
+  // "contactAngleRegions", in list order (params.contactAngleRegions holds their angles); the first
+  // that contains a path sample gives it its angles.
+  std::vector<ShotContactAngleRegion> contactAngleRegions;
   // "trailRefinement": levels of linear refinement of the skin along the path at load (0: none).
   int trailRefinementLevels = 2;
   // Set by the trail refinement (liquid_trail_refinement.hpp), per primitive of the asset (null or
