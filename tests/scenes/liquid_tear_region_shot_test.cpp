@@ -9,6 +9,7 @@
 
 #include "lacrima/geometry/surface_point.hpp"
 #include "lacrima/scenes/liquid_tear.hpp"
+#include "liquid_tear_test_support.hpp"
 #include "shot_test_support.hpp"
 
 namespace lacrima {
@@ -37,20 +38,8 @@ Shot loadTearShot(const std::string& name, const std::string& extra) {
   return loadShot(writeShot(name, ictFaceShot(tearWith(extra), "", "", kFrames)));
 }
 
-std::vector<const MeshInstance*> beadsOf(const Frame& frame) {
-  std::vector<const MeshInstance*> beads;
-  for (const MeshInstance& m : frame.meshes)
-    if (m.mesh.name == "liquid bead") beads.push_back(&m);
-  return beads;
-}
-
-const TriangleMesh& skinOf(const Frame& frame, const Shot& shot) {
-  const std::string name = "face/" + shot.assets[0].gltf->primitives[shot.liquidTears[0].sourcePoint.primitive].name;
-  for (const MeshInstance& m : frame.meshes)
-    if (m.mesh.name == name) return m.mesh;
-  ADD_FAILURE() << "no mesh " << name;
-  return frame.meshes.front().mesh;
-}
+using test::beadsOf;
+using test::skinOf;
 
 // The bead mesh's default tessellation (LiquidBeadResolution {10, 3, 32}): the apex, then dome
 // rings 1..10 of 32 vertices (ring 10 is the contact line), then the base.

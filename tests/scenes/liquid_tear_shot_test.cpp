@@ -12,6 +12,7 @@
 #include "lacrima/geometry/surface_flow.hpp"
 #include "lacrima/geometry/surface_point.hpp"
 #include "lacrima/scenes/liquid_tear.hpp"
+#include "liquid_tear_test_support.hpp"
 #include "shot_test_support.hpp"
 
 namespace lacrima {
@@ -35,21 +36,8 @@ Shot loadTearShot(const std::string& name, const std::string& tear = kTear, cons
   return loadShot(writeShot(name, ictFaceShot(tear, cameraExtra, asset, kFrames)));
 }
 
-std::vector<const MeshInstance*> beadsOf(const Frame& frame) {
-  std::vector<const MeshInstance*> beads;
-  for (const MeshInstance& m : frame.meshes)
-    if (m.mesh.name == "liquid bead") beads.push_back(&m);
-  return beads;
-}
-
-// The skin the tear lies on, as rendered in the frame.
-const TriangleMesh& skinOf(const Frame& frame, const Shot& shot) {
-  const std::string name = "face/" + shot.assets[0].gltf->primitives[shot.liquidTears[0].sourcePoint.primitive].name;
-  for (const MeshInstance& m : frame.meshes)
-    if (m.mesh.name == name) return m.mesh;
-  ADD_FAILURE() << "no mesh " << name;
-  return frame.meshes.front().mesh;
-}
+using test::beadsOf;
+using test::skinOf;
 
 // The path traced from the tear's source straight on the (unsmoothed) skin.
 FlowPath rawPath(const Shot& shot, const TriangleMesh& skin) {
