@@ -24,9 +24,14 @@ std::optional<Vec3> reflectionHalfVector(const Vec3& wo, const Vec3& wi) {
 }  // namespace
 
 float fresnelHemisphericalReflectance(float eta) {
-  thread_local float cachedEta = -1.0f;
-  thread_local float cachedValue = 0.0f;
-  if (eta == cachedEta) return cachedValue;
+  // A few entries per thread: a frame's skin, sclera and lash materials (and a wet film over skin)
+  // each ask for their own index on every hit; one entry would integrate again at each switch.
+  constexpr int kEntries = 4;
+  thread_local float cachedEta[kEntries] = {-1.0f, -1.0f, -1.0f, -1.0f};
+  thread_local float cachedValue[kEntries] = {};
+  thread_local int nextEntry = 0;
+  for (int e = 0; e < kEntries; ++e)
+    if (eta == cachedEta[e]) return cachedValue[e];
   // Fbar = 2 integral_0^1 F(mu) mu dmu = integral_0^1 F(sqrt(t)) dt with t = mu^2 (substitution);
   // midpoint rule, 4096 cells (error ~1e-6, the integrand is smooth except near t = 0).
   constexpr int kCells = 4096;
@@ -35,9 +40,11 @@ float fresnelHemisphericalReflectance(float eta) {
     const double t = (i + 0.5) / kCells;
     sum += fresnelDielectric(float(std::sqrt(t)), eta);
   }
-  cachedEta = eta;
-  cachedValue = float(sum / kCells);
-  return cachedValue;
+  const int entry = nextEntry;
+  nextEntry = (nextEntry + 1) % kEntries;
+  cachedEta[entry] = eta;
+  cachedValue[entry] = float(sum / kCells);
+  return cachedValue[entry];
 }
 
 SkinBsdf::SkinBsdf(const SkinParams& params)
