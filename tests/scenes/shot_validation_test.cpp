@@ -24,6 +24,10 @@ std::string shotText(const std::string& extra = "",
 
 std::string firstLine(const std::string& s) { return s.substr(0, s.find('\n')); }
 
+// A committed file by its absolute path: shots written by the tests live under the build folder,
+// which may be anywhere, so a path relative to them would not find the source tree.
+std::string sourceFile(const std::string& relative) { return test::sourcePath(relative).string(); }
+
 TEST(ShotValidation, MinimalShotGetsDocumentedDefaults) {
   const auto path = writeShot("minimal.json", "// comments are allowed\n" + shotText("/* here too */ \"shapes\": []"));
   const Shot shot = loadShot(path);
@@ -124,7 +128,7 @@ TEST(ShotValidation, EndFrameBeforeStart) {
 
 TEST(ShotValidation, BackgroundAndEnvironmentAreExclusive) {
   const auto f = writeShot("both_backgrounds.json",
-                           shotText("\"environment\": {\"file\": \"../../../../../scenes/assets/hdri/studio.exr\"}, "
+                           shotText("\"environment\": {\"file\": \"" + sourceFile("scenes/assets/hdri/studio.exr") + "\"}, "
                                     "\"background\": [1, 1, 1]"));
   std::vector<Diagnostic> diagnostics;
   shotErrorOf(f, &diagnostics);
@@ -218,10 +222,11 @@ TEST(ShotValidation, EulerAndAxisAngleRotations) {
 }
 
 TEST(ShotValidation, AssetNamesPartsWeightsAndCamerasAreChecked) {
-  const auto f = writeShot("face_problems.json", shotText(R"("materials": {"skin": {"type": "skin"}},
-  "assets": [{"name": "face", "file": "../../../../../scenes/assets/ict-face/ict_face.glb",
+  const auto f = writeShot("face_problems.json",
+                           shotText(R"("materials": {"skin": {"type": "skin"}},
+  "assets": [{"name": "face", "file": ")" + sourceFile("scenes/assets/ict-face/ict_face.glb") + R"(",
     "materials": {"M_Fcae": "skin"}, "blendshapes": {"jawOpen": 1.5}, "hide": ["M_Teth"]}])",
-                                                          R"({"gltf": {"asset": "face", "camera": "closeup"}})"));
+                                    R"({"gltf": {"asset": "face", "camera": "closeup"}})"));
   std::vector<Diagnostic> diagnostics;
   shotErrorOf(f, &diagnostics);
   std::vector<std::string> lines;

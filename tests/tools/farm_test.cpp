@@ -2,6 +2,7 @@
 // stands), the job files of --dry-run, and a real single-node Slurm cluster (tools/slurm/cluster.sh)
 // rendering a 6-frame shot in 3 array tasks bitwise like a local render.
 #include <gtest/gtest.h>
+#include <pwd.h>
 #include <unistd.h>
 
 #include <cstdlib>
@@ -190,12 +191,37 @@ std::string frameName(int frame) {
   return name;
 }
 
+// What the single-node cluster needs and is missing on this machine ("" when nothing is).
+std::string missingClusterPrerequisites() {
+  std::vector<std::string> missing;
+  if (geteuid() != 0) missing.push_back("root (slurmd runs jobs as their owner)");
+  for (const char* daemon : {"/usr/sbin/slurmctld", "/usr/sbin/slurmd", "/usr/sbin/munged"})
+    if (access(daemon, X_OK) != 0) missing.push_back(daemon);
+  if (getpwnam("munge") == nullptr) missing.push_back("the user 'munge'");
+  std::string list;
+  for (const std::string& m : missing) list += (list.empty() ? "" : ", ") + m;
+  return list;
+}
+
+// Under CI (CI=true) a missing prerequisite fails the cluster test instead of skipping it: a skip
+// there would hide that the farm was never tested.
+bool underCi() {
+  const char* ci = std::getenv("CI");
+  return ci && std::string(ci) == "true";
+}
+
 // The acceptance test: 6 frames in 3 chunks on a single-node Slurm cluster equal a local
 // render bitwise; a lost frame and a task that cannot write show up in `farm status`, and a
 // resubmission renders only what is missing. Needs root and slurm-wlm + munge (tools/bootstrap.sh
-// test installs them).
+// test installs them); skipped without them, except under CI.
 TEST(FarmCluster, SixFramesInThreeChunksMatchALocalRenderBitwise) {
-  ASSERT_EQ(geteuid(), 0u) << "the single-node Slurm cluster needs root (slurmd runs jobs as their owner)";
+  if (const std::string missing = missingClusterPrerequisites(); !missing.empty()) {
+    const std::string why = "the single-node Slurm cluster cannot start: missing " + missing +
+                            ". Install slurm-wlm and munge (apt-get install slurm-wlm munge, or tools/bootstrap.sh test) "
+                            "and run as root";
+    if (underCi()) FAIL() << why << " (CI=true: never skipped under CI)";
+    GTEST_SKIP() << why;
+  }
   const fs::path dir = test::testDirectory("farm_cluster", /*fresh=*/true);
   char clusterDir[] = "/tmp/lacrima-slurm-XXXXXX";  // short: slurmd's socket paths must fit 107 bytes
   ASSERT_NE(mkdtemp(clusterDir), nullptr);

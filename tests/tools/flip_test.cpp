@@ -213,6 +213,29 @@ TEST(Flip, AcesToneMapperAndExposureRange) {
   EXPECT_EQ(range.count, 2);
 }
 
+TEST(Flip, ExposureRangeTakesTheUpperMiddleLuminanceAsMedian) {
+  // Luminances 0.1, 0.2, 0.4, 1: the median is element n/2 = 0.4 (as NVIDIA's nth_element takes
+  // it), not the mean 0.3 of the two middle values.
+  RgbImage image(4, 1);
+  const double values[4] = {0.2, 1.0, 0.1, 0.4};
+  for (int x = 0; x < 4; ++x) image.at(x, 0) = {values[x], values[x], values[x]};
+  const ExposureRange range = hdrExposureRange(image);
+  EXPECT_NEAR(range.stop, std::log2(2.1189 / 0.4), 1e-4);
+  EXPECT_NEAR(range.stop - range.start, std::log2(1.0 / 0.4), 1e-12);
+}
+
+TEST(Flip, NegativeValuesAreToneMappedNotClampedToBlack) {
+  // The rational curve is positive for inputs below -0.02: -0.1 maps to 0.064, -0.5 above 1 (clamped).
+  EXPECT_DOUBLE_EQ(acesToneMap(-0.5), 1.0);
+  EXPECT_NEAR(acesToneMap(-0.1), 0.0638, 1e-4);
+  // So a pixel with a negative component differs from one with 0 there (NVIDIA's behaviour; a
+  // clamp to 0 before tone mapping would make the two images identical).
+  RgbImage a = grey(16, 16, 0.2), b = a;
+  b.at(8, 8) = {-0.5, 0.2, 0.2};
+  a.at(8, 8) = {0.0, 0.2, 0.2};
+  EXPECT_GT(meanOf(hdrFlip(a, b, 67.02, hdrExposureRange(a))), 1e-4);
+}
+
 TEST(Flip, HdrFlipSeesDifferencesAboveOne) {
   // Two HDR images that differ only above 1.0: clipped to LDR they are identical, HDR-FLIP's
   // short exposures see the difference.

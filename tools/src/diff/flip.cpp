@@ -127,13 +127,16 @@ double acesInverse(double t) {
 
 double luminance(const Color& c) { return 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2]; }
 
+// Negative components are tone mapped as they are, not set to 0 first: the curve maps values below
+// -0.02 to a positive value (below about -0.41 to white), and that is what NVIDIA's reference
+// implementation does, so a render with out-of-gamut pixels gets the same HDR-FLIP from both.
 RgbImage exposedSrgb(const RgbImage& linear, double exposure) {
   RgbImage out(linear.width, linear.height);
   const double scale = std::exp2(exposure);
   for (size_t i = 0; i < linear.pixels.size(); ++i)
     for (size_t c = 0; c < 3; ++c) {
       const double v = linear.pixels[i][c];
-      out.pixels[i][c] = acesToneMap(std::isnan(v) ? 0.0 : scale * std::max(v, 0.0));
+      out.pixels[i][c] = acesToneMap(std::isnan(v) ? 0.0 : scale * v);
     }
   for (Color& c : out.pixels) c = linearToSrgb(c);
   return out;
@@ -283,21 +286,24 @@ std::vector<double> ldrFlip(const RgbImage& referenceSrgb, const RgbImage& testS
 }
 
 ExposureRange hdrExposureRange(const RgbImage& referenceLinear) {
+  // Luminance as it is, negative values included (NVIDIA's reference implementation does not clamp
+  // them either); a NaN or infinite pixel counts as black.
   std::vector<double> lum;
   lum.reserve(referenceLinear.pixels.size());
   for (const Color& c : referenceLinear.pixels) {
     const double y = luminance(c);
-    lum.push_back(std::isfinite(y) ? std::max(y, 0.0) : 0.0);
+    lum.push_back(std::isfinite(y) ? y : 0.0);
   }
   ExposureRange range;
   if (lum.empty()) return range;
   std::sort(lum.begin(), lum.end());
   const double brightest = lum.back();
   if (brightest <= 0.0) return range;
-  // The median as numpy's 50th percentile (the mean of the two middle values for an even count).
-  const size_t n = lum.size();
-  double median = n % 2 == 1 ? lum[n / 2] : 0.5 * (lum[n / 2 - 1] + lum[n / 2]);
-  // A mostly black reference: the smallest lit pixel instead (the paper's median would be 0).
+  // The median as NVIDIA's implementation takes it: element n/2 of the sorted values (the upper of
+  // the two middle values for an even count, not their mean).
+  double median = lum[lum.size() / 2];
+  // A mostly black reference: the smallest lit pixel instead (the median would give an infinite
+  // stop exposure; NVIDIA's tool has no such guard).
   if (median <= 0.0) median = *std::upper_bound(lum.begin(), lum.end(), 0.0);
   range.start = std::log2(acesInverse(0.85) / brightest);
   range.stop = std::log2(acesInverse(0.85) / median);
