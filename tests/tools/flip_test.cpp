@@ -1,7 +1,8 @@
-// FLIP and HDR-FLIP (tools/src/diff/flip.*): what can be checked exactly without NVIDIA's test
-// images (not available offline): the colour pipeline against hand-computed and published sRGB
-// values, the filters' normalisation and radii, the feature detectors on an edge and a dot,
-// identical images, symmetry and monotonicity in the noise amplitude. See docs/diff.md.
+// FLIP and HDR-FLIP (tools/src/diff/flip.*), part by part: the colour pipeline against
+// hand-computed and published sRGB values, the filters' normalisation and radii, the feature
+// detectors on an edge and a dot, identical images, symmetry and monotonicity in the noise
+// amplitude, the exposure range. The whole against NVIDIA's implementation:
+// flip_conformance_test.cpp. See docs/diff.md.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -2,9 +2,9 @@
 // FLIP, the perceptual image difference of Andersson, Nilsson, Akenine-Moller, Oskarsson, Astrom
 // and Fairchild, "FLIP: A Difference Evaluator for Alternating Images" (HPG 2020), and HDR-FLIP
 // of Andersson, Nilsson, Shirley and Akenine-Moller, "Visualizing Errors in Rendered High Dynamic
-// Range Images" (Eurographics 2021 short papers). Implemented from the papers; the constants were
-// checked against NVIDIA's reference implementation (github.com/NVlabs/flip). See docs/diff.md for
-// what is and is not validated against the published values.
+// Range Images" (Eurographics 2021 short papers). Implemented from the papers; the results agree
+// with NVIDIA's reference implementation (github.com/NVlabs/flip) to 1e-8 on the image pairs of
+// tests/data/flip (tests/tools/flip_conformance_test.cpp); docs/diff.md says where and why they differ.
 #include <array>
 #include <cstddef>
 #include <vector>
@@ -80,8 +80,8 @@ std::vector<double> featureResponse(const std::vector<double>& luminance, int wi
 std::vector<double> ldrFlip(const RgbImage& referenceSrgb, const RgbImage& testSrgb, double ppd);
 
 // HDR-FLIP's exposures (HDR-FLIP Section 3): from `start` (the reference's brightest pixel at 0.85
-// after tone mapping) to `stop` (its median luminance at 0.85), `count` = max(2, ceil(stop - start))
-// evenly spaced stops.
+// after tone mapping) to `stop` (its median luminance at 0.85, the median being element n/2 of the
+// sorted luminances as in NVIDIA's code), `count` = max(2, ceil(stop - start)) evenly spaced stops.
 struct ExposureRange {
   double start = 0, stop = 0;
   int count = 2;
@@ -91,7 +91,8 @@ ExposureRange hdrExposureRange(const RgbImage& referenceLinear);
 double acesToneMap(double x);
 
 // The per-pixel HDR-FLIP error: the maximum LDR-FLIP over the exposures, each image exposed by
-// 2^exposure, tone mapped and sRGB-encoded (HDR-FLIP Eq. 1). Linear Rec. 709 inputs.
+// 2^exposure, tone mapped (negative values included, not clamped first) and sRGB-encoded
+// (HDR-FLIP Eq. 1). Linear Rec. 709 inputs.
 std::vector<double> hdrFlip(const RgbImage& referenceLinear, const RgbImage& testLinear, double ppd,
                             const ExposureRange& exposures);
 
