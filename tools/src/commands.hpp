@@ -56,6 +56,13 @@ struct FarmStatusOptions {
 struct BenchOptions {
   std::string shotPath;
   int width = 320, height = 180, spp = 4, threads = 0, repetitions = 3;
+  // --quality: time to equal error (cmd_bench_quality.cpp).
+  bool quality = false;
+  std::optional<int> frame;  // default: the shot's first frame
+  int referenceSpp = 1024, maxSpp = 64;
+  std::vector<double> targets = {0.1, 0.05, 0.043};
+  std::string cacheDir;  // default: $XDG_CACHE_HOME/lacrima/quality or ~/.cache/lacrima/quality
+  bool freshReference = false;
 };
 
 struct DiffOptions {
@@ -84,6 +91,7 @@ int runTestSuite(const TestSuiteOptions& options);
 int runCheck(const std::string& shotPath);
 int runInfo(const std::string& path);
 int runBench(const BenchOptions& options);
+int runBenchQuality(const BenchOptions& options);
 int runExport(const ExportOptions& options);
 int runFarmSubmit(const FarmSubmitOptions& options);
 int runFarmStatus(const FarmStatusOptions& options);

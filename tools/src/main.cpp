@@ -33,6 +33,7 @@ const char* kDescription =
     "  lacrima info face.glb           list primitives, blendshapes and cameras of a glTF\n"
     "  lacrima info frame.0001.exr     list channels and lacrima metadata of a rendered frame\n"
     "  lacrima bench                   renderer and raw Embree throughput on the default shot\n"
+    "  lacrima bench --quality         samples and seconds to reach an RMSE, against a converged reference\n"
     "  lacrima diff a.exr b.exr        compare two images (or directories, or frame sequences)\n"
     "  lacrima test-suite tests/data/regression\n"
     "      render the regression shots and compare them with their reference images\n"
@@ -222,14 +223,34 @@ void addInfo(CLI::App& app, std::string& file) {
 
 void addBench(CLI::App& app, BenchOptions& o) {
   auto* bench = app.add_subcommand("bench", "Measure render and raw Embree throughput (not a test)");
-  bench->footer("Renders the default shot (or SHOT) at a fixed small size and reports medians of the repetitions.");
+  bench->footer(
+      "Renders the default shot (or SHOT) at a fixed small size and reports medians of the repetitions.\n"
+      "With --quality, reports time to equal error, e.g.\n"
+      "  lacrima bench --quality --width 160 --height 90 --max-spp 64 --target 0.05");
   bench->add_option("shot", o.shotPath, "Shot file (default: scenes/shots/tear_closeup.json)");
   bench->add_option("--width", o.width, "Width")->check(integerIn(8, 4096));
   bench->add_option("--height", o.height, "Height")->check(integerIn(8, 4096));
   bench->add_option("--spp", o.spp, "Samples per pixel")->check(integerIn(1, 4096));
   bench->add_option("--threads", o.threads, "Threads (0 = all cores)")->check(integerIn(0, INT_MAX));
   bench->add_option("--repetitions", o.repetitions, "Repetitions (median reported)")->check(integerIn(1, 50));
-  bench->callback([&o] { throw CLI::RuntimeError(runBench(o)); });
+  bench->add_flag("--quality", o.quality,
+                  "Time to equal error instead: RMSE at 1, 2, 4 ... --max-spp samples against a converged reference, "
+                  "the RMSE-vs-spp slope, and the samples and seconds to reach each --target");
+  bench->add_option("--frame", o.frame, "--quality: the frame (default: the shot's first)");
+  bench->add_option("--reference-spp", o.referenceSpp,
+                    "--quality: samples of the reference (its own noise adds in quadrature: 1024 against 64 spp "
+                    "raises the RMSE by 3 %)")
+      ->check(integerIn(16, 1 << 20));
+  bench->add_option("--max-spp", o.maxSpp, "--quality: the largest measured sample count")->check(integerIn(1, 1 << 16));
+  bench->add_option("--target", o.targets, "--quality: RMSE targets (repeatable; default 0.1 0.05 0.043)")
+      ->check(CLI::PositiveNumber);
+  bench->add_option("--cache", o.cacheDir,
+                    "--quality: folder of cached references (default $XDG_CACHE_HOME/lacrima/quality or "
+                    "~/.cache/lacrima/quality); a reference is keyed by the shot file's contents, frame, size, "
+                    "max depth and spp");
+  bench->add_flag("--fresh-reference", o.freshReference,
+                  "--quality: render the reference again (after a change of assets or of what the renderer converges to)");
+  bench->callback([&o] { throw CLI::RuntimeError(o.quality ? runBenchQuality(o) : runBench(o)); });
 }
 
 
