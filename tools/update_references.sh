@@ -6,8 +6,8 @@ set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 reason="${1:-}"
 [ -n "$reason" ] || { echo "usage: tools/update_references.sh \"reason for the new references\"" >&2; exit 2; }
-lacrima="${LACRIMA:-$here/build/tools/lacrima}"
-[ -x "$lacrima" ] || { echo "build first (tools/bootstrap.sh build), or set LACRIMA=path/to/lacrima" >&2; exit 2; }
+lacrima="${LACRIMA:-${BUILD_DIR:-$here/build}/tools/lacrima}"
+[ -x "$lacrima" ] || { echo "build first (tools/bootstrap.sh build), or set BUILD_DIR=your/build or LACRIMA=path/to/lacrima" >&2; exit 2; }
 # The same renders as the regression tests: every shot of tests/data/regression, with PNG previews.
 "$lacrima" test-suite "$here/tests/data/regression" --references "$here/tests/data/references" --update
 echo "$(date -u +%Y-%m-%d) $(git -C "$here" rev-parse --short HEAD): $reason" >> "$here/tests/data/references/CHANGES.txt"

@@ -6,6 +6,7 @@
 #include <fmt/ranges.h>
 
 #include "lacrima/geometry/gltf_asset.hpp"
+#include "lacrima/geometry/mesh.hpp"
 
 namespace lacrima {
 
@@ -29,6 +30,20 @@ std::string wrapNames(const std::vector<std::string>& names, size_t indent, size
 
 size_t movingTargetCount(const GltfPrimitive& p) {
   return size_t(std::count_if(p.targets.begin(), p.targets.end(), [](const SparseDelta& d) { return !d.vertices.empty(); }));
+}
+
+// The open primitives with their boundary edges: what decides whether a primitive given a
+// dielectric material bounds a volume or renders as a thin sheet.
+std::string describeOpenSurfaces(const GltfAsset& asset) {
+  std::vector<std::string> open;
+  for (size_t i = 0; i < asset.primitives.size(); ++i)
+    if (const size_t edges = countBoundaryEdges(asset.primitives[i].mesh); edges > 0)
+      open.push_back(fmt::format("#{} {} ({})", i, asset.primitives[i].part, edges));
+  std::string out = fmt::format(
+      "  open surfaces: {} of {} (boundary edges, vertices welded by position); given water or another\n"
+      "  dielectric in a shot, an open primitive renders as a thin sheet, a closed one bounds a volume\n",
+      open.size(), asset.primitives.size());
+  return open.empty() ? out : out + wrapNames(open, 4, 100);
 }
 
 std::string describePrimitives(const GltfAsset& asset) {
@@ -56,7 +71,7 @@ std::string describePrimitives(const GltfAsset& asset) {
   }
   out += fmt::format("  total: {} vertices, {} triangles ('targets' counts the targets that move a primitive)\n", vertices,
                      triangles);
-  return out;
+  return out + describeOpenSurfaces(asset);
 }
 
 std::string describeBounds(const GltfAsset& asset) {

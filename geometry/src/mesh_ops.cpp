@@ -1,5 +1,6 @@
 // Whole-mesh operations: transforms, bounds, volume and the validity checks that guard the
 // renderer against meshes it cannot trace.
+#include <algorithm>
 #include <cstdint>
 #include <string>
 #include <unordered_map>
@@ -105,6 +106,21 @@ std::string findClosedMeshDefect(const TriangleMesh& mesh) {
       return fmt::format("edge {}-{} belongs to only one triangle (open boundary)", a, b);
   }
   return {};
+}
+
+size_t countBoundaryEdges(const TriangleMesh& mesh) {
+  const std::vector<uint32_t> welded = findCoincidentVertices(mesh);
+  std::unordered_map<uint64_t, int> triangles;  // per undirected welded edge
+  triangles.reserve(mesh.indices.size());
+  for (size_t i = 0; i + 2 < mesh.indices.size(); i += 3)
+    for (int k = 0; k < 3; ++k) {
+      const uint32_t a = welded[mesh.indices[i + k]], b = welded[mesh.indices[i + (k + 1) % 3]];
+      if (a == b) continue;  // a degenerate edge bounds nothing
+      ++triangles[(uint64_t(std::min(a, b)) << 32) | std::max(a, b)];
+    }
+  size_t boundary = 0;
+  for (const auto& [edge, count] : triangles) boundary += count == 1;
+  return boundary;
 }
 
 }  // namespace lacrima

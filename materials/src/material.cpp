@@ -7,6 +7,7 @@
 #include "lacrima/materials/rough_dielectric.hpp"
 #include "lacrima/materials/skin.hpp"
 #include "lacrima/materials/smooth_dielectric.hpp"
+#include "lacrima/materials/thin_dielectric.hpp"
 
 namespace lacrima {
 
@@ -26,6 +27,14 @@ std::unique_ptr<Bsdf> makeBsdf(const MaterialParams& params) {
         }
       },
       params);
+}
+
+std::unique_ptr<Bsdf> makeThinSheetBsdf(const MaterialParams& params) {
+  if (const auto* smooth = std::get_if<SmoothDielectricParams>(&params))
+    return std::make_unique<ThinDielectricBsdf>(smooth->ior, smooth->tint);
+  if (const auto* rough = std::get_if<RoughDielectricParams>(&params))
+    return std::make_unique<ThinDielectricBsdf>(rough->ior, rough->tint);
+  return nullptr;
 }
 
 std::optional<DielectricMedium> dielectricMedium(const MaterialParams& params) {

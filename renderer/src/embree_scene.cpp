@@ -27,12 +27,12 @@ void reportEmbreeError(void*, RTCError code, const char* message) {
   throw std::runtime_error(fmt::format("Embree error {}: {}", int(code), message ? message : ""));
 }
 
-RTCRay makeRay(const Vec3& origin, const Vec3& direction, float tfar, float time) {
+RTCRay makeRay(const Vec3& origin, const Vec3& direction, float tfar, float time, float tnear = 0.0f) {
   RTCRay ray;
   ray.org_x = origin.x();
   ray.org_y = origin.y();
   ray.org_z = origin.z();
-  ray.tnear = 0.0f;
+  ray.tnear = tnear;
   ray.dir_x = direction.x();
   ray.dir_y = direction.y();
   ray.dir_z = direction.z();
@@ -287,7 +287,7 @@ bool EmbreeScene::intersect(const Ray& ray, SurfaceHit& hit) const {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRayHit rayHit;
-  rayHit.ray = makeRay(ray.origin, ray.direction, std::numeric_limits<float>::infinity(), ray.time);
+  rayHit.ray = makeRay(ray.origin, ray.direction, std::numeric_limits<float>::infinity(), ray.time, ray.tnear);
   rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rayHit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(scene_, &context, &rayHit);
@@ -295,7 +295,9 @@ bool EmbreeScene::intersect(const Ray& ray, SurfaceHit& hit) const {
 
   const GeometryRecord& record = records_[rayHit.hit.geomID];
   hit.distance = rayHit.ray.tfar;
+  hit.rayDistance = rayHit.ray.tfar;
   hit.lightIndex = -1;
+  hit.meshIndex = -1;
   hit.geometryId = rayHit.hit.geomID;
   hit.primitiveId = rayHit.hit.primID;
   hit.barycentric = Vec2(rayHit.hit.u, rayHit.hit.v);
@@ -303,6 +305,7 @@ bool EmbreeScene::intersect(const Ray& ray, SurfaceHit& hit) const {
     case Kind::Mesh: {
       const MeshInstance& instance = frame_->meshes[record.index];
       surfaceOfMesh(instance, ray.time, rayHit.hit, hit);
+      hit.meshIndex = int(record.index);
       hit.materialId = instance.materialId;
       break;
     }

@@ -14,7 +14,8 @@
 namespace lacrima {
 
 struct SurfaceHit {
-  float distance = 0.0f;
+  float distance = 0.0f;     // from the path's segment start (the depth AOV; see traceToRealSurface)
+  float rayDistance = 0.0f;  // Embree's t along the ray that found it, from that ray's origin
   Vec3 position;
   Vec3 geometricNormal;  // unit; for meshes the winding normal, for spheres outward
   Vec3 shadingNormal;    // unit; interpolated vertex normal when the mesh has normals
@@ -22,6 +23,7 @@ struct SurfaceHit {
   int lightIndex = -1;   // >= 0 when the surface is an area light (emits, does not reflect)
   float wetness = 0.0f;  // film thickness (m) interpolated from MeshInstance::wetness; 0 = dry
   unsigned geometryId = 0;   // Embree's: which mesh, sphere or light
+  int meshIndex = -1;        // the index in Frame::meshes of a mesh hit; -1 for spheres and lights
   unsigned primitiveId = 0;  // the triangle of a mesh
   Vec2 barycentric = Vec2::Zero();  // Embree's (u, v) on that triangle
   // Texture coordinates, for meshes with uvs and a textured material (hasUv; only textures read

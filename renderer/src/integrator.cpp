@@ -58,6 +58,12 @@ const Bsdf* withTextures(const Bsdf* bsdf, const SurfaceTextures& textures, cons
 constexpr int kRussianRouletteDepth = 3;
 // A shadow ray gives up (counts as blocked) after this many dielectric crossings.
 constexpr int kMaxShadowCrossings = 16;
+// A ray that goes on through a thin sheet ignores hits closer than the sheet's distance times
+// (1 + this): past the rounding of the sheet's own hit, far short of a surface 1 um behind it.
+constexpr float kThinSheetMargin = 1e-6f;
+// The nearest distance a ray going on through a thin sheet at distance t may hit (strictly past
+// t, also when t is 0: a ray that starts on the sheet).
+float justPast(float t) { return std::nextafter(t * (1.0f + kThinSheetMargin), std::numeric_limits<float>::infinity()); }
 // A path is dropped (absorbed) after skipping this many false interfaces in one segment.
 constexpr int kMaxFalseInterfaces = 64;
 // The camera-media probe looks at no more than this many surfaces.
@@ -86,6 +92,7 @@ PathIntegrator::PathIntegrator(const Frame& frame, const EmbreeScene& scene, con
     if (media_.back() && media_.back()->priority > 0) nested_ = true;
   }
   for (const auto& medium : media_) dielectricIndex_.push_back(medium ? medium->ior : 0.0f);
+  findThinSheets();
   if (!nested_) return;
   // Every real interface a path can meet, built once: dielectric `hit` of priority >= 1 against
   // each medium that can surround it.
@@ -97,6 +104,30 @@ PathIntegrator::PathIntegrator(const Frame& frame, const EmbreeScene& scene, con
       if (media_[other]) pairBsdfs_[hit * count + other] = makeBsdf(againstMedium(frame.materials[hit].params, media_[other]->ior));
   }
   cameraMedia_ = mediaAroundCamera();
+}
+
+// The ray that goes on straight through a thin sheet it hit at `sheetDistance`: the same line, with
+// hits up to just past the sheet ignored. An origin offset off the sheet (offsetOrigin, 1e-4 of
+// the coordinates: 10-20 um on a face) would jump over a surface that close behind it, and tear
+// lines lie on the lid margin's skin that closely (the ICT face's M_LacrimalFluid): the camera
+// would see into the head there, black.
+Ray PathIntegrator::pastThinSheet(const Ray& ray, float sheetDistance) {
+  Ray on = ray;
+  on.tnear = justPast(sheetDistance);
+  return on;
+}
+
+// Thin sheets (MeshInstance::thinSheet) of dielectric materials, each material's thin-sheet BSDF.
+void PathIntegrator::findThinSheets() {
+  thinSheetMesh_.assign(frame_.meshes.size(), 0);
+  thinSheetBsdfs_.resize(frame_.materials.size());
+  for (size_t i = 0; i < frame_.meshes.size(); ++i) {
+    const MeshInstance& instance = frame_.meshes[i];
+    if (!instance.thinSheet || !isDielectric(instance.materialId)) continue;
+    thinSheetMesh_[i] = 1;
+    if (!thinSheetBsdfs_[instance.materialId])
+      thinSheetBsdfs_[instance.materialId] = makeThinSheetBsdf(frame_.materials[instance.materialId].params);
+  }
 }
 
 InterfaceCrossing PathIntegrator::classifyInterface(const MediumStack& media, uint32_t materialId, bool entering) const {
@@ -123,7 +154,7 @@ MediumStack PathIntegrator::mediaAroundCamera() const {
   SurfaceHit hit;
   for (int i = 0; i < kMaxProbeSurfaces && scene_.intersect(ray, hit); ++i) {
     const bool firstMeeting = std::find(seen.begin(), seen.end(), hit.materialId) == seen.end();
-    if (hit.lightIndex < 0 && isDielectric(hit.materialId) && firstMeeting) {
+    if (hit.lightIndex < 0 && boundsMedium(hit) && firstMeeting) {
       seen.push_back(hit.materialId);
       if (direction.dot(hit.geometricNormal) > 0.0f) enclosing.push_back(hit.materialId);
     }
@@ -143,7 +174,7 @@ PathIntegrator::Trace PathIntegrator::traceToRealSurface(Ray& ray, SurfaceHit& h
     ++counters.rays;
     if (!scene_.intersect(ray, hit)) return Trace::Miss;
     hit.distance += skippedDistance;
-    if (!nested_ || hit.lightIndex >= 0 || !isDielectric(hit.materialId)) return Trace::Hit;
+    if (!nested_ || hit.lightIndex >= 0 || !boundsMedium(hit)) return Trace::Hit;
     const bool entering = ray.direction.dot(hit.geometricNormal) < 0.0f;
     if (!classifyInterface(media, hit.materialId, entering).isFalse) return Trace::Hit;
     if (skipped == kMaxFalseInterfaces) return Trace::Lost;
@@ -151,6 +182,7 @@ PathIntegrator::Trace PathIntegrator::traceToRealSurface(Ray& ray, SurfaceHit& h
     const Vec3 next = offsetOrigin(hit.position, hit.geometricNormal, ray.direction);
     skippedDistance += (next - ray.origin).dot(ray.direction);
     ray.origin = next;
+    ray.tnear = 0.0f;
   }
 }
 
@@ -169,7 +201,7 @@ Color PathIntegrator::sampleDirectLight(const Vertex& v, const MediumStack& medi
   if (geometricReflect != shadingReflect) return Color::Zero();
   // A shadow ray through a (rough) dielectric starts in the media on the far side.
   MediumStack shadowMedia = media;
-  if (!geometricReflect) crossInterface(shadowMedia, v.materialId, v.entering);
+  if (!geometricReflect && !v.thinSheet) crossInterface(shadowMedia, v.materialId, v.entering);
 
   const Color f = v.bsdf->eval(v.woLocal, wiLocal) * absCosTheta(wiLocal);
   if ((f <= 0.0f).all()) return Color::Zero();
@@ -209,25 +241,34 @@ Color PathIntegrator::shadowTransmittance(const Ray& shadowRay, float maxDistanc
   Color transmittance = Color::Ones();
   Vec3 position = shadowRay.origin;
   float remaining = maxDistance;
+  float tnear = 0.0f;
   for (int crossing = 0; crossing < kMaxShadowCrossings; ++crossing) {
     SurfaceHit hit;
     ++counters.rays;
-    if (!scene_.intersect(Ray{position, direction, shadowRay.time}, hit) || hit.distance >= remaining) return transmittance;
+    if (!scene_.intersect(Ray{position, direction, shadowRay.time, tnear}, hit) || hit.distance >= remaining)
+      return transmittance;
     if (hit.lightIndex >= 0) return Color::Zero();
     const bool entering = direction.dot(hit.geometricNormal) < 0.0f;
+    const bool thin = isThinSheet(hit);
     const InterfaceCrossing surface =
-        nested_ && isDielectric(hit.materialId) ? classifyInterface(media, hit.materialId, entering) : InterfaceCrossing{};
+        nested_ && !thin && isDielectric(hit.materialId) ? classifyInterface(media, hit.materialId, entering) : InterfaceCrossing{};
     if (!surface.isFalse) {
       Vec3 ns = hit.shadingNormal.dot(hit.geometricNormal) < 0.0f ? -hit.shadingNormal : hit.shadingNormal;
       const Vec3 woLocal = ShadingFrame::fromNormal(ns).toLocal(-direction);
-      transmittance *= interfaceBsdf(hit.materialId, surface.otherMaterial)->straightTransmittance(woLocal);
+      const Bsdf* bsdf = thin ? thinSheetBsdfs_[hit.materialId].get() : interfaceBsdf(hit.materialId, surface.otherMaterial);
+      transmittance *= bsdf->straightTransmittance(woLocal);
       if ((transmittance <= 0.0f).all()) return Color::Zero();
       crossedDielectric = true;
+    }
+    if (thin) {  // on along the same line (see pastThinSheet)
+      tnear = justPast(hit.rayDistance);
+      continue;
     }
     crossInterface(media, hit.materialId, entering);
     const Vec3 next = offsetOrigin(hit.position, hit.geometricNormal, direction);
     remaining -= (next - position).dot(direction);
     position = next;
+    tnear = 0.0f;
   }
   return Color::Zero();
 }
@@ -272,7 +313,7 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
     }
 
     const Material& material = frame_.materials[hit.materialId];
-    pathLength += hit.distance;
+    pathLength += hit.distance - ray.tnear;
     Vertex v;
     v.position = hit.position;
     v.wo = -ray.direction;
@@ -283,8 +324,11 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
     if (ns.dot(ng) < 0.0f) ns = -ns;  // interpolated normals follow the winding's side
     const bool frontFacing = v.wo.dot(ng) > 0.0f;
     v.entering = frontFacing;
+    v.thinSheet = isThinSheet(hit);
     v.bsdf = bsdfs_[hit.materialId].get();
-    if (nested_ && isDielectric(hit.materialId))
+    if (v.thinSheet)
+      v.bsdf = thinSheetBsdfs_[hit.materialId].get();
+    else if (nested_ && isDielectric(hit.materialId))
       v.bsdf = interfaceBsdf(hit.materialId, classifyInterface(media, hit.materialId, frontFacing).otherMaterial);
     TexturedHit textured;  // v.bsdf may point here for this bounce
     v.bsdf = withTextures(v.bsdf, textures_, material, hit, pathLength * pixelSpread_, textured);
@@ -335,7 +379,7 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
     throughput *= bs->f * (absCosTheta(bs->wi) / bs->pdf);
     if (bs->transmitted) {
       etaScale *= bs->eta * bs->eta;
-      crossInterface(media, hit.materialId, frontFacing);
+      if (!v.thinSheet) crossInterface(media, hit.materialId, frontFacing);
     }
     if (!bs->specular) {
       chainAfterNonSpecular = true;
@@ -348,7 +392,7 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
     previousSpecular = bs->specular;
     previousBsdfPdf = bs->pdf;
     previousPosition = hit.position;
-    ray = Ray{offsetOrigin(hit.position, ng, wi), wi, ray.time};
+    ray = v.thinSheet && bs->transmitted ? pastThinSheet(ray, hit.rayDistance) : Ray{offsetOrigin(hit.position, ng, wi), wi, ray.time};
 
     if (depth >= kRussianRouletteDepth) {
       const float survive = std::min(1.0f, (throughput * etaScale).maxCoeff());

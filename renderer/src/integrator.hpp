@@ -72,6 +72,12 @@ class PathIntegrator {
   // The media around the camera, found by a probe ray (see integrator.cpp).
   MediumStack mediaAroundCamera() const;
   bool isDielectric(uint32_t materialId) const { return media_[materialId].has_value(); }
+  // A dielectric mesh marked as a thin sheet, crossed straight through (MeshInstance::thinSheet).
+  bool isThinSheet(const SurfaceHit& hit) const { return hit.meshIndex >= 0 && thinSheetMesh_[size_t(hit.meshIndex)]; }
+  // A dielectric surface that bounds a volume (a closed mesh or a sphere): paths enter its medium.
+  bool boundsMedium(const SurfaceHit& hit) const { return isDielectric(hit.materialId) && !isThinSheet(hit); }
+  void findThinSheets();
+  static Ray pastThinSheet(const Ray& ray, float sheetDistance);
 
   // Subsurface skin (integrator.cpp, subsurface_walk.hpp): what a skin with subsurface needs.
   struct SubsurfaceSkin {
@@ -109,6 +115,8 @@ class PathIntegrator {
   MediumStack cameraMedia_;
   std::vector<std::optional<SubsurfaceSkin>> subsurface_;  // per material; none unless skin with subsurface
   std::vector<float> dielectricIndex_;  // per material: a dielectric's index, 0 if opaque (subsurface walks)
+  std::vector<uint8_t> thinSheetMesh_;  // per frame mesh: 1 for a dielectric thin sheet
+  std::vector<std::unique_ptr<Bsdf>> thinSheetBsdfs_;  // per material: its thin-sheet BSDF, where a sheet uses it
 };
 
 struct PathIntegrator::Vertex {
@@ -117,6 +125,7 @@ struct PathIntegrator::Vertex {
   ShadingFrame frame;
   uint32_t materialId;
   bool entering;         // arrived on the geometric normal's side (into a dielectric's medium)
+  bool thinSheet = false;  // an open dielectric mesh: crossing it enters no medium
   Vec3 wo;               // world, towards the previous vertex
   Vec3 woLocal;
   const Bsdf* bsdf;

@@ -130,6 +130,7 @@ bool PathIntegrator::traceCausticSeed(const Vertex& v, const LightSample& light,
     ++counters.rays;
     if (!scene_.intersect(Ray{position, direction, v.time}, hit) || hit.distance >= remaining) return seed.count > 0;
     if (hit.lightIndex >= 0 || !isDielectric(hit.materialId)) break;  // opaque
+    if (isThinSheet(hit)) return false;  // it bends nothing: the straight transparent shadow is exact there
     const bool entering = direction.dot(hit.geometricNormal) < 0.0f;
     const InterfaceCrossing crossing = nested_ ? classifyInterface(media, hit.materialId, entering) : InterfaceCrossing{};
     if (!crossing.isFalse) {

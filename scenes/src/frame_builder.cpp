@@ -11,8 +11,10 @@
 #include "eye_frame.hpp"
 #include "lacrima/geometry/detail_patterns.hpp"
 #include "lacrima/geometry/dripping_tear.hpp"
+#include "lacrima/geometry/mesh.hpp"
 #include "lacrima/geometry/shapes.hpp"
 #include "lacrima/geometry/shedding_tear.hpp"
+#include "lacrima/materials/material.hpp"
 #include "lacrima/scenes/shot.hpp"
 #include "liquid_tear_frame.hpp"
 #include "shot_geometry.hpp"
@@ -54,6 +56,13 @@ void checkLoaded(const Shot& shot, const ShotAsset& asset) {
                                  asset.name, asset.primitiveMaterials.size(), asset.gltf->primitives.size()));
 }
 
+// A dielectric primitive with boundary edges bounds no volume: a thin sheet (MeshInstance::
+// thinSheet). Decided on the neutral mesh, so every frame of a shot decides alike. materialId
+// indexes frame.materials (the shot's materials, then the assets' automatic ones).
+bool isOpenDielectric(const Frame& frame, uint32_t materialId, const TriangleMesh& neutral) {
+  return dielectricMedium(frame.materials.at(materialId).params) && countBoundaryEdges(neutral) > 0;
+}
+
 // The visible primitives as mesh instances; deforming ones carry their shutter-close vertices.
 void addAssetMeshes(const Shot& shot, size_t a, const PosedAssets& open, const PosedAssets* close, Frame& frame) {
   const ShotAsset& asset = shot.assets[a];
@@ -61,6 +70,7 @@ void addAssetMeshes(const Shot& shot, size_t a, const PosedAssets& open, const P
     const int materialId = asset.primitiveMaterials[i];
     if (materialId < 0) continue;  // hidden
     MeshInstance instance(open[a][i], uint32_t(materialId));
+    instance.thinSheet = isOpenDielectric(frame, uint32_t(materialId), asset.gltf->primitives[i].mesh);
     if (const std::string defect = findMeshDefect(instance.mesh); !defect.empty())
       throw InputError(fmt::format("{}: asset '{}' ({}), primitive '{}': {}", shot.path.string(), asset.name,
                                    asset.file.string(), asset.gltf->primitives[i].name, defect));
@@ -90,10 +100,12 @@ Vec3 shapeCenterAt(const ShotShape& shape, double frame, const PosedAssets& pose
   return center;
 }
 
-MeshInstance shapeMesh(const ShotShape& shape, const Vec3& center) {
+MeshInstance shapeMesh(const Frame& frame, const ShotShape& shape, const Vec3& center) {
   if (shape.type == ShotShape::Type::Ellipsoid)
     return MeshInstance(makeEllipsoid(center, Mat3(shape.rotation * shape.radii.asDiagonal())), shape.materialId);
-  return MeshInstance(makeRectangle(center, shape.edgeU, shape.edgeV), shape.materialId);
+  MeshInstance rectangle(makeRectangle(center, shape.edgeU, shape.edgeV), shape.materialId);
+  rectangle.thinSheet = dielectricMedium(frame.materials.at(shape.materialId).params).has_value();  // bounds nothing
+  return rectangle;
 }
 
 void addShape(const ShotShape& shape, const ShutterTimes& shutter, const PosedAssets& open,
@@ -109,7 +121,7 @@ void addShape(const ShotShape& shape, const ShutterTimes& shutter, const PosedAs
     frame.spheres.push_back(sphere);
     return;
   }
-  MeshInstance mesh = shapeMesh(shape, centerOpen);
+  MeshInstance mesh = shapeMesh(frame, shape, centerOpen);
   if (centerClose != centerOpen)
     for (const Vec3& p : mesh.mesh.positions) mesh.positionsAtClose.push_back(p + (centerClose - centerOpen));
   frame.meshes.push_back(std::move(mesh));

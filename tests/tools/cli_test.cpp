@@ -439,6 +439,10 @@ TEST(CliInfo, FaceAssetHas57MorphTargets) {
   EXPECT_TRUE(startsWith(run.output, "file: " + face + "\n")) << run.output;
   EXPECT_NE(run.output.find("\nprimitives: 12\n"), std::string::npos) << run.output;
   EXPECT_NE(run.output.find("\nmorph targets: 57\n  browDown_L, browDown_R, "), std::string::npos) << run.output;
+  // Which primitives are open: the tear line is (a thin sheet when given water), the eyeballs are not.
+  EXPECT_NE(run.output.find("open surfaces: 7 of 12"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("#8 M_LacrimalFluid (164)"), std::string::npos) << run.output;
+  EXPECT_EQ(run.output.find("M_ScleraRight ("), std::string::npos) << run.output;
 }
 
 TEST(CliInfo, CorruptAssetIsBadInputNamingTheFile) {

@@ -54,4 +54,9 @@ std::string findMeshDefect(const TriangleMesh& mesh);
 // Expects a mesh without findMeshDefect problems.
 std::string findClosedMeshDefect(const TriangleMesh& mesh);
 
+// The edges that belong to exactly one triangle, orientation ignored, with vertices welded by
+// position (findCoincidentVertices) so that a closed surface split at UV seams counts as closed.
+// 0 for a closed surface; an open sheet (a tear-line card) counts its outline.
+size_t countBoundaryEdges(const TriangleMesh& mesh);
+
 }  // namespace lacrima

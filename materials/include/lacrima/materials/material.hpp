@@ -113,6 +113,10 @@ struct DielectricMedium {
   int priority = 0;
 };
 
+// The BSDF of a dielectric material on an open sheet that bounds no volume (thin_dielectric.hpp:
+// its ior and tint; a rough one's roughness is not modelled there); null for opaque materials.
+std::unique_ptr<Bsdf> makeThinSheetBsdf(const MaterialParams& params);
+
 // The medium of a dielectric material; nothing for opaque materials.
 std::optional<DielectricMedium> dielectricMedium(const MaterialParams& params);
 

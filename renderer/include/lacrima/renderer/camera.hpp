@@ -9,6 +9,9 @@ struct Ray {
   Vec3 origin;
   Vec3 direction;  // unit
   float time = 0.0f;  // in the shutter interval, [0, 1]
+  // Hits closer than this to the origin are ignored: a ray that goes on straight through a thin
+  // sheet keeps its line and starts just past the sheet instead of at an offset origin.
+  float tnear = 0.0f;
 };
 
 // The camera's placement at shutter time t: translation interpolated linearly, rotation by

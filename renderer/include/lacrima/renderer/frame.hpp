@@ -34,6 +34,12 @@ struct MeshInstance {
   // barycentrically at a hit; empty = dry. Read only for skin materials, which then shade as
   // wet skin (materials/wet_skin.hpp); the same at shutter open and close.
   std::vector<float> wetness;
+  // An open dielectric surface that bounds no volume (a tear-line card on a lid, a water
+  // rectangle): rendered as a thin sheet, crossed straight through without entering a medium
+  // (materials/thin_dielectric.hpp). Ignored for opaque materials. The shot loader sets it for
+  // dielectric glTF primitives with boundary edges and for dielectric rectangles; false keeps the
+  // closed-volume model (a mesh, or several meshes together, bounding the medium).
+  bool thinSheet = false;
   bool moves() const { return !positionsAtClose.empty(); }
 };
 
