@@ -16,7 +16,8 @@
 #   tools/hardening.sh memory     peak RSS over 240 frames of the default shot (Release build; not in CI)
 # Any sanitizer report, fuzzer finding or test failure makes the script exit non-zero.
 # Environment: HARDENING_DIR (default build-hardening), BUILD_DIR (Release tree for `memory`,
-# default build), JOBS (default: number of cores), FUZZ_SECONDS, RENDERER_TESTS=1 to add the
+# default build), JOBS (default: number of cores), FUZZ_SECONDS, FUZZ_TIMEOUT (seconds after which
+# one input counts as a hang, default 10), RENDERER_TESTS=1 to add the
 # renderer tests (Monte Carlo convergence tests; left out of CI for time, not timed under ASan),
 # GTEST_FILTER (a gtest filter for the unit tests, e.g. to rerun one test).
 set -euo pipefail
@@ -29,6 +30,7 @@ usage="usage: tools/hardening.sh [all|tests|render|fuzz|memory]
 tree="${HARDENING_DIR:-build-hardening}"
 jobs="${JOBS:-$(nproc)}"
 fuzz_seconds="${FUZZ_SECONDS:-30}"
+fuzz_timeout="${FUZZ_TIMEOUT:-10}"
 
 # halt_on_error: the first report fails the run; detect_leaks: LeakSanitizer at exit.
 export ASAN_OPTIONS="detect_leaks=1:halt_on_error=1:abort_on_error=0:strict_string_checks=1:detect_stack_use_after_return=1"
@@ -109,7 +111,7 @@ run_small_renders() {
 }
 
 # One target: fuzz for fuzz_seconds from the seeds (new inputs go to a scratch corpus, findings
-# to $tree/fuzz-findings). -timeout: an input taking 10 s is a hang; -rss_limit_mb: an OOM.
+# to $tree/fuzz-findings). -timeout: an input taking 10 s (FUZZ_TIMEOUT) is a hang; -rss_limit_mb: an OOM.
 run_fuzzer() {
   local name="$1"
   shift
@@ -120,7 +122,7 @@ run_fuzzer() {
   local tmp
   tmp="$(cd "$tree" && pwd)/fuzz-tmp"
   rm -rf "$tmp" && mkdir -p "$tmp"
-  TMPDIR="$tmp" "$tree/tests/fuzz/targets/${name}_fuzzer" -max_total_time="$fuzz_seconds" -timeout=10 \
+  TMPDIR="$tmp" "$tree/tests/fuzz/targets/${name}_fuzzer" -max_total_time="$fuzz_seconds" -timeout="$fuzz_timeout" \
     -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="$findings/$name-" "$corpus" "$@" 2>"$tree/fuzz-$name.log" || {
     tail -n 60 "$tree/fuzz-$name.log" >&2
     say "fuzz: $name found a problem: the input is in $findings (replay: $tree/tests/fuzz/targets/${name}_fuzzer FILE)"
@@ -173,7 +175,7 @@ campaign_target() {
   say "fuzz-campaign: $name ${limits[*]} (log: $work/fuzz.log)"
   started=$(date +%s)
   # TMPDIR: the target's work folder (libFuzzer's exit skips the target's clean-up).
-  TMPDIR="$work/tmp" "$exe" "${limits[@]}" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
+  TMPDIR="$work/tmp" "$exe" "${limits[@]}" -timeout="$fuzz_timeout" -rss_limit_mb=2048 -print_final_stats=1 \
     -artifact_prefix="$findings/$name-" "$work/new" "${seeds[@]}" 2>"$work/fuzz.log" || status=1
   local seconds=$(( $(date +%s) - started ))
   if [ "$status" != 0 ]; then
@@ -199,7 +201,7 @@ campaign_merge() {
     find "$dir" -maxdepth 1 -type f ! -name README.md -exec cp -n {} "$merged/" \;
   done
   find "$merged" -type f -printf '%f\n' | sort > "$work/before"
-  TMPDIR="$work/tmp" "$tree/tests/fuzz/targets/${name}_fuzzer" -merge=1 -timeout=10 -rss_limit_mb=2048 \
+  TMPDIR="$work/tmp" "$tree/tests/fuzz/targets/${name}_fuzzer" -merge=1 -timeout="$fuzz_timeout" -rss_limit_mb=2048 \
     "$merged" "$work/new" 2>"$work/merge.log" || {
     tail -n 30 "$work/merge.log" >&2
     say "fuzz-campaign: $name: the merge failed (log: $work/merge.log)"
