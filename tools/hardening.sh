@@ -7,7 +7,7 @@
 #   tools/hardening.sh render     small renders under ASan/UBSan (leak check on)
 #   tools/hardening.sh fuzz       each libFuzzer target for FUZZ_SECONDS (default 30)
 #   tools/hardening.sh fuzz-campaign [shot|gltf|performance_track] [--seconds N] [--runs N]
-#                                 not in CI: fuzzes each target (or the one named) for N seconds
+#                                 not in CI: fuzzes each target (or those named) for N seconds
 #                                 and/or N executions (default --seconds 600; with both, whichever
 #                                 comes first), JOBS targets side by side, then merges the inputs
 #                                 that add coverage into the committed corpus tests/fuzz/corpus/
