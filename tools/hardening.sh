@@ -6,10 +6,18 @@
 #   tools/hardening.sh tests      unit tests of geometry, materials, scenes and fuzz under ASan/UBSan
 #   tools/hardening.sh render     small renders under ASan/UBSan (leak check on)
 #   tools/hardening.sh fuzz       each libFuzzer target for FUZZ_SECONDS (default 30)
+#   tools/hardening.sh fuzz-campaign [shot|gltf|performance_track] [--seconds N] [--runs N]
+#                                 not in CI: fuzzes each target (or those named) for N seconds
+#                                 and/or N executions (default --seconds 600; with both, whichever
+#                                 comes first), JOBS targets side by side, then merges the inputs
+#                                 that add coverage into the committed corpus tests/fuzz/corpus/
+#                                 (libFuzzer -merge=1); review and commit them. E.g.
+#                                 JOBS=2 tools/hardening.sh fuzz-campaign --runs 1000000
 #   tools/hardening.sh memory     peak RSS over 240 frames of the default shot (Release build; not in CI)
 # Any sanitizer report, fuzzer finding or test failure makes the script exit non-zero.
 # Environment: HARDENING_DIR (default build-hardening), BUILD_DIR (Release tree for `memory`,
-# default build), JOBS (default: number of cores), FUZZ_SECONDS, RENDERER_TESTS=1 to add the
+# default build), JOBS (default: number of cores), FUZZ_SECONDS, FUZZ_TIMEOUT (seconds after which
+# one input counts as a hang, default 10), RENDERER_TESTS=1 to add the
 # renderer tests (Monte Carlo convergence tests; left out of CI for time, not timed under ASan),
 # GTEST_FILTER (a gtest filter for the unit tests, e.g. to rerun one test).
 set -euo pipefail
@@ -17,9 +25,12 @@ set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$here"
 stage="${1:-all}"
+usage="usage: tools/hardening.sh [all|tests|render|fuzz|memory]
+       tools/hardening.sh fuzz-campaign [shot|gltf|performance_track] [--seconds N] [--runs N]"
 tree="${HARDENING_DIR:-build-hardening}"
 jobs="${JOBS:-$(nproc)}"
 fuzz_seconds="${FUZZ_SECONDS:-30}"
+fuzz_timeout="${FUZZ_TIMEOUT:-10}"
 
 # halt_on_error: the first report fails the run; detect_leaks: LeakSanitizer at exit.
 export ASAN_OPTIONS="detect_leaks=1:halt_on_error=1:abort_on_error=0:strict_string_checks=1:detect_stack_use_after_return=1"
@@ -30,6 +41,7 @@ export LSAN_OPTIONS="suppressions=$here/tools/lsan.supp:print_suppressions=0"
 say() { echo "hardening: [$(( $(date +%s) - script_start )) s] $*" >&2; }
 script_start=$(date +%s)
 
+# Builds the given targets (default: every target a stage below runs).
 configure_and_build() {
   command -v clang++ >/dev/null || { say "needs clang (apt-get install clang)"; exit 2; }
   local launcher=()
@@ -38,9 +50,12 @@ configure_and_build() {
   CC=clang CXX=clang++ cmake -S . -B "$tree" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" "${launcher[@]}" \
     -DLACRIMA_SANITIZE=address,undefined -DLACRIMA_FUZZ=ON >/dev/null
-  local targets=(lacrima lacrima_geometry_tests lacrima_materials_tests lacrima_scenes_tests lacrima_fuzz_tests
-    shot_fuzzer gltf_fuzzer performance_track_fuzzer)
-  [ "${RENDERER_TESTS:-0}" = 1 ] && targets+=(lacrima_renderer_tests)
+  local targets=("$@")
+  if [ ${#targets[@]} -eq 0 ]; then
+    targets=(lacrima lacrima_geometry_tests lacrima_materials_tests lacrima_scenes_tests lacrima_fuzz_tests
+      shot_fuzzer gltf_fuzzer performance_track_fuzzer)
+    [ "${RENDERER_TESTS:-0}" = 1 ] && targets+=(lacrima_renderer_tests)
+  fi
   cmake --build "$tree" -j "$jobs" --target "${targets[@]}"
 }
 
@@ -96,7 +111,7 @@ run_small_renders() {
 }
 
 # One target: fuzz for fuzz_seconds from the seeds (new inputs go to a scratch corpus, findings
-# to $tree/fuzz-findings). -timeout: an input taking 10 s is a hang; -rss_limit_mb: an OOM.
+# to $tree/fuzz-findings). -timeout: an input taking 10 s (FUZZ_TIMEOUT) is a hang; -rss_limit_mb: an OOM.
 run_fuzzer() {
   local name="$1"
   shift
@@ -107,7 +122,7 @@ run_fuzzer() {
   local tmp
   tmp="$(cd "$tree" && pwd)/fuzz-tmp"
   rm -rf "$tmp" && mkdir -p "$tmp"
-  TMPDIR="$tmp" "$tree/tests/fuzz/targets/${name}_fuzzer" -max_total_time="$fuzz_seconds" -timeout=10 \
+  TMPDIR="$tmp" "$tree/tests/fuzz/targets/${name}_fuzzer" -max_total_time="$fuzz_seconds" -timeout="$fuzz_timeout" \
     -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="$findings/$name-" "$corpus" "$@" 2>"$tree/fuzz-$name.log" || {
     tail -n 60 "$tree/fuzz-$name.log" >&2
     say "fuzz: $name found a problem: the input is in $findings (replay: $tree/tests/fuzz/targets/${name}_fuzzer FILE)"
@@ -116,10 +131,131 @@ run_fuzzer() {
   grep -E "stat::number_of_executed_units|stat::peak_rss_mb" "$tree/fuzz-$name.log" | sed "s/^/hardening: $name /" >&2
 }
 
+# The folder name of a target's committed corpus and saved findings (tests/fuzz/corpus/<it>,
+# tests/fuzz/regressions/<it>).
+corpus_name() {
+  case "$1" in
+    shot|gltf) echo "$1" ;;
+    performance_track) echo track ;;
+    *) say "unknown fuzz target '$1' (shot, gltf, performance_track)"; exit 2 ;;
+  esac
+}
+
+# A target's seeds: its committed corpus first, then other inputs it reads but never writes.
+seed_dirs() {
+  echo "tests/fuzz/corpus/$(corpus_name "$1")"
+  [ "$1" = shot ] && echo tests/data/bad_shots tests/data/regression
+  return 0
+}
+
 run_fuzzers() {
-  run_fuzzer shot tests/fuzz/corpus/shot tests/data/bad_shots tests/data/regression
-  run_fuzzer gltf tests/fuzz/corpus/gltf
-  run_fuzzer performance_track tests/fuzz/corpus/track
+  local name
+  for name in shot gltf performance_track; do
+    # shellcheck disable=SC2046  # the folder names hold no spaces
+    run_fuzzer "$name" $(seed_dirs "$name")
+  done
+}
+
+# ---- fuzz-campaign: fuzz longer, keep what adds coverage in the repo ----------------------------
+
+# One target's campaign, in $tree/fuzz-campaign/<target>: fuzz from every seed and saved finding
+# into a scratch folder, then merge. Prints a summary; non-zero on a finding (the merge still runs,
+# so that the coverage reached is not lost; the finding is in $tree/fuzz-findings).
+campaign_target() {
+  local name="$1" work="$tree/fuzz-campaign/$1" findings="$tree/fuzz-findings" started status=0
+  local exe="$tree/tests/fuzz/targets/${name}_fuzzer" regressions
+  regressions="tests/fuzz/regressions/$(corpus_name "$name")"
+  local seeds
+  read -r -a seeds <<< "$(seed_dirs "$name" | tr '\n' ' ')"
+  [ -d "$regressions" ] && seeds+=("$regressions")
+  rm -rf "$work" && mkdir -p "$work/new" "$work/tmp" "$findings"
+  local limits=()
+  [ -n "$campaign_seconds" ] && limits+=(-max_total_time="$campaign_seconds")
+  [ -n "$campaign_runs" ] && limits+=(-runs="$campaign_runs")
+  say "fuzz-campaign: $name ${limits[*]} (log: $work/fuzz.log)"
+  started=$(date +%s)
+  # TMPDIR: the target's work folder (libFuzzer's exit skips the target's clean-up).
+  TMPDIR="$work/tmp" "$exe" "${limits[@]}" -timeout="$fuzz_timeout" -rss_limit_mb=2048 -print_final_stats=1 \
+    -artifact_prefix="$findings/$name-" "$work/new" "${seeds[@]}" 2>"$work/fuzz.log" || status=1
+  local seconds=$(( $(date +%s) - started ))
+  if [ "$status" != 0 ]; then
+    tail -n 60 "$work/fuzz.log" >&2
+    say "fuzz-campaign: $name found a problem: the input is in $findings (replay: $exe FILE)"
+  fi
+  campaign_merge "$name" "$work" "${seeds[@]}" || status=1
+  campaign_summary "$name" "$work" "$seconds"
+  return "$status"
+}
+
+# Merges the scratch inputs that add coverage into tests/fuzz/corpus/<target>. The merge's output
+# folder starts with every seed (the committed corpus and the read-only ones), so an input is kept
+# only when it adds features beyond all of them; libFuzzer names what it adds by its SHA-1, and only
+# those added files are copied into the repo.
+campaign_merge() {
+  local name="$1" work="$2"
+  shift 2
+  local merged="$work/merged" corpus dir
+  corpus="tests/fuzz/corpus/$(corpus_name "$name")"
+  rm -rf "$merged" && mkdir -p "$merged"
+  for dir in "$@"; do
+    find "$dir" -maxdepth 1 -type f ! -name README.md -exec cp -n {} "$merged/" \;
+  done
+  find "$merged" -type f -printf '%f\n' | sort > "$work/before"
+  TMPDIR="$work/tmp" "$tree/tests/fuzz/targets/${name}_fuzzer" -merge=1 -timeout="$fuzz_timeout" -rss_limit_mb=2048 \
+    "$merged" "$work/new" 2>"$work/merge.log" || {
+    tail -n 30 "$work/merge.log" >&2
+    say "fuzz-campaign: $name: the merge failed (log: $work/merge.log)"
+    return 1
+  }
+  find "$merged" -type f -printf '%f\n' | sort | comm -13 "$work/before" - > "$work/added"
+  while read -r file; do cp "$merged/$file" "$corpus/"; done < "$work/added"
+}
+
+# What the campaign of one target reached: executions, coverage at the end (libFuzzer's cov: edges
+# and ft: features), the committed corpus afterwards, duration.
+campaign_summary() {
+  local name="$1" work="$2" seconds="$3" corpus executed rate final added=0
+  corpus="tests/fuzz/corpus/$(corpus_name "$1")"
+  [ -f "$work/added" ] && added=$(wc -l < "$work/added")
+  executed=$(grep -oE "stat::number_of_executed_units: +[0-9]+" "$work/fuzz.log" | grep -oE "[0-9]+$" || echo "?")
+  rate=$(grep -oE "stat::average_exec_per_sec: +[0-9]+" "$work/fuzz.log" | grep -oE "[0-9]+$" || echo "?")
+  final=$(grep -E "cov: [0-9]+ ft: [0-9]+" "$work/fuzz.log" | tail -n 1 | grep -oE "cov: [0-9]+ ft: [0-9]+" || echo "cov: ? ft: ?")
+  say "fuzz-campaign: $name: $executed executions in $seconds s ($rate/s), $final;" \
+    "merged $added new inputs ($(grep -oE "MERGE-OUTER: .*" "$work/merge.log" | tail -n 1));" \
+    "$corpus: $(find "$corpus" -type f | wc -l) files, $(du -sk --apparent-size "$corpus" | cut -f1) kB"
+}
+
+# Parses [target] [--seconds N] [--runs N], then runs up to JOBS targets side by side (each is one
+# single-threaded libFuzzer process). Fails when any target found a problem.
+run_fuzz_campaign() {
+  local names=() arg
+  campaign_seconds="" campaign_runs=""
+  while [ $# -gt 0 ]; do
+    arg="$1"
+    case "$arg" in
+      --seconds) campaign_seconds="${2:?--seconds needs a number}"; shift ;;
+      --runs) campaign_runs="${2:?--runs needs a number}"; shift ;;
+      shot|gltf|performance_track) names+=("$arg") ;;
+      *) echo "$usage" >&2; exit 2 ;;
+    esac
+    shift
+  done
+  [ -z "$campaign_seconds$campaign_runs" ] && campaign_seconds=600
+  [ ${#names[@]} -eq 0 ] && names=(shot gltf performance_track)
+  configure_and_build "${names[@]/%/_fuzzer}"
+  local pids=() failed=0 i
+  for ((i = 0; i < ${#names[@]}; ++i)); do
+    # At most JOBS at once: wait for the oldest still running.
+    [ "$i" -ge "$jobs" ] && { wait "${pids[$((i - jobs))]}" || failed=1; }
+    campaign_target "${names[$i]}" &
+    pids+=($!)
+  done
+  for ((i = ${#names[@]} > jobs ? ${#names[@]} - jobs : 0; i < ${#names[@]}; ++i)); do
+    wait "${pids[$i]}" || failed=1
+  done
+  say "fuzz-campaign: committed corpus now $(find tests/fuzz/corpus -type f | wc -l) files," \
+    "$(du -sk --apparent-size tests/fuzz/corpus | cut -f1) kB; review with git status and commit"
+  return "$failed"
 }
 
 # Peak RSS of the Release binary over 240 frames of the default shot at 64x36, 1 spp. The shot
@@ -147,7 +283,8 @@ case "$stage" in
   tests) configure_and_build; run_unit_tests ;;
   render) configure_and_build; run_small_renders ;;
   fuzz) configure_and_build; run_fuzzers ;;
+  fuzz-campaign) shift; run_fuzz_campaign "$@" ;;
   memory) run_memory ;;
-  *) echo "usage: tools/hardening.sh [all|tests|render|fuzz|memory]" >&2; exit 2 ;;
+  *) echo "$usage" >&2; exit 2 ;;
 esac
 say "$stage: OK in $(( $(date +%s) - start )) s"

@@ -97,7 +97,8 @@ MaterialParams mapGltfMaterial(const GltfMaterialInfo& m) {
 
 class ShotReader {
  public:
-  ShotReader(Checker& c, Shot& shot) : c_(c), shot_(shot), baseDir_(shot.path.parent_path()) {}
+  ShotReader(Checker& c, Shot& shot, const GltfAssetLoader& loadAsset)
+      : c_(c), shot_(shot), baseDir_(shot.path.parent_path()), loadAsset_(loadAsset) {}
 
   void read(const Json& root) {
     ObjectReader o(c_, root, "", kRootKeys);
@@ -157,6 +158,7 @@ class ShotReader {
   Checker& c_;
   Shot& shot_;
   fs::path baseDir_;
+  const GltfAssetLoader& loadAsset_;
 
   // ---- helpers -----------------------------------------------------------------------------
 
@@ -568,7 +570,7 @@ class ShotReader {
       asset.file = resolve(*file);
       if (checkExists(o.at("file"), *file, asset.file)) {
         try {
-          asset.gltf = std::make_shared<const GltfAsset>(loadGltfAsset(asset.file));
+          asset.gltf = loadAsset_(asset.file);
           for (const std::string& w : asset.gltf->warnings)
             shot_.warnings.push_back(c_.warning(o.at("file"), Anchor::Value, asset.file.string() + ": " + w));
         } catch (const std::exception& e) {
@@ -1449,6 +1451,10 @@ std::optional<std::string> readTextFile(const fs::path& path, std::string& error
 }  // namespace
 
 Shot loadShot(const std::filesystem::path& path) {
+  return loadShot(path, [](const fs::path& file) { return std::make_shared<const GltfAsset>(loadGltfAsset(file)); });
+}
+
+Shot loadShot(const std::filesystem::path& path, const GltfAssetLoader& loadAsset) {
   Shot shot;
   shot.path = path;
   std::string readError;
@@ -1470,7 +1476,7 @@ Shot loadShot(const std::filesystem::path& path) {
     checker.error(d.pointer, Anchor::Key,
                   fmt::format("duplicate key '{}' (first given at line {}, column {})", key, first.line, first.column));
   }
-  ShotReader(checker, shot).read(*json);
+  ShotReader(checker, shot, loadAsset).read(*json);
   if (checker.errorCount() > 0) throw ShotError(checker.diagnostics());
   // Before any surface point is found: they index the refined triangles.
   refineDetailRegions(shot);

@@ -2,6 +2,8 @@
 // Shot files (JSON, version 1): loading with strict, complete validation, and turning a shot
 // into a renderer Frame through the geometry stage.
 #include <filesystem>
+#include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -34,6 +36,7 @@ class ShotError : public InputError {
 };
 
 struct Shot;  // full definition in shot_model.hpp (plain data)
+struct GltfAsset;
 
 }  // namespace lacrima
 
@@ -43,6 +46,13 @@ namespace lacrima {
 
 // Reads, parses and validates a shot file. Throws ShotError listing every problem.
 Shot loadShot(const std::filesystem::path& path);
+
+// How loadShot reads the glTF file of an asset (it throws for a file it cannot load).
+using GltfAssetLoader = std::function<std::shared_ptr<const GltfAsset>(const std::filesystem::path&)>;
+
+// The same, reading the assets through `loadAsset`: a process that loads many shots naming the
+// same large assets (the shot fuzzer, tests/fuzz) can share one loaded copy between them.
+Shot loadShot(const std::filesystem::path& path, const GltfAssetLoader& loadAsset);
 
 // Builds the renderer input for one frame number (assets are loaded once and cached inside
 // the Shot's asset cache). Throws InputError for missing/corrupt assets.
