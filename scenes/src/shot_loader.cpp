@@ -967,7 +967,9 @@ class ShotReader {
     AnimatedFloat intensity{1.0f, nullptr};
     if (const Json* i = o.find("intensity"))
       if (auto x = readAnimatedNumber(c_, *i, o.at("intensity"), Range::atLeast(0))) intensity = *x;
-    if (c_.errorCount() == before) {
+    // animatedCenter is checked too: a missing center is not always an error yet here (with a
+    // misspelt key such as "centcr" the object's unknown-key error comes later, from o).
+    if (c_.errorCount() == before && animatedCenter) {
       shot_.lights.push_back(light);
       shot_.lightCenterCurves.push_back(animatedCenter->curve);
       shot_.lightIntensities.push_back(intensity);
