@@ -67,7 +67,11 @@ configure_and_build() {
 # 2-5x slower), and the checks of the default shot's story and course, which load the whole
 # default shot (subdivision, courses for 180 frames) for 20 s each even in Release. Their code
 # still runs under the sanitizers: in the smaller liquid-tear tests and the default shot's render below.
+# Also the replay of the shot fuzz campaign's 1,100 inputs (55 s of CPU under ASan): they were
+# fuzzed under the sanitizers when found and the Release ctest replays them on every run; the
+# hand-written seeds and saved findings are still replayed here.
 excluded_tests="LiquidTearShot.SimulationCostPerFrameIsSmall:DefaultShotStory.*:LiquidTearCourse.OnTheDefaultShot*"
+excluded_tests+=":FuzzCorpusReplay.ShotCampaignInputs*"
 
 # One test executable as JOBS gtest shards side by side (the tests are single-threaded and ASan
 # makes them slow; each shard runs every JOBS-th test), each shard's output printed when it ends.
