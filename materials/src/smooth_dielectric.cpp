@@ -26,15 +26,9 @@ std::optional<BsdfSample> SmoothDielectricBsdf::sample(const Vec3& wo, float uLo
   const float R = fresnelDielectric(wo.z(), ior_);  // 1 under total internal reflection
   const float T = 1.0f - R;
 
+  if (uLobe < R || T <= 0.0f) return specularReflectionSample(wo, R);  // the perfect mirror
   BsdfSample s;
   s.specular = true;
-  if (uLobe < R || T <= 0.0f) {
-    // Perfect mirror, f = R / |cos_i| (pbrt-v4 DielectricBxDF).
-    s.wi = Vec3(-wo.x(), -wo.y(), wo.z());
-    s.f = Color::Constant(R / std::abs(s.wi.z()));
-    s.pdf = R;
-    return s;
-  }
   const auto refraction = refract(wo, n, ior_);
   if (!refraction || refraction->wt.z() == 0.0f) return std::nullopt;  // only at rounding limits
   // Refraction, f = T / |cos_i|, radiance scaled by 1/etap^2 (pbrt-v4 DielectricBxDF, TransportMode::Radiance).

@@ -25,14 +25,9 @@ Color ThinDielectricBsdf::straightTransmittance(const Vec3& wo) const { return t
 std::optional<BsdfSample> ThinDielectricBsdf::sample(const Vec3& wo, float uLobe, const Vec2&) const {
   if (wo.z() == 0.0f) return std::nullopt;
   const float R = reflectance(wo.z()), T = 1.0f - R;
+  if (uLobe < R || T <= 0.0f) return specularReflectionSample(wo, R);
   BsdfSample s;
   s.specular = true;
-  if (uLobe < R || T <= 0.0f) {
-    s.wi = Vec3(-wo.x(), -wo.y(), wo.z());
-    s.f = Color::Constant(R / std::abs(s.wi.z()));
-    s.pdf = R;
-    return s;
-  }
   s.wi = -wo;
   s.f = tint_ * (T / std::abs(s.wi.z()));
   s.pdf = T;

@@ -4,6 +4,7 @@
 // Conventions follow pbrt-v4: f() excludes the cosine factor; the path throughput update is
 // f * |cos(wi)| / pdf. Delta (specular) lobes return f and pdf such that f*|cos|/pdf is the
 // lobe weight (pdf = probability of choosing the lobe), and eval()/pdf() return zero for them.
+#include <cmath>
 #include <memory>
 #include <optional>
 
@@ -46,6 +47,18 @@ class Bsdf {
   // Reflectance-like colour for the albedo AOV.
   virtual Color albedo() const = 0;
 };
+
+// The mirror lobe of a smooth interface picked with probability R (its Fresnel reflectance):
+// wi = mirror of wo, f = R / |cos_i|, pdf = R, so the weight f |cos_i| / pdf is 1 (pbrt-v4
+// DielectricBxDF). Shared by the smooth and thin dielectrics.
+inline BsdfSample specularReflectionSample(const Vec3& wo, float R) {
+  BsdfSample s;
+  s.specular = true;
+  s.wi = Vec3(-wo.x(), -wo.y(), wo.z());
+  s.f = Color::Constant(R / std::abs(s.wi.z()));
+  s.pdf = R;
+  return s;
+}
 
 // The sample of a one-sample mixture of reflection lobes: wi was drawn by one lobe, but the
 // value and density are the whole mixture's (eval, pdf), so that MIS sees the mixture. Nothing
