@@ -10,6 +10,7 @@
 #include "lacrima/materials/fresnel.hpp"
 #include "lacrima/materials/wet_skin.hpp"
 #include "ray_offset.hpp"
+#include "sample_dimensions.hpp"
 #include "subsurface_walk.hpp"
 
 namespace lacrima {
@@ -188,8 +189,9 @@ PathIntegrator::Trace PathIntegrator::traceToRealSurface(Ray& ray, SurfaceHit& h
 
 Color PathIntegrator::sampleDirectLight(const Vertex& v, const MediumStack& media, PixelSampler& sampler,
                                         PathCounters& counters) const {
-  const float uSelect = sampler.get1D();
-  const Vec2 u = sampler.get2D();
+  const std::array<float, 4> light4 = sampler.get4D();  // the light's choice, the point on it
+  const float uSelect = light4[0];
+  const Vec2 u(light4[1], light4[2]);
   if (v.bsdf->isPureSpecular() || lights_.empty()) return Color::Zero();
   const LightSample light = lights_.sample(v.position, uSelect, u);
   if (light.pdf <= 0.0f || (light.radiance <= 0.0f).all()) return Color::Zero();
@@ -353,6 +355,8 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
       result += throughput * material.emission;
     if (depth >= maxDepth_) break;
 
+    const uint32_t dimensions = sample_dimensions::bounceBase(depth);
+    sampler.setDimension(dimensions + sample_dimensions::kLight);
     result += throughput * sampleDirectLight(v, media, sampler, counters);
     if (subsurface_[hit.materialId]) {  // skin with subsurface: v.bsdf's lobes or a random walk
       const float dryFraction = 1.0f - (wetSkin ? wetSkin->coverage() : 0.0f);
@@ -361,17 +365,20 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
       const SubsurfaceMedium medium =
           textured.skin ? subsurfaceMedium(*textured.skin, *textured.skin->subsurface) : skin.medium;
       const SkinBsdf& surface = textured.skin ? std::get<SkinBsdf>(textured.bsdf) : *skin.bsdf;
+      sampler.setDimension(dimensions + sample_dimensions::kSubsurfaceChoice);
       const Below below = scatterBelowSurface(skin, medium, surface, v, dryFraction, throughput, sampler, counters);
       if (below == Below::Absorbed) break;
       if (below == Below::Exited) {
         hit.position = v.position;  // the path goes on from the exit point
         ng = v.geometricNormal;
+        sampler.setDimension(dimensions + sample_dimensions::kExitLight);
         result += throughput * sampleDirectLight(v, media, sampler, counters);
       }
     }
 
-    const float uLobe = sampler.get1D();
-    const std::optional<BsdfSample> bs = v.bsdf->sample(v.woLocal, uLobe, sampler.get2D());
+    sampler.setDimension(dimensions + sample_dimensions::kBsdf);
+    const std::array<float, 4> u = sampler.get4D();  // the lobe, the direction
+    const std::optional<BsdfSample> bs = v.bsdf->sample(v.woLocal, u[0], Vec2(u[1], u[2]));
     if (!bs || bs->pdf <= 0.0f) break;
     const Vec3 wi = v.frame.toWorld(bs->wi).normalized();
     const bool geometricReflect = wi.dot(ng) * v.wo.dot(ng) > 0.0f;
@@ -396,6 +403,7 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
 
     if (depth >= kRussianRouletteDepth) {
       const float survive = std::min(1.0f, (throughput * etaScale).maxCoeff());
+      sampler.setDimension(dimensions + sample_dimensions::kRoulette);
       if (sampler.get1D() >= survive) break;
       throughput /= survive;
     }
@@ -428,8 +436,10 @@ PathIntegrator::Below PathIntegrator::scatterBelowSurface(const SubsurfaceSkin& 
   }
   // Entry pays the Fresnel transmission of the base it replaces (skin.hpp, subsurface.hpp).
   const float entry = 1.0f - fresnelDielectric(v.woLocal.z(), skin.ior);
+  // The walk draws as many numbers as it takes steps: an independent stream of its own.
+  PixelSampler walk = sampler.independentStream(sampler.dimension());
   const auto exit = walkBelowSurface(scene_, medium, dielectricIndex_, v.position, v.geometricNormal, v.time,
-                                     sampler, counters.rays);
+                                     walk, counters.rays);
   if (!exit) return Below::Absorbed;
   throughput *= exit->weight * (dryFraction * entry / (1.0f - pSurface));
   v.position = exit->position;

@@ -18,6 +18,7 @@
 #include "lacrima/geometry/error.hpp"
 #include "lacrima/renderer/camera.hpp"
 #include "light_sampler.hpp"
+#include "sample_dimensions.hpp"
 
 namespace lacrima {
 
@@ -83,9 +84,11 @@ class TileRenderer {
     const RenderSettings& s = frame_.settings;
     PixelResult sum;
     for (int i = 0; i < s.samplesPerPixel; ++i) {
-      PixelSampler sampler(s.seed, s.frameNumber, x, y, i);
-      const Vec2 jitter = sampler.get2D();
-      const Vec2 lens = sampler.get2D();
+      PixelSampler sampler(s.sampler, s.seed, s.frameNumber, x, y, i, s.samplesPerPixel);
+      const std::array<float, 4> pixelAndLens = sampler.get4D();  // sample_dimensions::kPixelAndLens
+      const Vec2 jitter(pixelAndLens[0], pixelAndLens[1]);
+      const Vec2 lens(pixelAndLens[2], pixelAndLens[3]);
+      sampler.setDimension(sample_dimensions::kTime);
       const float time = hasMotion_ ? sampler.get1D() : 0.0f;
       const Ray ray =
           generateCameraRay(frame_.camera, s.width, s.height, float(x) + jitter.x(), float(y) + jitter.y(), lens, time);

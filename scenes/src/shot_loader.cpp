@@ -40,6 +40,7 @@ const std::vector<std::string> kRootKeys = {"version",   "frames", "output",    
                                             "tears",     "details", "eyes"};
 const std::vector<std::string> kMaterialTypes = {"diffuse", "skin", "water", "rough_dielectric"};
 const std::vector<std::string> kCausticsModes = {"mnee", "straight", "off"};  // order of readCaustics' modes
+const std::vector<std::string> kSamplerKinds = {"sobol", "independent"};  // order of readSampler's kinds
 const std::vector<std::string> kLightTypes = {"rectangle", "sphere"};
 const std::vector<std::string> kShapeTypes = {"sphere", "ellipsoid", "rectangle"};
 const std::vector<std::string> kTearTypes = {"dripping", "shedding", "liquid"};
@@ -275,7 +276,7 @@ class ShotReader {
   bool readRender(const Json& v) {
     const size_t before = c_.errorCount();
     ObjectReader o(c_, v, "/render", {"width", "height", "spp", "maxDepth", "seed", "threads", "floatOutput",
-                                           "transparentShadows", "caustics"});
+                                           "transparentShadows", "caustics", "sampler"});
     RenderSettings& s = shot_.render;
     if (auto x = o.integer("width", Range::closed(1, 16384), true)) s.width = int(*x);
     if (auto x = o.integer("height", Range::closed(1, 16384), true)) s.height = int(*x);
@@ -286,7 +287,24 @@ class ShotReader {
     if (auto x = o.boolean("floatOutput")) s.floatOutput = *x;
     if (auto x = o.boolean("transparentShadows")) s.transparentShadows = *x;
     readCaustics(o, s);
+    readSampler(o, s);
     return c_.errorCount() == before;
+  }
+
+  // "sampler": "sobol" | "independent" (docs/shot-format.md, "Sampling").
+  void readSampler(ObjectReader& o, RenderSettings& s) {
+    const auto kind = o.string("sampler");
+    if (!kind) return;
+    const auto it = std::find(kSamplerKinds.begin(), kSamplerKinds.end(), *kind);
+    if (it == kSamplerKinds.end()) {
+      const std::string suggestion = didYouMean(*kind, kSamplerKinds);
+      o.error("sampler", suggestion.empty()
+                             ? fmt::format("unknown sampler '{}' (expected one of {})", *kind, quotedList(kSamplerKinds))
+                             : fmt::format("unknown sampler '{}'{}", *kind, suggestion));
+      return;
+    }
+    static constexpr SamplerKind kinds[] = {SamplerKind::Sobol, SamplerKind::Independent};
+    s.sampler = kinds[it - kSamplerKinds.begin()];
   }
 
   // "caustics": "mnee" | "straight" | "off" (docs/shot-format.md, "Caustics"). The older

@@ -1,6 +1,6 @@
 // Time to quality (tools/src/quality_curve.*, `lacrima bench --quality`): RMSE, the fitted
 // RMSE-vs-spp slope and the samples and seconds to reach a target, on curves with known answers;
-// and the command itself on a small diffuse scene (cached reference, slope near -0.5).
+// and the command itself on a small diffuse scene (cached reference, a slope steeper than -0.5).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -99,8 +99,10 @@ TEST(BenchQuality, ReportsTheSlopeAndReusesTheCachedReference) {
   const size_t at = first.output.find("RMSE-vs-spp slope");
   ASSERT_NE(at, std::string::npos) << first.output;
   const double slope = std::stod(first.output.substr(at + 17));
-  EXPECT_LT(slope, -0.4) << first.output;  // independent samples: -0.5
-  EXPECT_GT(slope, -0.6) << first.output;
+  // The default Sobol sampler: steeper than independent samples' -0.5 (measured -0.69; the
+  // independent baseline is checked in tests/renderer/sampler_convergence_test.cpp).
+  EXPECT_LT(slope, -0.58) << first.output;
+  EXPECT_GT(slope, -1.0) << first.output;  // no faster than a smooth 2D integrand allows
   EXPECT_NE(first.output.find("RMSE 0.004"), std::string::npos) << first.output;
 
   const auto second = test::lacrima(args);

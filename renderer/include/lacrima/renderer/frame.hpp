@@ -11,6 +11,7 @@
 
 #include "lacrima/geometry/math.hpp"
 #include "lacrima/geometry/mesh.hpp"
+#include "lacrima/geometry/sampler.hpp"
 #include "lacrima/materials/material.hpp"
 
 namespace lacrima {
@@ -92,6 +93,7 @@ struct RenderSettings {
   int samplesPerPixel = 16;
   int maxDepth = 12;       // path vertices after the camera ray
   uint64_t seed = 0;
+  SamplerKind sampler = SamplerKind::Sobol;  // how each pixel's samples are spread (sampler.hpp)
   int threads = 0;         // 0 = all cores
   int frameNumber = 1;     // part of the random key
   bool floatOutput = false;  // EXR beauty as float instead of half

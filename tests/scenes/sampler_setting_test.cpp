@@ -1,0 +1,39 @@
+// The `render.sampler` key (docs/shot-format.md, "Sampling").
+#include <gtest/gtest.h>
+
+#include "lacrima/scenes/shot.hpp"
+#include "scenes/shot_test_support.hpp"
+
+namespace lacrima {
+namespace {
+
+using test::expectSingleError;
+using test::writeShot;
+
+std::string shotWithRender(const std::string& renderExtra) {
+  return "{\n  \"version\": 1,\n  \"frames\": {\"start\": 1, \"end\": 1, \"fps\": 24},\n"
+         "  \"output\": \"out.####.exr\",\n  \"render\": {\"width\": 8, \"height\": 8, \"spp\": 1" + renderExtra + "},\n"
+         "  \"camera\": {\"position\": [0, 0, 3], \"lookAt\": [0, 0, 0], \"fov\": 30}\n}\n";
+}
+
+SamplerKind samplerOf(const std::string& name, const std::string& renderExtra) {
+  return loadShot(writeShot(name, shotWithRender(renderExtra))).render.sampler;
+}
+
+TEST(SamplerSetting, DefaultsToSobolAndReadsEachKind) {
+  EXPECT_EQ(samplerOf("sampler_default.json", ""), SamplerKind::Sobol);
+  EXPECT_EQ(samplerOf("sampler_sobol.json", R"(, "sampler": "sobol")"), SamplerKind::Sobol);
+  EXPECT_EQ(samplerOf("sampler_independent.json", R"(, "sampler": "independent")"), SamplerKind::Independent);
+}
+
+TEST(SamplerSetting, BadValuesAreReportedAtTheirPath) {
+  expectSingleError("sampler_typo.json", shotWithRender(R"(, "sampler": "sobel")"),
+                    "/render/sampler: unknown sampler 'sobel'; did you mean 'sobol'?");
+  expectSingleError("sampler_unknown.json", shotWithRender(R"(, "sampler": "halton")"),
+                    "/render/sampler: unknown sampler 'halton' (expected one of 'sobol', 'independent')");
+  expectSingleError("sampler_type.json", shotWithRender(R"(, "sampler": 3)"),
+                    "/render/sampler: expected a non-empty string, found 3");
+}
+
+}  // namespace
+}  // namespace lacrima
