@@ -175,8 +175,11 @@ TEST(EnvironmentMap, PdfIsPositiveWhereverTheBilinearRadianceIs) {
       const Vec3 d = uvDirection((b + 0.5) / (8 * w), (a + 0.5) / (8 * h));
       const bool positive = map.radiance(d).maxCoeff() > 0.0f;
       lit += positive ? 1 : 0;
-      if (positive) EXPECT_GT(map.pdf(d), 0.0f) << a << "," << b;
-      else dark += map.pdf(d) == 0.0f ? 1 : 0;
+      if (positive) {
+        EXPECT_GT(map.pdf(d), 0.0f) << a << "," << b;
+      } else {
+        dark += map.pdf(d) == 0.0f ? 1 : 0;
+      }
     }
   }
   EXPECT_EQ(lit, 16 * 16) << "the texel's bilinear footprint is 2 x 2 texels";
@@ -211,8 +214,12 @@ TEST(EnvironmentMap, SamplesAgreeWithPdfAndRadiance) {
   for (int j = 0; j < kH; ++j) {
     for (int i = 0; i < kW; ++i) {
       const Vec3 d = texelCentre(i, j, kW, kH);
-      if (unrotated.radiance(d).maxCoeff() > 0.0f) EXPECT_GT(unrotated.pdf(d), 0.0f) << i << "," << j;
-      if (j == 21) EXPECT_EQ(unrotated.pdf(d), 0.0f) << i << "," << j;
+      if (unrotated.radiance(d).maxCoeff() > 0.0f) {
+        EXPECT_GT(unrotated.pdf(d), 0.0f) << i << "," << j;
+      }
+      if (j == 21) {
+        EXPECT_EQ(unrotated.pdf(d), 0.0f) << i << "," << j;
+      }
       expectColorNear(unrotated.radiance(d), texel(rgb, kW, i, j) * intensity,
                       std::to_string(i) + "," + std::to_string(j), neighbourhoodMax(rgb, kW, kH, i, j) * intensity);
     }

@@ -45,8 +45,9 @@ TEST(PixelFilter, ProfilesIntegrateToOneOverTheirSupportAndVanishOutside) {
     EXPECT_NEAR(integral, 1.0, 1e-6) << nameOf(f);
     EXPECT_EQ(filterProfile(f, r * 1.001), 0.0) << nameOf(f);
     EXPECT_EQ(filterProfile(f, -r * 1.001), 0.0) << nameOf(f);
-    if (!hasNegativeLobes(f.type))
+    if (!hasNegativeLobes(f.type)) {
       for (int k = 0; k <= 1000; ++k) ASSERT_GE(filterProfile(f, -r + 2.0 * r * k / 1000), 0.0) << nameOf(f);
+    }
   }
 }
 
@@ -146,8 +147,9 @@ TEST(PixelFilter, MitchellWeightsCarryTheSignOfItsLobesAndAverageOne) {
       const FilterSample s = sampler.sample(randomPair(5, k));
       const double fx = filterProfile(f, s.offset.x()), fy = filterProfile(f, s.offset.y());
       // Away from the zero crossings (where a table bin may straddle the sign change).
-      if (std::abs(fx) > 1e-2 * peak && std::abs(fy) > 1e-2 * peak)
+      if (std::abs(fx) > 1e-2 * peak && std::abs(fy) > 1e-2 * peak) {
         ASSERT_EQ(s.weight < 0.0f, fx * fy < 0.0) << s.offset.transpose() << " weight " << s.weight;
+      }
       negative += s.weight < 0.0f ? 1 : 0;
       sum += s.weight;
       sumSq += double(s.weight) * s.weight;
