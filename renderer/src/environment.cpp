@@ -12,27 +12,39 @@
 // above, +X goes towards -Z): whatever the unrotated map shows in direction d, the rotated map
 // shows in direction R_y(r) d. In (u, v) this is phi_world = phi_map - r, a shift of u.
 //
-// Lookup is nearest-texel (no filtering). This keeps radiance() piecewise constant on exactly the
-// cells over which the sampling density is piecewise constant, so sample(), radiance() and pdf()
-// agree for every direction, not only on average.
+// Lookup is bilinear between the four nearest texel centres (texel (i, j) has its centre at
+// u = (i + 1/2) / width, v = (j + 1/2) / height), wrapping around in longitude and clamping in
+// latitude (above the first row's centres and below the last row's, the row itself).
+// Nearest-texel lookup shows a map's texels as blocks wherever it is magnified (the mirror image
+// of the map in a smooth drop, a blurry low-resolution sky behind the face).
 //
 // Importance sampling (pbrt-v3 13.6.7, "infinite area lights"): a piecewise-constant 2D
-// distribution over texels, a marginal over rows and one conditional per row, with texel weight
-// luminance(texel) * solid angle of its row (cos(theta_top) - cos(theta_bottom); the exact
-// integral of sin(theta) over the row, which, unlike sin at the row centre, never vanishes).
-// Sampling picks (u, v) with density p_uv, constant per texel, and maps it to a direction; with
-// d(omega) = 2 pi^2 sin(theta) du dv the solid-angle density is p_uv / (2 pi^2 sin(theta)), where
-// theta is the direction's own polar angle (0 returned at the poles, where it is unbounded).
+// distribution, a marginal over rows and one conditional per row, over the *cells between texel
+// centres*: cell (c, r) spans u in [(c + 1/2) / w, (c + 3/2) / w) (wrapping past u = 1) and v
+// between the centres of rows r - 1 and r; rows 0 and h are the half-height caps at the poles,
+// from the pole to the first (last) row of centres. Inside a cell the bilinear radiance blends
+// exactly its four corner texels (clamped rows at the caps), so its integral over the cell in
+// (u, v) is the mean of the corners times the cell's area. A cell's weight is that mean luminance
+// times the cell's solid angle (2 pi / w) (cos(theta_top) - cos(theta_bottom)), exact in theta
+// (unlike sin at the cell's centre, it never vanishes). So the density follows the bilinear
+// radiance as closely as a piecewise-constant one can, and the pdf is > 0 wherever the radiance
+// is: a positive radiance needs a positive corner, which makes its cell's weight positive (a
+// distribution over the texels themselves would need each texel's 3x3 neighbourhood for that,
+// and would spread the sun's samples over twice its width). Sampling picks (u, v) with density
+// p_uv, constant per cell, and maps it to a direction; with d(omega) = 2 pi^2 sin(theta) du dv
+// the solid-angle density is p_uv / (2 pi^2 sin(theta)), where theta is the direction's own polar
+// angle (0 returned at the poles, where it is unbounded).
 //
-// Zero-luminance texels get no floor: they are never sampled and pdf() returns 0 there. This is
+// Zero-weight cells get no floor: they are never sampled and pdf() returns 0 there. This is
 // consistent for multiple importance sampling, because pdf(dir) is defined from the same stored
 // CDFs that sample() inverts (bin probability = difference of adjacent CDF entries), so pdf(dir)
-// is the density of sample() for every direction, zero included. A texel with pdf 0 has radiance
-// 0 (luminance weights are positive and texels are clamped to >= 0), except for texels whose
-// weight is below float resolution of their row's CDF; such directions are left to BSDF sampling,
-// whose MIS weight is then 1, so the estimate stays unbiased. Callers must skip light samples with
-// pdf == 0 (possible only exactly at a pole). An entirely black map gives each texel the
-// probability of its solid angle (close to uniform on the sphere; still exactly matched by pdf()).
+// is the density of sample() for every direction, zero included. A cell with pdf 0 has radiance
+// 0 (all four corners black: luminance weights are positive and texels are clamped to >= 0),
+// except for cells whose weight is below float resolution of their row's CDF; such directions are
+// left to BSDF sampling, whose MIS weight is then 1, so the estimate stays unbiased. Callers must
+// skip light samples with pdf == 0 (possible only exactly at a pole). An entirely black map gives
+// each cell the probability of its solid angle (close to uniform on the sphere; still exactly
+// matched by pdf()).
 //
 // Texels that are NaN, infinite or negative (in any channel) become 0 and are counted
 // (clampedTexelCount()); the caller decides how to report them.
@@ -56,11 +68,6 @@ namespace lacrima {
 namespace {
 
 constexpr double kPiD = 3.14159265358979323846;
-
-// The solid angle of row j of an h-row map divided by 2 pi / width: cos(theta_j) - cos(theta_j+1).
-double rowSolidAngleFactor(int j, int h) {
-  return std::cos(kPiD * j / h) - std::cos(kPiD * (j + 1) / h);
-}
 
 }  // namespace
 
@@ -91,33 +98,50 @@ EnvironmentMap::EnvironmentMap(int width, int height, std::vector<float> rgb, fl
     clampedTexels_ += bad ? 1 : 0;
   }
 
-  // Conditional distributions (one per row, over columns) and row integrals.
+  buildDistribution();
+}
+
+float EnvironmentMap::texelLuminance(int i, int j) const {
+  const float* p = &rgb_[(std::size_t(j) * width_ + i) * 3];
+  return std::max(0.0f, luminance(Color(p[0], p[1], p[2])));
+}
+
+// See the header comment: cells between texel centres, weighted by the mean luminance of their
+// four corners times their solid angle.
+void EnvironmentMap::buildDistribution() {
+  const int rows = height_ + 1;
   const std::size_t rowStride = std::size_t(width_) + 1;
-  conditionalCdf_.assign(std::size_t(height_) * rowStride, 0.0f);
-  rowIntegral_.assign(std::size_t(height_), 0.0f);
+  conditionalCdf_.assign(std::size_t(rows) * rowStride, 0.0f);
   std::vector<double> weights(static_cast<std::size_t>(width_));
-  std::vector<double> rowWeights(static_cast<std::size_t>(height_));
-  const double texelWidth = 2.0 * kPiD / width_;
+  std::vector<double> rowWeights(static_cast<std::size_t>(rows));
+  const double cellWidth = 2.0 * kPiD / width_;
   double total = 0.0;
-  for (int j = 0; j < height_; ++j) {
-    for (int i = 0; i < width_; ++i) {
-      const float* p = &rgb_[(std::size_t(j) * width_ + i) * 3];
-      weights[i] = std::max(0.0, double(luminance(Color(p[0], p[1], p[2]))));
+  for (int r = 0; r < rows; ++r) {
+    const int top = std::max(r - 1, 0), bottom = std::min(r, height_ - 1);
+    for (int c = 0; c < width_; ++c) {
+      const int next = (c + 1) % width_;
+      weights[c] = 0.25 * (double(texelLuminance(c, top)) + texelLuminance(next, top) + texelLuminance(c, bottom) +
+                           texelLuminance(next, bottom));
     }
-    const double rowLuminanceSum =
-        detail::buildCdf(weights, std::span<float>(conditionalCdf_).subspan(std::size_t(j) * rowStride, rowStride));
-    // Integral of luminance over the row's solid angle.
-    rowWeights[j] = rowLuminanceSum * texelWidth * rowSolidAngleFactor(j, height_);
-    rowIntegral_[j] = float(rowWeights[j]);
-    total += rowWeights[j];
+    const double rowMeanSum =
+        detail::buildCdf(weights, std::span<float>(conditionalCdf_).subspan(std::size_t(r) * rowStride, rowStride));
+    rowWeights[r] = rowMeanSum * cellWidth * cellRowSolidAngleFactor(r);
+    total += rowWeights[r];
   }
-  totalIntegral_ = float(total);
   if (!(total > 0.0)) {
-    // Black map: rows by solid angle with uniform conditionals, each texel by its solid angle.
-    for (int j = 0; j < height_; ++j) rowWeights[j] = rowSolidAngleFactor(j, height_);
+    // Black map: rows by solid angle with uniform conditionals, each cell by its solid angle.
+    for (int r = 0; r < rows; ++r) rowWeights[r] = cellRowSolidAngleFactor(r);
   }
-  marginalCdf_.assign(std::size_t(height_) + 1, 0.0f);
+  marginalCdf_.assign(std::size_t(rows) + 1, 0.0f);
   detail::buildCdf(rowWeights, marginalCdf_);
+}
+
+// v at the top of cell row r (0 <= r <= height + 1): the pole, then the rows of texel centres.
+double EnvironmentMap::cellRowTop(int r) const { return std::clamp((r - 0.5) / height_, 0.0, 1.0); }
+
+// The solid angle of cell row r divided by 2 pi / width: cos(theta_top) - cos(theta_bottom).
+double EnvironmentMap::cellRowSolidAngleFactor(int r) const {
+  return std::cos(kPiD * cellRowTop(r)) - std::cos(kPiD * cellRowTop(r + 1));
 }
 
 EnvironmentMap EnvironmentMap::load(const std::filesystem::path& path, float intensity, float rotationRadians) {
@@ -173,29 +197,44 @@ Vec3 EnvironmentMap::uvToDirection(const Vec2& uv) const {
   return Vec3(-sinTheta * std::sin(phi), std::cos(theta), sinTheta * std::cos(phi));
 }
 
-int EnvironmentMap::texelIndex(const Vec2& uv) const {
-  // uv is in [0, 1] or NaN (a NaN direction); the comparisons send NaN to texel 0 without UB.
-  const float x = uv.x() * float(width_), y = uv.y() * float(height_);
-  const int i = x > 0.0f ? std::min(int(x), width_ - 1) : 0;
-  const int j = y > 0.0f ? std::min(int(y), height_ - 1) : 0;
-  return j * width_ + i;
+EnvironmentMap::Cell EnvironmentMap::cellAt(const Vec2& uv) const {
+  // uv is in [0, 1] or NaN (a NaN direction); NaN goes to u = v = 0 without UB.
+  const float u = uv.x() >= 0.0f ? uv.x() : 0.0f, v = uv.y() >= 0.0f ? std::min(uv.y(), 1.0f) : 0.0f;
+  const float x = u * float(width_) - 0.5f, y = v * float(height_) - 0.5f;  // texel-centre coordinates
+  const float x0 = std::floor(x), y0 = std::floor(y);
+  Cell cell;
+  cell.column = (int(x0) + width_) % width_;               // x0 in [-1, width - 1]
+  cell.row = std::clamp(int(y0) + 1, 0, height_);          // y0 in [-1, height - 1]
+  cell.fx = std::clamp(x - x0, 0.0f, 1.0f);
+  cell.fy = std::clamp(y - y0, 0.0f, 1.0f);
+  return cell;
 }
 
+Color EnvironmentMap::texel(int i, int j) const {
+  const float* p = &rgb_[(std::size_t(j) * width_ + i) * 3];
+  return Color(p[0], p[1], p[2]);
+}
+
+// Bilinear blend of the cell's four corners (rows clamped at the poles, columns wrapped).
 Color EnvironmentMap::radiance(const Vec3& direction) const {
-  const float* p = &rgb_[std::size_t(texelIndex(directionToUv(direction))) * 3];
-  return Color(p[0], p[1], p[2]) * intensity_;
+  const Cell cell = cellAt(directionToUv(direction));
+  const int left = cell.column, right = (cell.column + 1) % width_;
+  const int top = std::max(cell.row - 1, 0), bottom = std::min(cell.row, height_ - 1);
+  const Color upper = (1.0f - cell.fx) * texel(left, top) + cell.fx * texel(right, top);
+  const Color lower = (1.0f - cell.fx) * texel(left, bottom) + cell.fx * texel(right, bottom);
+  return ((1.0f - cell.fy) * upper + cell.fy * lower) * intensity_;
 }
 
 float EnvironmentMap::pdf(const Vec3& direction) const {
   const float length = direction.norm();
   const float sinTheta = std::hypot(direction.x(), direction.z()) / length;
   if (!(sinTheta > 0.0f)) return 0.0f;  // a pole, zero or NaN direction
-  const int index = texelIndex(directionToUv(direction));
-  const int j = index / width_, i = index % width_;
-  const std::span<const float> row(&conditionalCdf_[std::size_t(j) * (std::size_t(width_) + 1)],
+  const Cell cell = cellAt(directionToUv(direction));
+  const std::span<const float> row(&conditionalCdf_[std::size_t(cell.row) * (std::size_t(width_) + 1)],
                                    std::size_t(width_) + 1);
-  const float pdfUv = detail::binProbability(marginalCdf_, j) * float(height_) *
-                      detail::binProbability(row, i) * float(width_);
+  const double cellHeight = cellRowTop(cell.row + 1) - cellRowTop(cell.row);
+  const float pdfUv = float(detail::binProbability(marginalCdf_, cell.row) / cellHeight) *
+                      detail::binProbability(row, cell.column) * float(width_);
   return pdfUv / (2.0f * kPi * kPi * sinTheta);
 }
 
@@ -204,11 +243,13 @@ EnvironmentSample EnvironmentMap::sample(const Vec2& u) const {
   const std::span<const float> row(&conditionalCdf_[std::size_t(rowSample.index) * (std::size_t(width_) + 1)],
                                    std::size_t(width_) + 1);
   const detail::CdfSample columnSample = detail::sampleCdf(row, u.x());
-  const Vec2 uv((float(columnSample.index) + columnSample.offset) / float(width_),
-                (float(rowSample.index) + rowSample.offset) / float(height_));
+  const double top = cellRowTop(rowSample.index), bottom = cellRowTop(rowSample.index + 1);
+  float su = (float(columnSample.index) + 0.5f + columnSample.offset) / float(width_);
+  if (su >= 1.0f) su -= 1.0f;  // the cell across the seam
+  const Vec2 uv(su, float(top + rowSample.offset * (bottom - top)));
   EnvironmentSample s;
   s.direction = uvToDirection(uv);
-  // Evaluate through the same direction -> texel lookup as radiance()/pdf(), so the returned
+  // Evaluate through the same direction -> cell lookup as radiance()/pdf(), so the returned
   // values are exactly what a BSDF-sampled ray in this direction would see.
   s.radiance = radiance(s.direction);
   s.pdf = pdf(s.direction);

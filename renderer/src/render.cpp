@@ -1,7 +1,8 @@
 // The frame loop: 32x32 tiles rendered in parallel with TBB. Every pixel sample draws its
 // random numbers from (seed, frame, pixel, sample index, dimension) and each tile writes only
 // its own pixels in a fixed order, so the image does not depend on the thread count or on the
-// order in which tiles finish.
+// order in which tiles finish. The pixel filter is importance-sampled (pixel_filter.hpp), not
+// splatted, for the same reason.
 #include "lacrima/renderer/render.hpp"
 
 #include <fmt/format.h>
@@ -9,6 +10,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <mutex>
@@ -17,6 +19,7 @@
 #include "integrator.hpp"
 #include "lacrima/geometry/error.hpp"
 #include "lacrima/renderer/camera.hpp"
+#include "lacrima/renderer/pixel_filter.hpp"
 #include "light_sampler.hpp"
 #include "sample_dimensions.hpp"
 
@@ -54,9 +57,15 @@ TileRect tileRect(int tileIndex, int width, int height) {
   return {x0, y0, std::min(x0 + kTileSize, width), std::min(y0 + kTileSize, height)};
 }
 
+// Beauty and alpha are filter-weighted; the AOVs (albedo, normal, depth) are plain averages over
+// the samples that hit something, as before.
 struct PixelResult {
-  Color radiance = Color::Zero();
-  float coverage = 0.0f;
+  Color weightedRadiance = Color::Zero();  // sum of w L
+  Color radiance = Color::Zero();          // sum of L
+  float weightedCoverage = 0.0f;           // sum of w * hit
+  float coverage = 0.0f;                   // sum of hit
+  float weight = 0.0f;                     // sum of w
+  int samples = 0;                         // finite radiance samples
   Color albedo = Color::Zero();
   Vec3 normal = Vec3::Zero();
   float depth = 0.0f;
@@ -71,8 +80,8 @@ float cameraDepth(const Camera& camera, const Ray& ray, float distance) {
 
 class TileRenderer {
  public:
-  TileRenderer(const Frame& frame, const PathIntegrator& integrator, Film& film)
-      : frame_(frame), integrator_(integrator), film_(film), hasMotion_(frame.hasMotion()) {}
+  TileRenderer(const Frame& frame, const PathIntegrator& integrator, const FilterSampler& filter, Film& film)
+      : frame_(frame), integrator_(integrator), filter_(filter), film_(film), hasMotion_(frame.hasMotion()) {}
 
   void renderTile(const TileRect& rect, PathCounters& counters, uint64_t& nonFinite) const {
     for (int y = rect.y0; y < rect.y1; ++y)
@@ -85,18 +94,27 @@ class TileRenderer {
     PixelResult sum;
     for (int i = 0; i < s.samplesPerPixel; ++i) {
       PixelSampler sampler(s.sampler, s.seed, s.frameNumber, x, y, i, s.samplesPerPixel);
-      const std::array<float, 4> pixelAndLens = sampler.get4D();  // sample_dimensions::kPixelAndLens
-      const Vec2 jitter(pixelAndLens[0], pixelAndLens[1]);
+      // The point in the filter's footprint and the point on the lens: one 4D block
+      // (sample_dimensions::kPixelAndLens), mapped monotonically, so both stay stratified.
+      const std::array<float, 4> pixelAndLens = sampler.get4D();
+      const FilterSample f = filter_.sample(Vec2(pixelAndLens[0], pixelAndLens[1]));
       const Vec2 lens(pixelAndLens[2], pixelAndLens[3]);
       sampler.setDimension(sample_dimensions::kTime);
       const float time = hasMotion_ ? sampler.get1D() : 0.0f;
-      const Ray ray =
-          generateCameraRay(frame_.camera, s.width, s.height, float(x) + jitter.x(), float(y) + jitter.y(), lens, time);
+      const Ray ray = generateCameraRay(frame_.camera, s.width, s.height, float(x) + 0.5f + f.offset.x(),
+                                        float(y) + 0.5f + f.offset.y(), lens, time);
       FirstHit first;
-      const Color L = integrator_.radiance(ray, sampler, first, counters);
-      if (isFinite(L)) sum.radiance += L;
-      else ++nonFinite;  // discarded, counted, reported: never on the film
+      Color L = integrator_.radiance(ray, sampler, first, counters);
+      if (!isFinite(L)) {
+        L = Color::Zero();  // discarded, counted, reported: never on the film (the sample counts as black)
+        ++nonFinite;
+      }
+      sum.weightedRadiance += f.weight * L;
+      sum.radiance += L;
+      sum.weight += f.weight;
+      ++sum.samples;
       if (first.valid) {
+        sum.weightedCoverage += f.weight;
         sum.coverage += 1.0f;
         sum.albedo += first.albedo;
         sum.normal += first.normal;
@@ -108,10 +126,10 @@ class TileRenderer {
   }
 
   void store(int x, int y, const PixelResult& sum) const {
-    const float inv = 1.0f / float(frame_.settings.samplesPerPixel);
     const size_t p = film_.pixelIndex(x, y);
-    for (int c = 0; c < 3; ++c) film_.rgba[4 * p + c] = sum.radiance[c] * inv;
-    film_.rgba[4 * p + 3] = sum.coverage * inv;
+    const Filtered f = filtered(sum);
+    for (int c = 0; c < 3; ++c) film_.rgba[4 * p + c] = f.radiance[c];
+    film_.rgba[4 * p + 3] = f.alpha;
     const float invHits = sum.depthSamples > 0 ? 1.0f / float(sum.depthSamples) : 0.0f;
     for (int c = 0; c < 3; ++c) film_.albedo[3 * p + c] = sum.albedo[c] * invHits;
     const Vec3 n = sum.normal.norm() > 0.0f ? Vec3(sum.normal.normalized()) : Vec3::Zero();
@@ -119,8 +137,31 @@ class TileRenderer {
     film_.depth[p] = sum.depthSamples > 0 ? sum.depth * invHits : std::numeric_limits<float>::infinity();
   }
 
+  struct Filtered {
+    Color radiance;
+    float alpha;
+  };
+
+  // The pixel is the weighted average sum(w L) / sum(w) (pbrt-v4's RGBFilm does the same), not
+  // sum(w L) / N: both are consistent, but the ratio reproduces a constant radiance exactly
+  // whatever the weights, so a flat sky keeps no noise from a filter's negative lobes. Without
+  // negative lobes every w is exactly 1 and this is the plain mean, bitwise. With them (Mitchell),
+  // w = +-c and sum(w) can be 0 or negative with few samples (2 samples of opposite signs); such a
+  // pixel takes the plain mean instead, the estimate of the filter |f|.
+  static Filtered filtered(const PixelResult& sum) {
+    if (sum.samples == 0) return {Color::Zero(), 0.0f};
+    if (sum.weight > 0.0f) {
+      const float inv = 1.0f / sum.weight;
+      // Coverage is a fraction: a negative lobe may ring the colour but not the alpha past [0, 1].
+      return {sum.weightedRadiance * inv, std::clamp(sum.weightedCoverage * inv, 0.0f, 1.0f)};
+    }
+    const float inv = 1.0f / float(sum.samples);
+    return {sum.radiance * inv, sum.coverage * inv};
+  }
+
   const Frame& frame_;
   const PathIntegrator& integrator_;
+  const FilterSampler& filter_;
   Film& film_;
   bool hasMotion_;
 };
@@ -171,7 +212,8 @@ Film Renderer::render(const Frame& frame, RenderStats* stats, const ProgressCall
     const EmbreeScene& scene = *scene_;
     const LightSampler lights(frame);
     const PathIntegrator integrator(frame, scene, lights);
-    const TileRenderer tiles(frame, integrator, film);
+    const FilterSampler filter(s.filter);
+    const TileRenderer tiles(frame, integrator, filter, film);
     tbb::parallel_for(tbb::blocked_range<int>(0, tileCount, 1), [&](const tbb::blocked_range<int>& range) {
       for (int t = range.begin(); t != range.end(); ++t) {
         if (cancel && cancel->load(std::memory_order_relaxed)) return;  // skip what is left, cheaply

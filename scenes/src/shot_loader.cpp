@@ -41,6 +41,10 @@ const std::vector<std::string> kRootKeys = {"version",   "frames", "output",    
 const std::vector<std::string> kMaterialTypes = {"diffuse", "skin", "water", "rough_dielectric"};
 const std::vector<std::string> kCausticsModes = {"mnee", "straight", "off"};  // order of readCaustics' modes
 const std::vector<std::string> kSamplerKinds = {"sobol", "independent"};  // order of readSampler's kinds
+const std::vector<std::string> kFilterTypes = {"blackman-harris", "gaussian", "mitchell", "box"};  // readFilter's order
+// A filter wider than this blurs away the detail it should keep (and 16 px is already 8 pixels
+// each way); a typo such as 15 for 1.5 is caught.
+constexpr double kMaxFilterWidth = 16.0;
 const std::vector<std::string> kLightTypes = {"rectangle", "sphere"};
 const std::vector<std::string> kShapeTypes = {"sphere", "ellipsoid", "rectangle"};
 const std::vector<std::string> kTearTypes = {"dripping", "shedding", "liquid"};
@@ -276,7 +280,7 @@ class ShotReader {
   bool readRender(const Json& v) {
     const size_t before = c_.errorCount();
     ObjectReader o(c_, v, "/render", {"width", "height", "spp", "maxDepth", "seed", "threads", "floatOutput",
-                                           "transparentShadows", "caustics", "sampler"});
+                                           "transparentShadows", "caustics", "sampler", "filter"});
     RenderSettings& s = shot_.render;
     if (auto x = o.integer("width", Range::closed(1, 16384), true)) s.width = int(*x);
     if (auto x = o.integer("height", Range::closed(1, 16384), true)) s.height = int(*x);
@@ -288,6 +292,7 @@ class ShotReader {
     if (auto x = o.boolean("transparentShadows")) s.transparentShadows = *x;
     readCaustics(o, s);
     readSampler(o, s);
+    readFilter(o, s);
     return c_.errorCount() == before;
   }
 
@@ -305,6 +310,23 @@ class ShotReader {
     }
     static constexpr SamplerKind kinds[] = {SamplerKind::Sobol, SamplerKind::Independent};
     s.sampler = kinds[it - kSamplerKinds.begin()];
+  }
+
+  // "filter": {"type": "blackman-harris" | "gaussian" | "mitchell" | "box", "width": full width in
+  // pixels} (docs/shot-format.md, "Pixel filter"). The width defaults per type.
+  void readFilter(ObjectReader& render, RenderSettings& s) {
+    const Json* v = render.find("filter");
+    if (!v) return;
+    const auto type = readType(*v, render.at("filter"), kFilterTypes, "filter");
+    if (!type) return;
+    ObjectReader o(c_, *v, render.at("filter"), {"type", "width"});
+    static constexpr FilterType types[] = {FilterType::BlackmanHarris, FilterType::Gaussian, FilterType::Mitchell,
+                                           FilterType::Box};
+    PixelFilter filter;
+    filter.type = types[std::find(kFilterTypes.begin(), kFilterTypes.end(), *type) - kFilterTypes.begin()];
+    filter.width = defaultFilterWidth(filter.type);
+    if (auto x = o.number("width", Range::openClosed(0, kMaxFilterWidth))) filter.width = float(*x);
+    s.filter = filter;
   }
 
   // "caustics": "mnee" | "straight" | "off" (docs/shot-format.md, "Caustics"). The older

@@ -547,6 +547,9 @@ TEST(CliRender, OverridesReachTheExr) {
   EXPECT_EQ(attributeLine(info.output, "lacrima:seed"), "  lacrima:seed = 18446744073709551615");
   EXPECT_EQ(attributeLine(info.output, "lacrima:spp"), "  lacrima:spp = 1");
   EXPECT_EQ(attributeLine(info.output, "lacrima:maxDepth"), "  lacrima:maxDepth = 3");
+  // The defaults of what the shot leaves out: how its samples were drawn and filtered.
+  EXPECT_EQ(attributeLine(info.output, "lacrima:sampler"), "  lacrima:sampler = sobol");
+  EXPECT_EQ(attributeLine(info.output, "lacrima:filter"), "  lacrima:filter = blackman-harris 1.5 px");
 }
 
 TEST(CliRender, WarningsComeBeforeRenderingAndFrameStepsAreHonoured) {

@@ -45,11 +45,14 @@ fs::path defaultCacheDirectory() {
   return fs::temp_directory_path() / "lacrima-quality";
 }
 
-// Everything the converged image depends on is in its name.
-fs::path referencePath(const BenchOptions& o, const std::string& shotPath, int frame, int maxDepth) {
+// Everything the converged image depends on is in its name. The pixel filter is in the shot
+// file, but its default is not: references cached before the filter existed (box 1 px) are not
+// taken for Blackman-Harris ones.
+fs::path referencePath(const BenchOptions& o, const std::string& shotPath, int frame, const RenderSettings& s) {
   const fs::path dir = o.cacheDir.empty() ? defaultCacheDirectory() : fs::path(o.cacheDir);
-  return dir / fmt::format("{}.{:016x}.f{}.{}x{}.d{}.{}spp.exr", fs::path(shotPath).stem().string(),
-                           fileHash(shotPath), frame, o.width, o.height, maxDepth, o.referenceSpp);
+  return dir / fmt::format("{}.{:016x}.f{}.{}x{}.d{}.{}{}.{}spp.exr", fs::path(shotPath).stem().string(),
+                           fileHash(shotPath), frame, o.width, o.height, s.maxDepth, filterTypeName(s.filter.type),
+                           s.filter.width, o.referenceSpp);
 }
 
 // The film's beauty R, G, B, 3 floats a pixel.
@@ -141,7 +144,7 @@ int runBenchQuality(const BenchOptions& o) {
     frame.settings.threads = o.threads;
     std::printf("lacrima bench --quality: %s frame %d, %dx%d, max depth %d, threads %s\n", shotPath.c_str(), frameNumber,
                 o.width, o.height, frame.settings.maxDepth, o.threads ? std::to_string(o.threads).c_str() : "all");
-    const fs::path path = referencePath(o, shotPath, frameNumber, frame.settings.maxDepth);
+    const fs::path path = referencePath(o, shotPath, frameNumber, frame.settings);
     const std::vector<float> reference = referenceImage(o, frame, path);
     const std::vector<QualityPoint> points = measureCurve(o, frame, reference);
     std::printf("RMSE-vs-spp slope     %.3f (independent samples: -0.5; stratified sampling is steeper)\n",

@@ -53,6 +53,9 @@ ExrMetadata metadataFor(const Shot& shot, const Frame& frame, const RenderStats&
   m.worldToCamera = worldToCameraMatrix(frame.camera);
   m.worldToNDC = worldToNdcMatrix(frame.camera, frame.settings.width, frame.settings.height);
   m.extra["lacrima:maxDepth"] = std::to_string(frame.settings.maxDepth);
+  const PixelFilter& filter = frame.settings.filter;
+  m.extra["lacrima:filter"] = fmt::format("{} {} px", filterTypeName(filter.type), filter.width);
+  m.extra["lacrima:sampler"] = frame.settings.sampler == SamplerKind::Sobol ? "sobol" : "independent";
   m.extra["lacrima:nonFiniteSamples"] = std::to_string(stats.nonFiniteSamples);
   return m;
 }

@@ -247,7 +247,7 @@ void addBench(CLI::App& app, BenchOptions& o) {
   bench->add_option("--cache", o.cacheDir,
                     "--quality: folder of cached references (default $XDG_CACHE_HOME/lacrima/quality or "
                     "~/.cache/lacrima/quality); a reference is keyed by the shot file's contents, frame, size, "
-                    "max depth and spp");
+                    "max depth, pixel filter and spp");
   bench->add_flag("--fresh-reference", o.freshReference,
                   "--quality: render the reference again (after a change of assets or of what the renderer converges to)");
   bench->callback([&o] { throw CLI::RuntimeError(o.quality ? runBenchQuality(o) : runBench(o)); });

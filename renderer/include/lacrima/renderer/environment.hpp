@@ -33,19 +33,29 @@ class EnvironmentMap {
   std::size_t clampedTexelCount() const { return clampedTexels_; }
 
  private:
-  // piecewise-constant 2D distribution (marginal over rows, conditional per row),
-  // weighted by luminance * sin(theta); see environment.cpp
+  // piecewise-constant 2D distribution (marginal over rows, conditional per row) over the cells
+  // between texel centres, weighted by the bilinear radiance's mean luminance * solid angle; see
+  // environment.cpp
   int width_ = 0, height_ = 0;
   std::vector<float> rgb_;
   float intensity_ = 1.0f;
   float rotation_ = 0.0f;
-  std::vector<float> marginalCdf_;      // height + 1
-  std::vector<float> conditionalCdf_;   // height * (width + 1)
-  std::vector<float> rowIntegral_;      // height
-  float totalIntegral_ = 0.0f;
+  std::vector<float> marginalCdf_;      // height + 2 (height + 1 cell rows)
+  std::vector<float> conditionalCdf_;   // (height + 1) * (width + 1)
   std::size_t clampedTexels_ = 0;
 
-  int texelIndex(const Vec2& uv) const;
+  // The cell between texel centres that holds (u, v) and the position in it: the bilinear
+  // weights of its right (fx) and lower (fy) corners.
+  struct Cell {
+    int column = 0, row = 0;  // column in [0, width), row in [0, height]
+    float fx = 0.0f, fy = 0.0f;
+  };
+  Cell cellAt(const Vec2& uv) const;
+  Color texel(int i, int j) const;
+  float texelLuminance(int i, int j) const;
+  void buildDistribution();
+  double cellRowTop(int r) const;
+  double cellRowSolidAngleFactor(int r) const;
 
   Vec2 directionToUv(const Vec3& direction) const;
   Vec3 uvToDirection(const Vec2& uv) const;

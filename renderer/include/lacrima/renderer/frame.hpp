@@ -13,6 +13,7 @@
 #include "lacrima/geometry/mesh.hpp"
 #include "lacrima/geometry/sampler.hpp"
 #include "lacrima/materials/material.hpp"
+#include "lacrima/renderer/pixel_filter.hpp"
 
 namespace lacrima {
 
@@ -101,6 +102,8 @@ struct RenderSettings {
   // The older switch: false means Caustics::Off whatever `caustics` says; true leaves `caustics`.
   bool transparentShadows = true;
   Caustics causticsMode() const { return transparentShadows ? caustics : Caustics::Off; }
+  // Pixel reconstruction filter, importance-sampled per camera sample (pixel_filter.hpp).
+  PixelFilter filter;
 };
 
 struct Frame {
