@@ -189,6 +189,30 @@ void addSheddingTear(const Shot& shot, const ShotSheddingTear& tear, int frameNu
   frame.meshes.push_back(std::move(instance));
 }
 
+// The detail's displacement of one posed primitive, in place. New normals only around the
+// moved vertices (renewSmoothNormalsAround), so the rest of the skin keeps its normals bitwise; a
+// mesh without normals gets them everywhere.
+void displaceAndRenormalise(TriangleMesh& mesh, const DetailRegion& region, const DetailPatternApplication& application) {
+  const std::vector<Vec3> before = mesh.positions;
+  const bool hadNormals = mesh.normals.size() == mesh.positions.size();
+  if (!hadNormals) {
+    TriangleMesh withNormals = mesh;
+    computeSmoothNormals(withNormals);
+    mesh.normals = std::move(withNormals.normals);  // the pattern's displacement directions
+  }
+  if (applyDetailPattern(mesh, mesh.normals, region, application) == 0) {
+    if (!hadNormals) mesh.normals.clear();  // nothing moved: the mesh stays as it was
+    return;
+  }
+  if (!hadNormals) {
+    computeSmoothNormals(mesh);
+    return;
+  }
+  std::vector<bool> moved(mesh.positions.size());
+  for (size_t v = 0; v < moved.size(); ++v) moved[v] = mesh.positions[v] != before[v];
+  renewSmoothNormalsAround(mesh, moved);
+}
+
 // The detail's displacement of the part's posed primitives at a (fractional) frame, in place.
 // The local frame comes from the posed skin at the detail's surface point: its centre there,
 // the normal the interpolated skin normal, tangent x the projection of the detail's tangent
@@ -223,27 +247,8 @@ void applyDetail(const Shot& shot, const ShotDetail& detail, double frame, std::
   application.patternOrigin = detail.patternOrigin;
   application.selection = detail.selection;
   const ShotAsset& asset = shot.assets[detail.asset];
-  for (size_t i = 0; i < posed.size(); ++i) {
-    if (asset.gltf->primitives[i].part != detail.part) continue;
-    TriangleMesh& mesh = posed[i];
-    TriangleMesh before = mesh;
-    if (before.normals.size() != before.positions.size()) computeSmoothNormals(before);
-    if (applyDetailPattern(mesh, before.normals, region, application) == 0) continue;
-    // New normals only around the moved vertices, so the rest of the skin keeps its normals bitwise.
-    TriangleMesh renormalised = mesh;
-    computeSmoothNormals(renormalised);
-    if (mesh.normals.size() != mesh.positions.size()) {
-      mesh.normals = std::move(renormalised.normals);
-      continue;
-    }
-    for (size_t t = 0; t < mesh.triangleCount(); ++t) {
-      const uint32_t* v = &mesh.indices[3 * t];
-      if (mesh.positions[v[0]] == before.positions[v[0]] && mesh.positions[v[1]] == before.positions[v[1]] &&
-          mesh.positions[v[2]] == before.positions[v[2]])
-        continue;
-      for (int k = 0; k < 3; ++k) mesh.normals[v[k]] = renormalised.normals[v[k]];
-    }
-  }
+  for (size_t i = 0; i < posed.size(); ++i)
+    if (asset.gltf->primitives[i].part == detail.part) displaceAndRenormalise(posed[i], region, application);
 }
 
 // Applies the shot's details active at this frame to the posed assets (at shutter open and close).
