@@ -2,10 +2,12 @@
 // tiny shot. Only the report's shape is checked: speed is measured by the bench, never by tests.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
-#include "lacrima_cli_support.hpp"
+#include "support/test_directory.hpp"
+#include "tools/lacrima_cli_support.hpp"
 
 namespace lacrima::cli {
 namespace {
