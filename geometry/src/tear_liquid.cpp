@@ -216,6 +216,15 @@ double TearLiquidSimulation::filmThicknessAt(double s) const {
   return cellThickness(cellAt(s));
 }
 
+double TearLiquidSimulation::maxFilmThicknessBetween(double s0, double s1) const {
+  if (cellVolume_.empty()) return 0.0;
+  const size_t first = cellAt(std::min(s0, s1)), last = cellAt(std::max(s0, s1));
+  double thickest = 0.0;
+  for (size_t cell = first > 0 ? first - 1 : 0; cell <= std::min(last + 1, cellVolume_.size() - 1); ++cell)
+    thickest = std::max(thickest, cellThickness(cell));
+  return thickest;
+}
+
 double TearLiquidSimulation::filmWidthAt(double s) const {
   if (!(s >= 0.0 && s <= pathLength_)) return 0.0;
   return cellWidth_[cellAt(s)];

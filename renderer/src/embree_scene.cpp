@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -209,7 +210,8 @@ bool writeVertexBuffer(RTCGeometry geometry, unsigned slot, const void* source, 
 
 }  // namespace
 
-void EmbreeScene::refitTo(const Frame& frame) {
+SceneRefitTimes EmbreeScene::refitTo(const Frame& frame) {
+  const auto start = std::chrono::steady_clock::now();
   frame_ = &frame;
   for (size_t i = 0; i < frame.meshes.size(); ++i) {
     const MeshInstance& instance = frame.meshes[i];
@@ -229,7 +231,17 @@ void EmbreeScene::refitTo(const Frame& frame) {
       moveSphere(light.center, light.radius, nullptr, lightGeometry_[i]);
     }
   }
+  const auto uploaded = std::chrono::steady_clock::now();
+  commitChangedGeometries();
   rtcCommitScene(scene_);
+  const auto committed = std::chrono::steady_clock::now();
+  return {std::chrono::duration<double>(uploaded - start).count(),
+          std::chrono::duration<double>(committed - uploaded).count()};
+}
+
+void EmbreeScene::commitChangedGeometries() {
+  for (unsigned geometryId : changedGeometries_) rtcCommitGeometry(records_[geometryId].geometry);
+  changedGeometries_.clear();
 }
 
 void EmbreeScene::moveMesh(const TriangleMesh& mesh, const std::vector<Vec3>* positionsAtClose, unsigned geometryId) {
@@ -239,7 +251,7 @@ void EmbreeScene::moveMesh(const TriangleMesh& mesh, const std::vector<Vec3>* po
   bool changed = writeVertexBuffer(record.geometry, 0, mesh.positions.data(), bytes);
   if (positionsAtClose) changed |= writeVertexBuffer(record.geometry, 1, positionsAtClose->data(), bytes);
   // An uncommitted geometry keeps its BVH as it is: still meshes cost nothing.
-  if (changed) rtcCommitGeometry(record.geometry);
+  if (changed) changedGeometries_.push_back(geometryId);
 }
 
 void EmbreeScene::moveSphere(const Vec3& center, float radius, const Vec3* centerAtClose, unsigned geometryId) {
@@ -250,7 +262,7 @@ void EmbreeScene::moveSphere(const Vec3& center, float radius, const Vec3* cente
     const float point[4] = {steps[step]->x(), steps[step]->y(), steps[step]->z(), radius};
     changed |= writeVertexBuffer(record.geometry, step, point, sizeof(point));
   }
-  if (changed) rtcCommitGeometry(record.geometry);
+  if (changed) changedGeometries_.push_back(geometryId);
 }
 
 void EmbreeScene::surfaceOfMesh(const MeshInstance& instance, float time, const RTCHit& rtcHit, SurfaceHit& hit) const {

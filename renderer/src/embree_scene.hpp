@@ -36,6 +36,13 @@ struct SurfaceHit {
   Vec3 dpdv = Vec3::Zero();
 };
 
+// What one refitTo spent: copying the changed vertices into Embree's buffers, then the commits
+// (each changed geometry's BVH, the top level).
+struct SceneRefitTimes {
+  double uploadSeconds = 0.0;
+  double commitSeconds = 0.0;
+};
+
 // One Embree device and scene that can follow the frames of a shot. The BVH is two-level
 // (scene build quality LOW): one BVH per geometry under a top-level BVH, which is what lets
 // Embree refit a single geometry's BVH (geometry build quality REFIT) instead of rebuilding it.
@@ -53,7 +60,7 @@ class EmbreeScene {
   // Moves every vertex, sphere and light to `frame` (which must pass canRefitTo) and recommits:
   // Embree refits the BVH of each changed mesh and rebuilds only the small top level. Hit
   // lookups read `frame` from now on; it must outlive its use here.
-  void refitTo(const Frame& frame);
+  SceneRefitTimes refitTo(const Frame& frame);
 
   bool intersect(const Ray& ray, SurfaceHit& hit) const;
   // True when anything blocks the segment origin + t * direction, 0 < t < maxDistance.
@@ -87,6 +94,7 @@ class EmbreeScene {
   bool sphereHasLayout(bool moves, unsigned geometryId) const;
   void moveMesh(const TriangleMesh& mesh, const std::vector<Vec3>* positionsAtClose, unsigned geometryId);
   void moveSphere(const Vec3& center, float radius, const Vec3* centerAtClose, unsigned geometryId);
+  void commitChangedGeometries();
   void surfaceOfMesh(const MeshInstance& instance, float time, const RTCHit& rtcHit, SurfaceHit& hit) const;
 
   const Frame* frame_;
@@ -95,6 +103,7 @@ class EmbreeScene {
   std::vector<GeometryRecord> records_;    // indexed by Embree geomID
   // Embree geomID of each frame mesh / sphere / light, for following the next frame.
   std::vector<unsigned> meshGeometry_, sphereGeometry_, lightGeometry_;
+  std::vector<unsigned> changedGeometries_;  // moved by this refitTo, committed together at its end
   RTCDevice device_ = nullptr;
   RTCScene scene_ = nullptr;
 };

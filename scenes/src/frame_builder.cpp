@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <chrono>
 
 #include "asset_pose.hpp"
 #include "eye_frame.hpp"
@@ -15,6 +16,7 @@
 #include "lacrima/geometry/shapes.hpp"
 #include "lacrima/geometry/shedding_tear.hpp"
 #include "lacrima/materials/material.hpp"
+#include "lacrima/scenes/frame_build_times.hpp"
 #include "lacrima/scenes/shot.hpp"
 #include "liquid_tear_frame.hpp"
 #include "shot_geometry.hpp"
@@ -26,6 +28,21 @@ namespace {
 
 using shotfile::assetPoseAt;
 using shotfile::posedPrimitive;
+
+// Adds the wall time from its construction to its destruction to *seconds (nothing when null).
+class StageClock {
+ public:
+  explicit StageClock(double* seconds) : seconds_(seconds), start_(std::chrono::steady_clock::now()) {}
+  ~StageClock() {
+    if (seconds_) *seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  }
+  StageClock(const StageClock&) = delete;
+  StageClock& operator=(const StageClock&) = delete;
+
+ private:
+  double* seconds_;
+  std::chrono::steady_clock::time_point start_;
+};
 
 // The shutter interval of one frame, in (fractional) frames.
 struct ShutterTimes {
@@ -172,6 +189,30 @@ void addSheddingTear(const Shot& shot, const ShotSheddingTear& tear, int frameNu
   frame.meshes.push_back(std::move(instance));
 }
 
+// The detail's displacement of one posed primitive, in place. New normals only around the
+// moved vertices (renewSmoothNormalsAround), so the rest of the skin keeps its normals bitwise; a
+// mesh without normals gets them everywhere.
+void displaceAndRenormalise(TriangleMesh& mesh, const DetailRegion& region, const DetailPatternApplication& application) {
+  const std::vector<Vec3> before = mesh.positions;
+  const bool hadNormals = mesh.normals.size() == mesh.positions.size();
+  if (!hadNormals) {
+    TriangleMesh withNormals = mesh;
+    computeSmoothNormals(withNormals);
+    mesh.normals = std::move(withNormals.normals);  // the pattern's displacement directions
+  }
+  if (applyDetailPattern(mesh, mesh.normals, region, application) == 0) {
+    if (!hadNormals) mesh.normals.clear();  // nothing moved: the mesh stays as it was
+    return;
+  }
+  if (!hadNormals) {
+    computeSmoothNormals(mesh);
+    return;
+  }
+  std::vector<bool> moved(mesh.positions.size());
+  for (size_t v = 0; v < moved.size(); ++v) moved[v] = mesh.positions[v] != before[v];
+  renewSmoothNormalsAround(mesh, moved);
+}
+
 // The detail's displacement of the part's posed primitives at a (fractional) frame, in place.
 // The local frame comes from the posed skin at the detail's surface point: its centre there,
 // the normal the interpolated skin normal, tangent x the projection of the detail's tangent
@@ -206,27 +247,8 @@ void applyDetail(const Shot& shot, const ShotDetail& detail, double frame, std::
   application.patternOrigin = detail.patternOrigin;
   application.selection = detail.selection;
   const ShotAsset& asset = shot.assets[detail.asset];
-  for (size_t i = 0; i < posed.size(); ++i) {
-    if (asset.gltf->primitives[i].part != detail.part) continue;
-    TriangleMesh& mesh = posed[i];
-    TriangleMesh before = mesh;
-    if (before.normals.size() != before.positions.size()) computeSmoothNormals(before);
-    if (applyDetailPattern(mesh, before.normals, region, application) == 0) continue;
-    // New normals only around the moved vertices, so the rest of the skin keeps its normals bitwise.
-    TriangleMesh renormalised = mesh;
-    computeSmoothNormals(renormalised);
-    if (mesh.normals.size() != mesh.positions.size()) {
-      mesh.normals = std::move(renormalised.normals);
-      continue;
-    }
-    for (size_t t = 0; t < mesh.triangleCount(); ++t) {
-      const uint32_t* v = &mesh.indices[3 * t];
-      if (mesh.positions[v[0]] == before.positions[v[0]] && mesh.positions[v[1]] == before.positions[v[1]] &&
-          mesh.positions[v[2]] == before.positions[v[2]])
-        continue;
-      for (int k = 0; k < 3; ++k) mesh.normals[v[k]] = renormalised.normals[v[k]];
-    }
-  }
+  for (size_t i = 0; i < posed.size(); ++i)
+    if (asset.gltf->primitives[i].part == detail.part) displaceAndRenormalise(posed[i], region, application);
 }
 
 // Applies the shot's details active at this frame to the posed assets (at shutter open and close).
@@ -267,35 +289,8 @@ Camera cameraAt(const ShotCamera& shotCamera, double frame) {
   return camera;
 }
 
-}  // namespace
-
-Frame buildFrame(const Shot& shot, int frameNumber) {
-  if (frameNumber < shot.frameStart || frameNumber > shot.frameEnd)
-    throw InputError(fmt::format("{}: frame {} is outside the shot's frame range {}-{}", shot.path.string(),
-                                 frameNumber, shot.frameStart, shot.frameEnd));
-  for (const ShotAsset& asset : shot.assets) checkLoaded(shot, asset);
-  ShutterTimes shutter{double(frameNumber), double(frameNumber)};
-  if (shot.shutter) shutter = {frameNumber + shot.shutter->first, frameNumber + shot.shutter->second};
-
-  Frame frame;
-  frame.materials = shot.frameMaterials();
-  PosedAssets open = poseAssets(shot, shutter.open, nullptr);
-  std::optional<PosedAssets> close =
-      shutter.blurred() ? std::optional<PosedAssets>(poseAssets(shot, shutter.close, &open)) : std::nullopt;
-  applyDetails(shot, frameNumber, shutter, open, close);
-  swellMenisci(shot, shutter, open, close);
-  const PosedAssets* closePtr = close ? &*close : nullptr;
-  for (size_t a = 0; a < shot.assets.size(); ++a) addAssetMeshes(shot, a, open, closePtr, frame);
-  for (const ShotShape& shape : shot.shapes) addShape(shape, shutter, open, closePtr, frame);
-  shotfile::addEyes(shot, open, closePtr, frame);
-  for (const ShotTear& tear : shot.tears) addTear(shot, tear, frameNumber, shutter, frame);
-  for (const ShotSheddingTear& tear : shot.sheddingTears)
-    addSheddingTear(shot, tear, frameNumber, shutter, open, closePtr, frame);
-  for (const ShotLiquidTear& tear : shot.liquidTears)
-    shotfile::addLiquidTear(shot, tear, shutter.open, shutter.close, open[tear.asset],
-                            closePtr ? &(*closePtr)[tear.asset] : nullptr,
-                            assetMeshIndex(shot, open, tear.asset, tear.sourcePoint.primitive), frame);
-
+// The lights (keyed centres and intensities) and the camera (at open and, when it moves, close).
+void addLightsAndCamera(const Shot& shot, int frameNumber, const ShutterTimes& shutter, Frame& frame) {
   frame.lights = shot.lights;
   for (size_t i = 0; i < frame.lights.size() && i < shot.lightCenterCurves.size(); ++i)
     if (shot.lightCenterCurves[i]) frame.lights[i].center = shot.lightCenterCurves[i]->evaluate(float(frameNumber));
@@ -310,6 +305,67 @@ Frame buildFrame(const Shot& shot, int frameNumber) {
     if (atClose.cameraToWorld.matrix() != frame.camera.cameraToWorld.matrix())
       frame.camera.cameraToWorldAtClose = atClose.cameraToWorld;
   }
+}
+
+}  // namespace
+
+Frame buildFrame(const Shot& shot, int frameNumber) { return buildFrame(shot, frameNumber, nullptr); }
+
+Frame buildFrame(const Shot& shot, int frameNumber, FrameBuildTimes* times) {
+  FrameBuildTimes unused;
+  FrameBuildTimes& t = times ? *times : unused;
+  t = {};
+  const StageClock total(&t.totalSeconds);
+  if (frameNumber < shot.frameStart || frameNumber > shot.frameEnd)
+    throw InputError(fmt::format("{}: frame {} is outside the shot's frame range {}-{}", shot.path.string(),
+                                 frameNumber, shot.frameStart, shot.frameEnd));
+  for (const ShotAsset& asset : shot.assets) checkLoaded(shot, asset);
+  ShutterTimes shutter{double(frameNumber), double(frameNumber)};
+  if (shot.shutter) shutter = {frameNumber + shot.shutter->first, frameNumber + shot.shutter->second};
+
+  Frame frame;
+  frame.materials = shot.frameMaterials();
+  PosedAssets open;
+  std::optional<PosedAssets> close;
+  {
+    const StageClock clock(&t.rigSeconds);
+    open = poseAssets(shot, shutter.open, nullptr);
+    if (shutter.blurred()) close = poseAssets(shot, shutter.close, &open);
+  }
+  {
+    const StageClock clock(&t.detailSeconds);
+    applyDetails(shot, frameNumber, shutter, open, close);
+  }
+  {
+    const StageClock clock(&t.liquidSeconds);
+    swellMenisci(shot, shutter, open, close);
+  }
+  const PosedAssets* closePtr = close ? &*close : nullptr;
+  {
+    const StageClock clock(&t.otherSeconds);
+    for (size_t a = 0; a < shot.assets.size(); ++a) addAssetMeshes(shot, a, open, closePtr, frame);
+    for (const ShotShape& shape : shot.shapes) addShape(shape, shutter, open, closePtr, frame);
+  }
+  {
+    const StageClock clock(&t.eyeSeconds);
+    shotfile::addEyes(shot, open, closePtr, frame);
+  }
+  {
+    const StageClock clock(&t.otherSeconds);
+    for (const ShotTear& tear : shot.tears) addTear(shot, tear, frameNumber, shutter, frame);
+    for (const ShotSheddingTear& tear : shot.sheddingTears)
+      addSheddingTear(shot, tear, frameNumber, shutter, open, closePtr, frame);
+  }
+  {
+    const StageClock clock(&t.liquidSeconds);
+    for (const ShotLiquidTear& tear : shot.liquidTears)
+      shotfile::addLiquidTear(shot, tear, shutter.open, shutter.close, open[tear.asset],
+                              closePtr ? &(*closePtr)[tear.asset] : nullptr,
+                              assetMeshIndex(shot, open, tear.asset, tear.sourcePoint.primitive), frame);
+  }
+
+  const StageClock clock(&t.otherSeconds);
+  addLightsAndCamera(shot, frameNumber, shutter, frame);
   frame.settings = shot.render;
   frame.settings.frameNumber = frameNumber;
   return frame;

@@ -1,7 +1,12 @@
 // A liquid tear's wet trail as per-vertex film thickness on the skin; see liquid_tear_film.hpp.
 #include "liquid_tear_film.hpp"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
+#include <numeric>
+#include <span>
 
 #include "lacrima/geometry/surface_point.hpp"
 
@@ -14,6 +19,7 @@ struct WetPiece {
   Vec3 from, to;       // posed positions
   double s0 = 0.0, s1 = 0.0;  // arc lengths at its ends
   float reach = 0.0f;  // distance beyond which the film has fallen to 0 (widest film on the piece)
+  float peak = 0.0f;   // no point gets more film from this piece (the thickest cell it crosses)
 };
 
 // The pieces of the path that carry film, each with its reach; empty when the trail is dry.
@@ -33,6 +39,7 @@ std::vector<WetPiece> wetPieces(const ShotLiquidTear& tear, const FlowPath& path
     piece.from = surfacePosition(skin, path.points[i]);
     piece.to = surfacePosition(skin, SurfacePoint{path.points[i].triangle, path.arrival[i + 1]});
     piece.reach = float(0.5 * widest) * (1.0f + kFilmEdgeFraction);
+    piece.peak = float(simulation.maxFilmThicknessBetween(piece.s0, piece.s1));
     pieces.push_back(piece);
   }
   return pieces;
@@ -58,6 +65,68 @@ float filmFromPiece(const WetPiece& piece, const TearLiquidSimulation& simulatio
   return float(thickness) * edgeFalloff(r, float(0.5 * simulation.filmWidthAt(s)));
 }
 
+// The wet pieces by the cells of a uniform grid over their boxes: each piece is listed in every
+// cell its box overlaps, in the order given, so a vertex tests only the pieces of its own cell,
+// among them every piece whose box contains it. Cells are about a typical (median) piece box wide, at most
+// kMaxCellsPerAxis a side; the lists are stored flat (cell c's pieces: entries_[first_[c]] to
+// entries_[first_[c + 1]]), one allocation each, rebuilt every frame.
+class WetPieceGrid {
+ public:
+  WetPieceGrid(const std::vector<Eigen::AlignedBox3f>& pieceBoxes, const std::vector<uint32_t>& order,
+               const Eigen::AlignedBox3f& bounds)
+      : origin_(bounds.min()) {
+    const Vec3 extent = bounds.sizes();
+    cellSize_ = std::max({medianBoxSize(pieceBoxes), extent.maxCoeff() / float(kMaxCellsPerAxis), 1e-9f});
+    for (int k = 0; k < 3; ++k) cells_[k] = std::clamp(int(extent[k] / cellSize_) + 1, 1, kMaxCellsPerAxis);
+    first_.assign(size_t(cells_[0]) * cells_[1] * cells_[2] + 1, 0);
+    forEachCell(pieceBoxes, order, [&](uint32_t, size_t cell) { ++first_[cell + 1]; });
+    for (size_t c = 1; c < first_.size(); ++c) first_[c] += first_[c - 1];
+    entries_.resize(first_.back());
+    std::vector<uint32_t> filled(first_.begin(), first_.end() - 1);
+    forEachCell(pieceBoxes, order, [&](uint32_t piece, size_t cell) { entries_[filled[cell]++] = piece; });
+  }
+
+  // The pieces whose boxes may contain p (a point inside the bounds), in the order given.
+  std::span<const uint32_t> piecesNear(const Vec3& p) const {
+    const size_t c = index(cellOf(p));
+    return {entries_.data() + first_[c], entries_.data() + first_[c + 1]};
+  }
+
+ private:
+  static constexpr int kMaxCellsPerAxis = 32;
+
+  static float medianBoxSize(const std::vector<Eigen::AlignedBox3f>& boxes) {
+    std::vector<float> sizes;
+    for (const Eigen::AlignedBox3f& b : boxes) sizes.push_back(b.sizes().maxCoeff());
+    std::nth_element(sizes.begin(), sizes.begin() + sizes.size() / 2, sizes.end());
+    return sizes[sizes.size() / 2];
+  }
+
+  // Calls visit(piece, cell) for every cell each piece's box overlaps, pieces in `order`.
+  template <typename Visit>
+  void forEachCell(const std::vector<Eigen::AlignedBox3f>& boxes, const std::vector<uint32_t>& order, Visit visit) const {
+    for (const uint32_t i : order) {
+      const Eigen::Vector3i lo = cellOf(boxes[i].min()), hi = cellOf(boxes[i].max());
+      for (int z = lo.z(); z <= hi.z(); ++z)
+        for (int y = lo.y(); y <= hi.y(); ++y)
+          for (int x = lo.x(); x <= hi.x(); ++x) visit(i, index(Eigen::Vector3i(x, y, z)));
+    }
+  }
+
+  Eigen::Vector3i cellOf(const Vec3& p) const {
+    Eigen::Vector3i c;
+    for (int k = 0; k < 3; ++k) c[k] = std::clamp(int((p[k] - origin_[k]) / cellSize_), 0, cells_[k] - 1);
+    return c;
+  }
+  size_t index(const Eigen::Vector3i& c) const { return (size_t(c.z()) * cells_[1] + c.y()) * cells_[0] + c.x(); }
+
+  Vec3 origin_;
+  float cellSize_ = 1.0f;
+  int cells_[3] = {1, 1, 1};
+  std::vector<uint32_t> first_;    // per cell, where its pieces start in entries_ (one more at the end)
+  std::vector<uint32_t> entries_;  // piece indices, cell after cell
+};
+
 }  // namespace
 
 void addLiquidTearFilm(const ShotLiquidTear& tear, const FlowPath& course, const TearLiquidSimulation& simulation,
@@ -74,15 +143,32 @@ void addLiquidTearFilm(const ShotLiquidTear& tear, const FlowPath& course, const
     pieceBoxes.push_back(b);
     box.extend(b);
   }
-  for (size_t v = 0; v < skin.positions.size(); ++v) {
-    const Vec3& p = skin.positions[v];
-    if (!box.contains(p)) continue;
-    float film = 0.0f;
-    for (size_t i = 0; i < pieces.size(); ++i)
-      if (pieceBoxes[i].contains(p)) film = std::max(film, filmFromPiece(pieces[i], simulation, p));
-    if (film <= 0.0f) continue;
+  // Thickest first: once a vertex has as much film as the next piece could give it, no later piece
+  // can raise its maximum, and the rest are skipped (the maximum, hence the film, is unchanged).
+  std::vector<uint32_t> thickestFirst(pieces.size());
+  std::iota(thickestFirst.begin(), thickestFirst.end(), 0u);
+  std::stable_sort(thickestFirst.begin(), thickestFirst.end(),
+                   [&](uint32_t a, uint32_t b) { return pieces[a].peak > pieces[b].peak; });
+  const WetPieceGrid grid(pieceBoxes, thickestFirst, box);
+  // Each vertex's film depends on nothing but its position: the vertices are split between the
+  // threads, and the result does not depend on how.
+  std::vector<float> films(skin.positions.size(), 0.0f);
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, skin.positions.size(), 4096), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t v = r.begin(); v != r.end(); ++v) {
+      const Vec3& p = skin.positions[v];
+      if (!box.contains(p)) continue;
+      float film = 0.0f;
+      for (const uint32_t i : grid.piecesNear(p)) {
+        if (pieces[i].peak <= film) break;
+        if (pieceBoxes[i].contains(p)) film = std::max(film, filmFromPiece(pieces[i], simulation, p));
+      }
+      films[v] = film;
+    }
+  });
+  for (size_t v = 0; v < films.size(); ++v) {
+    if (films[v] <= 0.0f) continue;
     if (wetness.empty()) wetness.assign(skin.positions.size(), 0.0f);
-    wetness[v] = std::max(wetness[v], film);
+    wetness[v] = std::max(wetness[v], films[v]);
   }
 }
 

@@ -120,5 +120,84 @@ TEST(SmoothNormals, RejectsBadWeldMapsAndIndices) {
   EXPECT_THROW(computeSmoothNormals(mesh), std::invalid_argument);
 }
 
+// ---- renewSmoothNormalsAround: the full computation's normals, only where they can change ----
+
+// Moves the vertices within `radius` of `center` along +z by `height` times a smooth bump; the
+// moved flags.
+std::vector<bool> bump(TriangleMesh& mesh, const Vec3& center, float radius, float height) {
+  std::vector<bool> moved(mesh.positions.size(), false);
+  for (size_t v = 0; v < mesh.positions.size(); ++v) {
+    const float r = (mesh.positions[v] - center).norm() / radius;
+    if (r >= 1.0f) continue;
+    mesh.positions[v].z() += height * (1.0f - r * r) * (1.0f - r * r);
+    moved[v] = true;
+  }
+  return moved;
+}
+
+// Every vertex of a triangle with a moved corner gets bitwise the full recomputation's normal;
+// every other vertex keeps its normal.
+void expectRenewedAsFullComputation(const TriangleMesh& before, TriangleMesh deformed, const std::vector<bool>& moved) {
+  TriangleMesh full = deformed;
+  computeSmoothNormals(full, true);
+  renewSmoothNormalsAround(deformed, moved);
+  std::vector<bool> around(moved.size(), false);
+  for (size_t i = 0; i < deformed.indices.size(); i += 3) {
+    const uint32_t* t = &deformed.indices[i];
+    if (moved[t[0]] || moved[t[1]] || moved[t[2]]) around[t[0]] = around[t[1]] = around[t[2]] = true;
+  }
+  size_t renewed = 0;
+  for (size_t v = 0; v < moved.size(); ++v) {
+    if (around[v]) {
+      ++renewed;
+      EXPECT_EQ(deformed.normals[v], full.normals[v]) << "vertex " << v;
+    } else {
+      EXPECT_EQ(deformed.normals[v], before.normals[v]) << "vertex " << v;
+    }
+  }
+  EXPECT_GT(renewed, 0u);
+}
+
+TEST(RenewSmoothNormalsAround, MatchesTheFullComputationBitwiseAroundABump) {
+  TriangleMesh mesh = makeEllipsoid(Vec3(0.1f, -0.2f, 0.3f), ellipsoidAxes(), 48, 96);
+  computeSmoothNormals(mesh, true);
+  TriangleMesh deformed = mesh;
+  const std::vector<bool> moved = bump(deformed, mesh.positions[mesh.positions.size() / 3], 0.4f, 0.05f);
+  expectRenewedAsFullComputation(mesh, deformed, moved);
+}
+
+TEST(RenewSmoothNormalsAround, WeldsAcrossASeamLikeTheFullComputation) {
+  // Moving the tilted triangle's free corner changes the normals of the seam copies 3 and 5,
+  // which weld with 0 and 1 of the flat triangle: their sums take both triangles.
+  TriangleMesh mesh = foldedSeam();
+  computeSmoothNormals(mesh, true);
+  TriangleMesh deformed = mesh;
+  deformed.positions[4] += Vec3(0.0f, 0.0f, 0.5f);
+  std::vector<bool> moved(deformed.positions.size(), false);
+  moved[4] = true;
+  expectRenewedAsFullComputation(mesh, deformed, moved);
+  TriangleMesh renewed = deformed;
+  renewSmoothNormalsAround(renewed, moved);
+  EXPECT_NE(renewed.normals[3], Vec3(0, 0, 1));  // welded with the flat triangle, not its own face alone
+}
+
+TEST(RenewSmoothNormalsAround, NothingMovedChangesNothing) {
+  TriangleMesh mesh = makeEllipsoid(Vec3::Zero(), ellipsoidAxes(), 16, 32);
+  const std::vector<Vec3> normals = mesh.normals;
+  renewSmoothNormalsAround(mesh, std::vector<bool>(mesh.positions.size(), false));
+  EXPECT_EQ(mesh.normals, normals);
+}
+
+TEST(RenewSmoothNormalsAround, RejectsMissingNormalsFlagsAndBadIndices) {
+  TriangleMesh mesh = makeRectangle(Vec3::Zero(), Vec3(1, 0, 0), Vec3(0, 1, 0));
+  computeSmoothNormals(mesh);
+  EXPECT_THROW(renewSmoothNormalsAround(mesh, std::vector<bool>(2, true)), std::invalid_argument);
+  TriangleMesh noNormals = mesh;
+  noNormals.normals.clear();
+  EXPECT_THROW(renewSmoothNormalsAround(noNormals, std::vector<bool>(4, true)), std::invalid_argument);
+  mesh.indices[4] = 17;
+  EXPECT_THROW(renewSmoothNormalsAround(mesh, std::vector<bool>(4, true)), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace lacrima

@@ -310,6 +310,26 @@ TEST(TearLiquid, TrailFilmDriesWithItsTimeConstant) {
   EXPECT_EQ(simulation.filmThicknessAt(0.5), 0.0);  // off the path
 }
 
+TEST(TearLiquid, MaxFilmThicknessBetweenBoundsTheFilmOverTheRange) {
+  TearLiquidInput input = noWelling(planePath(deg(60.0), 0.1));
+  input.params.initialBeads = {{0.003, 10.0 * kUl}};
+  TearLiquidSimulation simulation(input);
+  simulation.advanceTo(1.0);
+  const double cell = input.params.trailCellLength;
+  for (const auto& [s0, s1] : {std::pair{0.0, 0.02}, std::pair{0.004, 0.0041}, std::pair{0.01, 0.05}}) {
+    const double bound = simulation.maxFilmThicknessBetween(s0, s1);
+    double thickest = 0.0;
+    for (double s = s0; s <= s1; s += 0.1 * cell) {
+      EXPECT_LE(simulation.filmThicknessAt(s), bound) << "s " << s;
+      thickest = std::max(thickest, simulation.filmThicknessAt(s));
+    }
+    // Tight up to the neighbouring cell on either side.
+    EXPECT_LE(bound, simulation.maxFilmThicknessBetween(s0 - cell, s1 + cell));
+    EXPECT_GE(bound, thickest);
+  }
+  EXPECT_GT(simulation.maxFilmThicknessBetween(0.0, 0.02), 0.0);  // the bead wetted its start
+}
+
 TEST(TearLiquid, FlowPathSamplesCarryTheirTriangleNormals) {
   TriangleMesh mesh;
   mesh.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 0, -1), Vec3(1, -1, 0)};

@@ -56,6 +56,8 @@ struct FarmStatusOptions {
 struct BenchOptions {
   std::string shotPath;
   int width = 320, height = 180, spp = 4, threads = 0, repetitions = 3;
+  std::optional<std::string> costFrames;  // the per-frame cost report's frames (none: six from the middle)
+  bool frameCostsOnly = false;
   // --quality: time to equal error (cmd_bench_quality.cpp).
   bool quality = false;
   std::optional<int> frame;  // default: the shot's first frame

@@ -224,7 +224,8 @@ void addInfo(CLI::App& app, std::string& file) {
 void addBench(CLI::App& app, BenchOptions& o) {
   auto* bench = app.add_subcommand("bench", "Measure render and raw Embree throughput (not a test)");
   bench->footer(
-      "Renders the default shot (or SHOT) at a fixed small size and reports medians of the repetitions.\n"
+      "Renders the default shot (or SHOT) at a fixed small size and reports medians of the repetitions,\n"
+      "then per frame (--frames) the milliseconds before the first ray: geometry stages, scene update, set-up.\n"
       "With --quality, reports time to equal error, e.g.\n"
       "  lacrima bench --quality --width 160 --height 90 --max-spp 64 --target 0.05");
   bench->add_option("shot", o.shotPath, "Shot file (default: scenes/shots/tear_closeup.json)");
@@ -233,6 +234,9 @@ void addBench(CLI::App& app, BenchOptions& o) {
   bench->add_option("--spp", o.spp, "Samples per pixel")->check(integerIn(1, 4096));
   bench->add_option("--threads", o.threads, "Threads (0 = all cores)")->check(integerIn(0, INT_MAX));
   bench->add_option("--repetitions", o.repetitions, "Repetitions (median reported)")->check(integerIn(1, 50));
+  bench->add_option("--frames", o.costFrames,
+                    "The frames of the per-frame cost report, in order (default: six from the middle of the shot)");
+  bench->add_flag("--frame-costs-only", o.frameCostsOnly, "Only the per-frame cost report (no throughput)");
   bench->add_flag("--quality", o.quality,
                   "Time to equal error instead: RMSE at 1, 2, 4 ... --max-spp samples against a converged reference, "
                   "the RMSE-vs-spp slope, and the samples and seconds to reach each --target");

@@ -36,6 +36,12 @@ std::vector<uint32_t> findCoincidentVertices(const TriangleMesh& mesh);
 // have one entry per vertex, each entry a valid vertex index.
 void computeSmoothNormals(TriangleMesh& mesh, const std::vector<uint32_t>& weldMap);
 
+// After some vertices moved (`moved`, one flag per vertex): the normals of every vertex of a
+// triangle with a moved corner, exactly (bitwise) as computeSmoothNormals(mesh, true) would give
+// them, the other normals kept. Costs the moved region plus one pass over the triangles, not the
+// whole mesh's weld. `mesh` must have one normal per vertex.
+void renewSmoothNormalsAround(TriangleMesh& mesh, const std::vector<bool>& moved);
+
 // Axis-aligned bounds of the positions (empty box for an empty mesh).
 Eigen::AlignedBox3f computeBounds(const TriangleMesh& mesh);
 

@@ -248,6 +248,9 @@ class TearLiquidSimulation {
 
   // Film thickness (m) at arc length s; 0 off the path.
   double filmThicknessAt(double arcLength) const;
+  // An upper bound of filmThicknessAt(s) for every s in [s0, s1] (also for an s one rounding off
+  // either end): the thickest cell from the one before s0's to the one after s1's.
+  double maxFilmThicknessBetween(double s0, double s1) const;
   // Width (m) of the film at arc length s: the widest bead base that wetted its cell; 0 off the
   // path or where no film was laid.
   double filmWidthAt(double arcLength) const;

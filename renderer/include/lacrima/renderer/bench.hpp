@@ -1,6 +1,7 @@
 #pragma once
 // Raw Embree throughput on a Frame's geometry, the ceiling the path tracer is measured against.
 #include <cstdint>
+#include <memory>
 
 #include "lacrima/renderer/frame.hpp"
 
@@ -30,5 +31,55 @@ struct SceneUpdateTimes {
 // later frame with the same geometry layout, with frame.settings.threads threads. `deformed`
 // must have the layout of `frame` (InputError otherwise).
 SceneUpdateTimes measureSceneBuildAndRefit(const Frame& frame, const Frame& deformed);
+
+}  // namespace lacrima
+
+// ---- The cost before the first ray, frame after frame (lacrima bench's frame report) ----------
+
+namespace lacrima {
+
+class EmbreeScene;  // renderer/src/embree_scene.hpp
+class Renderer;     // lacrima/renderer/render.hpp
+
+// One scene update, as Renderer makes it.
+struct SceneUpdateSplit {
+  bool refit = false;          // false: built from scratch (the first frame, or the layout changed)
+  double uploadSeconds = 0.0;  // refit: changed vertices copied into Embree's buffers (0 for a build)
+  double bvhSeconds = 0.0;     // refit: the commits that refit or rebuild the BVHs; build: all of it
+  double totalSeconds() const { return uploadSeconds + bvhSeconds; }
+};
+
+// Follows the frames of a shot as Renderer does (a build on the first, a refit while the geometry
+// layout stays) with frame.settings.threads threads, timing the parts of each update. A frame
+// must outlive the next update.
+class SceneUpdateProbe {
+ public:
+  SceneUpdateProbe();
+  ~SceneUpdateProbe();
+  SceneUpdateProbe(const SceneUpdateProbe&) = delete;
+  SceneUpdateProbe& operator=(const SceneUpdateProbe&) = delete;
+  SceneUpdateSplit update(const Frame& frame);
+
+ private:
+  std::unique_ptr<EmbreeScene> scene_;
+};
+
+// The wall seconds of renderer.render(frame) up to its first ray: frame checks, the scene update,
+// the light sampler and the integrator (measured as a render whose cancel flag is set before it
+// starts: every tile is skipped).
+double secondsBeforeFirstRay(Renderer& renderer, const Frame& frame);
+
+// Raw Embree on the triangle meshes alone, no lacrima code between: a device with
+// frame.settings.threads threads, the renderer's scene flags (two-level BVH, robust), one
+// geometry per mesh with build quality REFIT and its own vertex and index buffers, committed at
+// `from`'s positions; then the meshes whose positions differ are given `to`'s positions and only
+// the commits are timed (rtcCommitGeometry of each, rtcCommitScene). `from` and `to` must have
+// the same meshes, vertex and triangle counts (InputError otherwise).
+struct RawRefitTimes {
+  double sameTimeStepsSeconds = 0.0;  // each mesh with the frames' time steps (two when it moves)
+  double oneTimeStepSeconds = 0.0;    // every mesh with its shutter-open positions only
+  size_t triangles = 0;
+};
+RawRefitTimes measureRawEmbreeRefit(const Frame& from, const Frame& to);
 
 }  // namespace lacrima

@@ -1,0 +1,27 @@
+#pragma once
+// Where buildFrame's time goes, stage by stage, for `lacrima bench`'s per-frame report. Separate
+// from shot.hpp so that the many files including it do not recompile when a stage is added.
+#include "lacrima/scenes/shot_model.hpp"
+
+namespace lacrima {
+
+// Wall seconds (std::chrono::steady_clock) of each stage of one buildFrame call. The subdivision
+// of the skin under details and along liquid trails happens once per shot, in loadShot, so the
+// per-frame stages below pose, displace and simulate on the already refined meshes.
+struct FrameBuildTimes {
+  double rigSeconds = 0.0;     // assets posed: blendshapes, skinning, normals (shutter open and close)
+  double detailSeconds = 0.0;  // details displacing the posed skin, normals renewed around them
+  // Liquid tears: the meniscus swelling, the simulation up to the frame, beads, drops and the wet
+  // trail's film on the skin.
+  double liquidSeconds = 0.0;
+  double eyeSeconds = 0.0;     // eyes (cornea, sclera, iris, pupil) and lashes
+  // The posed meshes copied into the Frame (with their defect check), shapes, kinematic tears,
+  // lights, camera.
+  double otherSeconds = 0.0;
+  double totalSeconds = 0.0;   // the whole call
+};
+
+// buildFrame (shot.hpp), recording its stages' times in `times` (when not null).
+Frame buildFrame(const Shot& shot, int frameNumber, FrameBuildTimes* times);
+
+}  // namespace lacrima
