@@ -5,7 +5,7 @@
 #   tools/hardening.sh            everything below, in this order (what CI runs)
 #   tools/hardening.sh tests      unit tests of geometry, materials, scenes and fuzz under ASan/UBSan
 #   tools/hardening.sh render     small renders under ASan/UBSan (leak check on)
-#   tools/hardening.sh fuzz       each libFuzzer target for FUZZ_SECONDS (default 30)
+#   tools/hardening.sh fuzz       each libFuzzer target for FUZZ_SECONDS (default 20)
 #   tools/hardening.sh fuzz-campaign [shot|gltf|performance_track] [--seconds N] [--runs N]
 #                                 not in CI: fuzzes each target (or those named) for N seconds
 #                                 and/or N executions (default --seconds 600; with both, whichever
@@ -29,7 +29,7 @@ usage="usage: tools/hardening.sh [all|tests|render|fuzz|memory]
        tools/hardening.sh fuzz-campaign [shot|gltf|performance_track] [--seconds N] [--runs N]"
 tree="${HARDENING_DIR:-build-hardening}"
 jobs="${JOBS:-$(nproc)}"
-fuzz_seconds="${FUZZ_SECONDS:-30}"
+fuzz_seconds="${FUZZ_SECONDS:-20}"
 fuzz_timeout="${FUZZ_TIMEOUT:-10}"
 
 # halt_on_error: the first report fails the run; detect_leaks: LeakSanitizer at exit.
