@@ -8,13 +8,8 @@ namespace lacrima {
 namespace {
 
 using test::expectSingleError;
+using test::shotWithRender;
 using test::writeShot;
-
-std::string shotWithRender(const std::string& renderExtra) {
-  return "{\n  \"version\": 1,\n  \"frames\": {\"start\": 1, \"end\": 1, \"fps\": 24},\n"
-         "  \"output\": \"out.####.exr\",\n  \"render\": {\"width\": 8, \"height\": 8, \"spp\": 1" + renderExtra + "},\n"
-         "  \"camera\": {\"position\": [0, 0, 3], \"lookAt\": [0, 0, 0], \"fov\": 30}\n}\n";
-}
 
 SamplerKind samplerOf(const std::string& name, const std::string& renderExtra) {
   return loadShot(writeShot(name, shotWithRender(renderExtra))).render.sampler;

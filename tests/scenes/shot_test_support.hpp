@@ -24,6 +24,14 @@ inline std::filesystem::path writeShot(const std::string& name, const std::strin
   return path;
 }
 
+// A minimal shot of one frame whose "render" object ends with renderExtra (e.g. `, "sampler":
+// "sobol"`): for the tests of the render settings' keys.
+inline std::string shotWithRender(const std::string& renderExtra) {
+  return "{\n  \"version\": 1,\n  \"frames\": {\"start\": 1, \"end\": 1, \"fps\": 24},\n"
+         "  \"output\": \"out.####.exr\",\n  \"render\": {\"width\": 8, \"height\": 8, \"spp\": 1" + renderExtra + "},\n"
+         "  \"camera\": {\"position\": [0, 0, 3], \"lookAt\": [0, 0, 0], \"fov\": 30}\n}\n";
+}
+
 inline std::string joinLines(const std::vector<std::string>& lines) {
   std::string out;
   for (size_t i = 0; i < lines.size(); ++i) {
