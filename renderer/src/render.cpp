@@ -81,7 +81,12 @@ float cameraDepth(const Camera& camera, const Ray& ray, float distance) {
 class TileRenderer {
  public:
   TileRenderer(const Frame& frame, const PathIntegrator& integrator, const FilterSampler& filter, Film& film)
-      : frame_(frame), integrator_(integrator), filter_(filter), film_(film), hasMotion_(frame.hasMotion()) {}
+      : frame_(frame),
+        integrator_(integrator),
+        filter_(filter),
+        film_(film),
+        cameraRays_(frame.camera, frame.settings.width, frame.settings.height),
+        hasMotion_(frame.hasMotion()) {}
 
   void renderTile(const TileRect& rect, PathCounters& counters, uint64_t& nonFinite) const {
     for (int y = rect.y0; y < rect.y1; ++y)
@@ -101,8 +106,7 @@ class TileRenderer {
       const Vec2 lens(pixelAndLens[2], pixelAndLens[3]);
       sampler.setDimension(sample_dimensions::kTime);
       const float time = hasMotion_ ? sampler.get1D() : 0.0f;
-      const Ray ray = generateCameraRay(frame_.camera, s.width, s.height, float(x) + 0.5f + f.offset.x(),
-                                        float(y) + 0.5f + f.offset.y(), lens, time);
+      const Ray ray = cameraRays_.generate(float(x) + 0.5f + f.offset.x(), float(y) + 0.5f + f.offset.y(), lens, time);
       FirstHit first;
       Color L = integrator_.radiance(ray, sampler, first, counters);
       if (!isFinite(L)) {
@@ -163,6 +167,7 @@ class TileRenderer {
   const PathIntegrator& integrator_;
   const FilterSampler& filter_;
   Film& film_;
+  CameraRays cameraRays_;
   bool hasMotion_;
 };
 
@@ -203,7 +208,7 @@ Film Renderer::render(const Frame& frame, RenderStats* stats, const ProgressCall
   std::atomic<int> tilesDone{0};
   std::mutex progressMutex;
   SceneUpdate sceneUpdate = SceneUpdate::Build;
-  double sceneUpdateSeconds = 0.0;
+  double sceneUpdateSeconds = 0.0, tracingSeconds = 0.0;
 
   arena.execute([&] {
     const auto updateStart = std::chrono::steady_clock::now();
@@ -214,6 +219,7 @@ Film Renderer::render(const Frame& frame, RenderStats* stats, const ProgressCall
     const PathIntegrator integrator(frame, scene, lights);
     const FilterSampler filter(s.filter);
     const TileRenderer tiles(frame, integrator, filter, film);
+    const auto tracingStart = std::chrono::steady_clock::now();
     tbb::parallel_for(tbb::blocked_range<int>(0, tileCount, 1), [&](const tbb::blocked_range<int>& range) {
       for (int t = range.begin(); t != range.end(); ++t) {
         if (cancel && cancel->load(std::memory_order_relaxed)) return;  // skip what is left, cheaply
@@ -230,11 +236,13 @@ Film Renderer::render(const Frame& frame, RenderStats* stats, const ProgressCall
         }
       }
     });
+    tracingSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - tracingStart).count();
   });
   if (cancel && cancel->load()) throw RenderCancelled();
 
   if (stats) {
     stats->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    stats->tracingSeconds = tracingSeconds;
     stats->cameraPaths = uint64_t(s.width) * s.height * s.samplesPerPixel;
     stats->rays = rays.load();
     stats->nonFiniteSamples = nonFinite.load();

@@ -18,8 +18,25 @@ struct Ray {
 // quaternion slerp (Shoemake 1985).
 Affine3 cameraToWorldAt(const Camera& camera, float time);
 
-// A primary ray through film position (filmX, filmY) in pixels (0..width, 0..height, y down),
-// with lens sample lensU in [0,1)^2 (ignored for a pinhole).
+// Primary rays of one camera and image size. What does not change from ray to ray is worked out
+// once: the rotations at shutter open and close (Transform::rotation() is a polar decomposition,
+// an SVD, which per camera ray was 5 % of a render of the default shot), the image plane's size.
+class CameraRays {
+ public:
+  CameraRays(const Camera& camera, int width, int height);
+  // The ray through film position (filmX, filmY) in pixels (0..width, 0..height, y down), with
+  // lens sample lensU in [0,1)^2 (ignored for a pinhole), at shutter time `time`.
+  Ray generate(float filmX, float filmY, const Vec2& lensU, float time = 0.0f) const;
+  // The camera's placement at `time`, as cameraToWorldAt gives it.
+  Affine3 cameraToWorldAt(float time) const;
+
+ private:
+  const Camera& camera_;
+  float width_, height_, tanHalfFov_, aspect_;
+  Eigen::Quaternionf rotationAtOpen_, rotationAtClose_;
+};
+
+// One ray, as CameraRays(camera, width, height).generate(...) gives it.
 Ray generateCameraRay(const Camera& camera, int width, int height, float filmX, float filmY, const Vec2& lensU,
                       float time = 0.0f);
 

@@ -31,6 +31,9 @@ struct RenderStats {
   SceneUpdate sceneUpdate = SceneUpdate::Build;
   double sceneUpdateSeconds = 0.0;  // building or refitting the Embree scene (part of seconds)
   double seconds = 0.0;
+  // Path tracing alone: the wall time of the tiles, after the scene update, the light sampler and
+  // the integrator's set-up (part of seconds). Rays per second are measured over it.
+  double tracingSeconds = 0.0;
   uint64_t cameraPaths = 0;
   uint64_t rays = 0;          // intersect + occluded queries
   uint64_t nonFiniteSamples = 0;  // NaN/Inf path contributions discarded (never on the film)
