@@ -18,6 +18,21 @@ Vec3 poreCentre(int64_t i, int64_t j, int64_t k) {
               float(k) + uint64ToUnitFloat(hashCombine(cell, 2)));
 }
 
+// The neighbour cells along one axis that can hold a pore reaching a point at `local` (its
+// coordinate from the cell corner, in [0, 1]): a centre of cell -1 lies below 0 and reaches less
+// than kPoreRadius above it, a centre of cell +1 lies at or above 1 and reaches less than
+// kPoreRadius below it; cell 0 always. Since kPoreRadius < 1/2, never both neighbours, so at most
+// 8 of the 27 surrounding cells are visited (the others add nothing). The margin covers the
+// rounding of the centres' float coordinates.
+struct AxisCells {
+  int first, last;
+};
+AxisCells cellsReaching(float local) {
+  constexpr float kMargin = 1e-3f;
+  return {local < kPoreRadius + kMargin ? -1 : 0, local > 1.0f - kPoreRadius - kMargin ? 1 : 0};
+}
+static_assert(kPoreRadius < 0.5f, "cellsReaching assumes a pore reaches at most one neighbour per axis");
+
 }  // namespace
 
 PoreHeight poreHeight(const Vec3& p, float scale, float depth) {
@@ -31,10 +46,12 @@ PoreHeight poreHeight(const Vec3& p, float scale, float depth) {
   constexpr float invR2 = 1.0f / (kPoreRadius * kPoreRadius);
   float sumB = 0.0f;
   Vec3 sumGrad = Vec3::Zero();
-  // A centre lies in its own cell and R < 1, so only the 27 surrounding cells can reach p.
-  for (int64_t di = -1; di <= 1; ++di) {
-    for (int64_t dj = -1; dj <= 1; ++dj) {
-      for (int64_t dk = -1; dk <= 1; ++dk) {
+  // A centre lies in its own cell and R < 1, so only the surrounding cells can reach p; of those,
+  // only the ones cellsReaching names (the same sum in the same order as over all 27).
+  const AxisCells cx = cellsReaching(local.x()), cy = cellsReaching(local.y()), cz = cellsReaching(local.z());
+  for (int64_t di = cx.first; di <= cx.last; ++di) {
+    for (int64_t dj = cy.first; dj <= cy.last; ++dj) {
+      for (int64_t dk = cz.first; dk <= cz.last; ++dk) {
         const Vec3 centre = poreCentre(ci + di, cj + dj, ck + dk) - Vec3(float(ci), float(cj), float(ck));
         const Vec3 d = local - centre;
         const float s = d.squaredNorm() * invR2;

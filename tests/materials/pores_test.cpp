@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "lacrima/geometry/sampler.hpp"
 #include "lacrima/materials/pores.hpp"
 #include "test_support.hpp"
 
@@ -115,6 +116,52 @@ TEST(Pores, MeanNormalIsTheUnperturbedOne) {
   // Pits cover about 4/3 pi R^3 = 11% of a slice of the lattice; most of a pit is tilted > 2 deg.
   EXPECT_GT(tilted, count / 20);
   EXPECT_LT(tilted, count / 4);
+}
+
+// The field as pores.hpp defines it, summed over all 27 surrounding cells (the implementation
+// visits only the cells that can reach the point): the same hashed centres (pores.cpp).
+PoreHeight poreHeightOverAll27Cells(const Vec3& p, float scale, float depth) {
+  constexpr uint64_t kPoreSeed = 0x706f726573ULL;
+  const Vec3d q = p.cast<double>() / double(scale);
+  const int64_t ci = int64_t(std::floor(q.x())), cj = int64_t(std::floor(q.y())), ck = int64_t(std::floor(q.z()));
+  const Vec3 local = (q - Vec3d(double(ci), double(cj), double(ck))).cast<float>();
+  constexpr float invR2 = 1.0f / (kPoreRadius * kPoreRadius);
+  float sumB = 0.0f;
+  Vec3 sumGrad = Vec3::Zero();
+  for (int64_t di = -1; di <= 1; ++di)
+    for (int64_t dj = -1; dj <= 1; ++dj)
+      for (int64_t dk = -1; dk <= 1; ++dk) {
+        const int64_t i = ci + di, j = cj + dj, k = ck + dk;
+        const uint64_t cell = hashCombine(hashCombine(hashCombine(kPoreSeed, uint64_t(i)), uint64_t(j)), uint64_t(k));
+        const Vec3 centre = Vec3(float(i) + uint64ToUnitFloat(hashCombine(cell, 0)),
+                                 float(j) + uint64ToUnitFloat(hashCombine(cell, 1)),
+                                 float(k) + uint64ToUnitFloat(hashCombine(cell, 2))) -
+                            Vec3(float(ci), float(cj), float(ck));
+        const Vec3 d = local - centre;
+        const float s = d.squaredNorm() * invR2;
+        if (s >= 1.0f) continue;
+        sumB += (1.0f - s) * (1.0f - s);
+        sumGrad += (-4.0f * (1.0f - s) * invR2) * d;
+      }
+  return {-depth * sumB, (-depth / scale) * sumGrad};
+}
+
+// Visiting only the cells that can reach a point loses nothing: bitwise the sum over all 27, also
+// near cell faces and corners (points snapped to them) and far from the origin.
+TEST(Pores, NearbyCellsGiveTheSumOverAll27) {
+  test::TestRng rng(6);
+  int inPits = 0;
+  for (int k = 0; k < 200000; ++k) {
+    Vec3 p = patchPoint(rng, 0.0123f + 0.001f * rng.uniform());
+    if (k % 4 == 1) p = (p / kScale).array().round().matrix() * kScale;  // on a lattice corner
+    if (k % 4 == 2) p.x() = std::round(p.x() / kScale) * kScale;          // on a cell face
+    if (k % 4 == 3) p += Vec3(-1.7f, 2.3f, 0.9f);                         // far from the origin
+    const PoreHeight fast = poreHeight(p, kScale, kDepth), all = poreHeightOverAll27Cells(p, kScale, kDepth);
+    ASSERT_EQ(fast.height, all.height) << "at " << p.transpose();
+    ASSERT_TRUE(fast.gradient == all.gradient) << "at " << p.transpose();
+    inPits += all.height < 0.0f ? 1 : 0;
+  }
+  EXPECT_GT(inPits, 10000);  // the comparison covers many points inside pits, not only flat skin
 }
 
 }  // namespace
