@@ -216,8 +216,9 @@ Color EnvironmentMap::texel(int i, int j) const {
 }
 
 // Bilinear blend of the cell's four corners (rows clamped at the poles, columns wrapped).
-Color EnvironmentMap::radiance(const Vec3& direction) const {
-  const Cell cell = cellAt(directionToUv(direction));
+Color EnvironmentMap::radiance(const Vec3& direction) const { return radianceIn(cellAt(directionToUv(direction))); }
+
+Color EnvironmentMap::radianceIn(const Cell& cell) const {
   const int left = cell.column, right = (cell.column + 1) % width_;
   const int top = std::max(cell.row - 1, 0), bottom = std::min(cell.row, height_ - 1);
   const Color upper = (1.0f - cell.fx) * texel(left, top) + cell.fx * texel(right, top);
@@ -225,11 +226,28 @@ Color EnvironmentMap::radiance(const Vec3& direction) const {
   return ((1.0f - cell.fy) * upper + cell.fy * lower) * intensity_;
 }
 
+float EnvironmentMap::sinPolarAngle(const Vec3& direction) {
+  return std::hypot(direction.x(), direction.z()) / direction.norm();
+}
+
 float EnvironmentMap::pdf(const Vec3& direction) const {
-  const float length = direction.norm();
-  const float sinTheta = std::hypot(direction.x(), direction.z()) / length;
+  const float sinTheta = sinPolarAngle(direction);
   if (!(sinTheta > 0.0f)) return 0.0f;  // a pole, zero or NaN direction
+  return pdfIn(cellAt(directionToUv(direction)), sinTheta);
+}
+
+EnvironmentSample EnvironmentMap::lookup(const Vec3& direction) const {
   const Cell cell = cellAt(directionToUv(direction));
+  const float sinTheta = sinPolarAngle(direction);
+  EnvironmentSample s;
+  s.direction = direction;
+  s.radiance = radianceIn(cell);
+  s.pdf = sinTheta > 0.0f ? pdfIn(cell, sinTheta) : 0.0f;  // 0 at a pole, zero or NaN direction
+  return s;
+}
+
+// The density of sample() in the direction of polar angle sine sinTheta (> 0) that falls in cell.
+float EnvironmentMap::pdfIn(const Cell& cell, float sinTheta) const {
   const std::span<const float> row(&conditionalCdf_[std::size_t(cell.row) * (std::size_t(width_) + 1)],
                                    std::size_t(width_) + 1);
   const double cellHeight = cellRowTop(cell.row + 1) - cellRowTop(cell.row);
@@ -247,13 +265,9 @@ EnvironmentSample EnvironmentMap::sample(const Vec2& u) const {
   float su = (float(columnSample.index) + 0.5f + columnSample.offset) / float(width_);
   if (su >= 1.0f) su -= 1.0f;  // the cell across the seam
   const Vec2 uv(su, float(top + rowSample.offset * (bottom - top)));
-  EnvironmentSample s;
-  s.direction = uvToDirection(uv);
   // Evaluate through the same direction -> cell lookup as radiance()/pdf(), so the returned
   // values are exactly what a BSDF-sampled ray in this direction would see.
-  s.radiance = radiance(s.direction);
-  s.pdf = pdf(s.direction);
-  return s;
+  return lookup(uvToDirection(uv));
 }
 
 }  // namespace lacrima

@@ -137,4 +137,10 @@ Color LightSampler::background(const Vec3& direction) const {
   return environment_ ? environment_->radiance(direction) : uniformBackground_;
 }
 
+LightSampler::Background LightSampler::backgroundWithPdf(const Vec3& direction) const {
+  if (!environment_) return {uniformBackground_, 0.0f};
+  const EnvironmentSample e = environment_->lookup(direction);
+  return {e.radiance, selectPdf_ * e.pdf};
+}
+
 }  // namespace lacrima

@@ -36,6 +36,12 @@ class LightSampler {
   Color emitted(int index, const Vec3& towardsViewer) const;
   // Background radiance for rays that escape.
   Color background(const Vec3& direction) const;
+  // background(direction) and pdfEnvironment(direction) in one lookup of the map.
+  struct Background {
+    Color radiance;
+    float pdf = 0.0f;
+  };
+  Background backgroundWithPdf(const Vec3& direction) const;
 
  private:
   LightSample sampleRectangle(const AreaLight& light, const Vec3& point, const Vec2& u) const;

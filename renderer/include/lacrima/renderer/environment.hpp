@@ -25,6 +25,9 @@ class EnvironmentMap {
 
   Color radiance(const Vec3& direction) const;
   float pdf(const Vec3& direction) const;  // solid-angle density of sample()
+  // radiance(direction) and pdf(direction) (bitwise), with one direction-to-cell lookup for both:
+  // its two arc tangents are most of either's cost.
+  EnvironmentSample lookup(const Vec3& direction) const;
   EnvironmentSample sample(const Vec2& u) const;
 
   int width() const { return width_; }
@@ -51,6 +54,9 @@ class EnvironmentMap {
     float fx = 0.0f, fy = 0.0f;
   };
   Cell cellAt(const Vec2& uv) const;
+  Color radianceIn(const Cell& cell) const;
+  float pdfIn(const Cell& cell, float sinTheta) const;
+  static float sinPolarAngle(const Vec3& direction);
   Color texel(int i, int j) const;
   float texelLuminance(int i, int j) const;
   void buildDistribution();
