@@ -87,6 +87,7 @@ std::optional<BsdfSample> RoughDielectricBsdf::sample(const Vec3& wo, float uLob
   if (uLobe < F) {
     s.wi = reflect(wo, wm);
     if (!sameHemisphere(wo, s.wi)) return std::nullopt;  // reflected through the macro surface
+    s.glossy = true;
     s.f = Color::Constant(reflectionF(wo, s.wi, wm, F));
     s.pdf = reflectionPdf(wo, wm, F);
   } else {

@@ -114,7 +114,8 @@ std::optional<BsdfSample> SkinBsdf::sample(const Vec3& wo, float uLobe, const Ve
   // Without the diffuse lobe (subsurface): always specular, uLobe / 1 picks the lobe.
   const float pSpec = hasDiffuseLobe_ ? specularProbability(wo) : 1.0f;
   Vec3 wi;
-  if (uLobe < pSpec) {
+  const bool glossy = uLobe < pSpec;
+  if (glossy) {
     // Specular: pick a lobe (the broad one with probability w, reusing uLobe rescaled to [0, 1)),
     // sample a visible normal and mirror wo about it (Heitz 2018).
     const bool broad = lobeMix_ > 0.0f && uLobe / pSpec < lobeMix_;
@@ -123,7 +124,7 @@ std::optional<BsdfSample> SkinBsdf::sample(const Vec3& wo, float uLobe, const Ve
   } else {
     wi = sampleCosineHemisphere(u);
   }
-  return mixtureReflectionSample(*this, wo, wi);
+  return mixtureReflectionSample(*this, wo, wi, glossy);
 }
 
 }  // namespace lacrima

@@ -133,16 +133,19 @@ std::optional<BsdfSample> WetSkinBsdf::sample(const Vec3& wo, float uLobe, const
   if (coverage_ == 0.0f) return skin_.sample(wo, uLobe, u);
   if (wo.z() <= 0.0f) return std::nullopt;
   Vec3 wi;
+  bool glossy;
   if (uLobe < coverage_) {
     const float uWet = uLobe / coverage_;  // rescaled to [0, 1)
-    wi = uWet < coatProbability(wo) ? reflect(wo, coat_.sampleVisibleNormal(wo, u)) : sampleCosineHemisphere(u);
+    glossy = uWet < coatProbability(wo);
+    wi = glossy ? reflect(wo, coat_.sampleVisibleNormal(wo, u)) : sampleCosineHemisphere(u);
   } else {
     const float uSkin = std::min((uLobe - coverage_) / (1.0f - coverage_), 0.99999994f);
     const auto s = skin_.sample(wo, uSkin, u);
     if (!s) return std::nullopt;
     wi = s->wi;
+    glossy = s->glossy;
   }
-  return mixtureReflectionSample(*this, wo, wi);
+  return mixtureReflectionSample(*this, wo, wi, glossy);
 }
 
 }  // namespace lacrima

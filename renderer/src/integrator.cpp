@@ -56,6 +56,23 @@ const Bsdf* withTextures(const Bsdf* bsdf, const SurfaceTextures& textures, cons
   return bsdf;
 }
 
+// The per-type bounce limits (RenderSettings::bounces): how many times a path has scattered of
+// each kind, and whether the scattering just sampled goes over its kind's limit.
+class BounceCounter {
+ public:
+  explicit BounceCounter(const BounceLimits& limits) : limits_(limits) {}
+  // Counts the scattering; true when it is one more than its kind allows.
+  bool countIsOverLimit(const BsdfSample& s) {
+    if (s.transmitted) return ++transmission_ > limits_.transmission;
+    if (s.glossy || s.specular) return ++glossy_ > limits_.glossy;
+    return ++diffuse_ > limits_.diffuse;
+  }
+
+ private:
+  const BounceLimits& limits_;
+  int diffuse_ = 0, glossy_ = 0, transmission_ = 0;
+};
+
 constexpr int kRussianRouletteDepth = 3;
 // A shadow ray gives up (counts as blocked) after this many dielectric crossings.
 constexpr int kMaxShadowCrossings = 16;
@@ -291,6 +308,9 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
   Vec3 previousPosition = cameraRay.origin;
   Ray ray = cameraRay;
   MediumStack media = cameraMedia_;  // the dielectric media the path is in (nested dielectrics only)
+  BounceCounter bounces(frame_.settings.bounces);
+  // A bounce limit was passed: this segment gathers the light it meets, then the path ends.
+  bool lastSegment = false;
 
   for (int depth = 0;; ++depth) {
     SurfaceHit hit;
@@ -299,9 +319,12 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
     if (trace == Trace::Miss) {
       // A uniform background is not light-sampled, so only the environment map can be counted twice.
       if (lights_.environmentIsSampled() && countedByTransparentShadows(chainAfterNonSpecular, crossings)) break;
-      const Color background = lights_.background(ray.direction);
-      const float weight = previousSpecular ? 1.0f : powerHeuristic(previousBsdfPdf, lights_.pdfEnvironment(ray.direction));
-      result += throughput * background * weight;
+      if (previousSpecular) {
+        result += throughput * lights_.background(ray.direction);
+      } else {
+        const LightSampler::Background background = lights_.backgroundWithPdf(ray.direction);
+        result += throughput * background.radiance * powerHeuristic(previousBsdfPdf, background.pdf);
+      }
       break;
     }
     if (hit.lightIndex >= 0) {
@@ -353,7 +376,7 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
     // Emissive opaque materials emit from both sides (an emitting box seen from inside).
     if ((material.emission > 0.0f).any() && (frontFacing || !v.bsdf->isTransmissive()))
       result += throughput * material.emission;
-    if (depth >= maxDepth_) break;
+    if (depth >= maxDepth_ || lastSegment) break;
 
     const uint32_t dimensions = sample_dimensions::bounceBase(depth);
     sampler.setDimension(dimensions + sample_dimensions::kLight);
@@ -383,6 +406,7 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
     const Vec3 wi = v.frame.toWorld(bs->wi).normalized();
     const bool geometricReflect = wi.dot(ng) * v.wo.dot(ng) > 0.0f;
     if (geometricReflect == bs->transmitted) break;  // the shading normal sent it through the surface
+    lastSegment = bounces.countIsOverLimit(*bs);
     throughput *= bs->f * (absCosTheta(bs->wi) / bs->pdf);
     if (bs->transmitted) {
       etaScale *= bs->eta * bs->eta;

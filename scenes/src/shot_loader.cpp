@@ -280,7 +280,7 @@ class ShotReader {
   bool readRender(const Json& v) {
     const size_t before = c_.errorCount();
     ObjectReader o(c_, v, "/render", {"width", "height", "spp", "maxDepth", "seed", "threads", "floatOutput",
-                                           "transparentShadows", "caustics", "sampler", "filter"});
+                                           "transparentShadows", "caustics", "sampler", "filter", "bounces"});
     RenderSettings& s = shot_.render;
     if (auto x = o.integer("width", Range::closed(1, 16384), true)) s.width = int(*x);
     if (auto x = o.integer("height", Range::closed(1, 16384), true)) s.height = int(*x);
@@ -293,7 +293,20 @@ class ShotReader {
     readCaustics(o, s);
     readSampler(o, s);
     readFilter(o, s);
+    readBounces(o, s);
     return c_.errorCount() == before;
+  }
+
+  // "bounces": {"diffuse": n, "glossy": n, "transmission": n}, each 0-1024; a kind left out has no
+  // limit (docs/shot-format.md, "Bounce limits").
+  void readBounces(ObjectReader& render, RenderSettings& s) {
+    const Json* v = render.find("bounces");
+    if (!v) return;
+    ObjectReader o(c_, *v, render.at("bounces"), {"diffuse", "glossy", "transmission"});
+    const auto range = Range::closed(0, BounceLimits::kUnlimited);
+    if (auto x = o.integer("diffuse", range)) s.bounces.diffuse = int(*x);
+    if (auto x = o.integer("glossy", range)) s.bounces.glossy = int(*x);
+    if (auto x = o.integer("transmission", range)) s.bounces.transmission = int(*x);
   }
 
   // "sampler": "sobol" | "independent" (docs/shot-format.md, "Sampling").

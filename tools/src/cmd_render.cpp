@@ -56,6 +56,10 @@ ExrMetadata metadataFor(const Shot& shot, const Frame& frame, const RenderStats&
   const PixelFilter& filter = frame.settings.filter;
   m.extra["lacrima:filter"] = fmt::format("{} {} px", filterTypeName(filter.type), filter.width);
   m.extra["lacrima:sampler"] = frame.settings.sampler == SamplerKind::Sobol ? "sobol" : "independent";
+  const BounceLimits& b = frame.settings.bounces;
+  m.extra["lacrima:bounces"] = fmt::format("diffuse {} glossy {} transmission {} (of maxDepth {}; {} = no limit)",
+                                           b.diffuse, b.glossy, b.transmission, frame.settings.maxDepth,
+                                           BounceLimits::kUnlimited);
   m.extra["lacrima:nonFiniteSamples"] = std::to_string(stats.nonFiniteSamples);
   return m;
 }

@@ -18,6 +18,9 @@ struct BsdfSample {
   float pdf = 0.0f;
   bool specular = false;    // sampled from a delta lobe (no MIS with lights)
   bool transmitted = false; // wi is on the other side of the surface from wo
+  // Reflected by a specular or glossy (microfacet) lobe rather than a diffuse one: a glossy
+  // bounce for the per-type bounce limits (RenderSettings::bounces).
+  bool glossy = false;
   float eta = 1.0f;         // relative IOR crossed (eta_wi_side / eta_wo_side) for transmission, else 1
 };
 
@@ -54,6 +57,7 @@ class Bsdf {
 inline BsdfSample specularReflectionSample(const Vec3& wo, float R) {
   BsdfSample s;
   s.specular = true;
+  s.glossy = true;
   s.wi = Vec3(-wo.x(), -wo.y(), wo.z());
   s.f = Color::Constant(R / std::abs(s.wi.z()));
   s.pdf = R;
@@ -62,11 +66,14 @@ inline BsdfSample specularReflectionSample(const Vec3& wo, float R) {
 
 // The sample of a one-sample mixture of reflection lobes: wi was drawn by one lobe, but the
 // value and density are the whole mixture's (eval, pdf), so that MIS sees the mixture. Nothing
-// when wi is below the horizon (lost to masking) or the mixture's density there is 0.
-inline std::optional<BsdfSample> mixtureReflectionSample(const Bsdf& bsdf, const Vec3& wo, const Vec3& wi) {
+// when wi is below the horizon (lost to masking) or the mixture's density there is 0. glossy:
+// the lobe that drew wi was a glossy one (BsdfSample::glossy).
+inline std::optional<BsdfSample> mixtureReflectionSample(const Bsdf& bsdf, const Vec3& wo, const Vec3& wi,
+                                                         bool glossy) {
   if (wi.z() <= 0.0f) return std::nullopt;
   BsdfSample s;
   s.wi = wi;
+  s.glossy = glossy;
   s.f = bsdf.eval(wo, wi);
   s.pdf = bsdf.pdf(wo, wi);
   if (s.pdf == 0.0f) return std::nullopt;

@@ -88,11 +88,26 @@ enum class Caustics {
   Mnee,      // manifold next-event estimation: the refracted connection, focused caustics
 };
 
+// Per-type bounce limits, as Cycles has them (its light-path settings "diffuse", "glossy" and
+// "transmission" bounces): a path may scatter `diffuse` times off diffuse lobes, `glossy` times
+// off specular or glossy reflection lobes and `transmission` times through a surface. The
+// scattering that goes over its kind's limit still sends its ray on to gather the light it meets
+// (lights, emission, the environment), then the path ends: a limit of 0 keeps direct lighting by
+// both MIS strategies. RenderSettings::maxDepth caps all kinds together. Default: no per-type limit.
+struct BounceLimits {
+  static constexpr int kUnlimited = 1024;  // the most a shot may ask for
+  int diffuse = kUnlimited;
+  int glossy = kUnlimited;
+  int transmission = kUnlimited;
+  bool operator==(const BounceLimits&) const = default;
+};
+
 struct RenderSettings {
   int width = 640;
   int height = 360;
   int samplesPerPixel = 16;
   int maxDepth = 12;       // path vertices after the camera ray
+  BounceLimits bounces;    // per kind of scattering, within maxDepth
   uint64_t seed = 0;
   SamplerKind sampler = SamplerKind::Sobol;  // how each pixel's samples are spread (sampler.hpp)
   int threads = 0;         // 0 = all cores
