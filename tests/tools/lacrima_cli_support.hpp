@@ -29,13 +29,16 @@ inline CommandResult lacrima(const std::vector<std::string>& args) { return runC
 // A shot of a water drop and a diffuse ball under a sphere light and a uniform sky (no textures,
 // no meshes: nothing to load, no warnings). Frames 1-frameCount; the frame number changes the
 // noise, so every frame's pixels differ.
-inline std::filesystem::path writeSphereShot(const std::filesystem::path& dir, int frameCount) {
+// renderExtra: more keys of "render", e.g. R"(, "sampler": "independent")".
+inline std::filesystem::path writeSphereShot(const std::filesystem::path& dir, int frameCount,
+                                             const std::string& renderExtra = "") {
   const std::filesystem::path path = dir / "spheres.json";
   std::ofstream(path) << "{\n"
                       << "  \"version\": 1,\n"
                       << "  \"frames\": {\"start\": 1, \"end\": " << frameCount << ", \"fps\": 24},\n"
                       << "  \"output\": \"out/spheres.####.exr\",\n"
-                      << "  \"render\": {\"width\": 32, \"height\": 18, \"spp\": 2, \"maxDepth\": 8, \"seed\": 5},\n"
+                      << "  \"render\": {\"width\": 32, \"height\": 18, \"spp\": 2, \"maxDepth\": 8, \"seed\": 5" << renderExtra
+                      << "},\n"
                       << "  \"camera\": {\"position\": [0, 0, 3], \"lookAt\": [0, 0, 0], \"fov\": 30},\n"
                       << "  \"background\": [0.3, 0.35, 0.4],\n"
                       << "  \"materials\": {\"water\": {\"type\": \"water\", \"ior\": 1.337},\n"

@@ -233,6 +233,38 @@ TEST(SequenceResume, FramesOfOtherSettingsAreRenderedAgain) {
   EXPECT_EQ(renderedFrames(all.output, "32x18"), (std::set<int>{1, 2, 3})) << all.output;
 }
 
+// The settings a shot file holds that change the pixels (sampler, pixel filter, bounce limits,
+// caustics): a frame rendered with others is rendered again.
+TEST(SequenceResume, FramesOfOtherShotRenderSettingsAreRenderedAgain) {
+  const fs::path dir = freshDir();
+  const std::string out = (dir / "spheres.####.exr").string();
+  const auto render = [&](const std::string& renderExtra) {
+    const fs::path shot = writeSphereShot(dir, 1, renderExtra);
+    return lacrima({"render", shot.string(), "--out", out, "--resume"});
+  };
+  ASSERT_EQ(render("").exitStatus, 0);
+  const std::string why = "frame 1: rendering again (--resume): " + (dir / frameName(1)).string() + " is not usable: ";
+  const struct {
+    std::string renderExtra, reason;
+  } changes[] = {
+      {R"(, "sampler": "independent")", "its lacrima:sampler is sobol, not independent"},
+      {R"(, "filter": {"type": "gaussian"})", "its lacrima:filter is blackman-harris 1.5 px, not gaussian 3 px"},
+      {R"(, "bounces": {"glossy": 2})",
+       "its lacrima:bounces is diffuse 1024 glossy 1024 transmission 1024, not diffuse 1024 glossy 2 transmission 1024"},
+      {R"(, "caustics": "straight")", "its lacrima:caustics is mnee, not straight"},
+  };
+  for (const auto& change : changes) {
+    SCOPED_TRACE(change.renderExtra);
+    ASSERT_EQ(render("").exitStatus, 0);  // back to the defaults (rendered again after the change before)
+    const auto changed = render(change.renderExtra);
+    ASSERT_EQ(changed.exitStatus, 0) << changed.output;
+    EXPECT_TRUE(contains(changed.output, why + change.reason + "\n")) << changed.output;
+  }
+  // The same settings again: nothing to render.
+  const auto same = render(changes[3].renderExtra);
+  EXPECT_TRUE(contains(same.output, "lacrima: 1 frames: 0 rendered, 1 skipped, 0 failed in ")) << same.output;
+}
+
 // ---- output patterns ---------------------------------------------------------------------------
 
 TEST(SequenceOutput, PrintfAndHashPatternsNameTheSameFiles) {

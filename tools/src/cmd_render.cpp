@@ -11,6 +11,7 @@
 #include <optional>
 
 #include "commands.hpp"
+#include "frame_check.hpp"
 #include "frame_range.hpp"
 #include "frame_selection.hpp"
 #include "interrupt.hpp"
@@ -52,14 +53,7 @@ ExrMetadata metadataFor(const Shot& shot, const Frame& frame, const RenderStats&
   m.renderSeconds = stats.seconds;
   m.worldToCamera = worldToCameraMatrix(frame.camera);
   m.worldToNDC = worldToNdcMatrix(frame.camera, frame.settings.width, frame.settings.height);
-  m.extra["lacrima:maxDepth"] = std::to_string(frame.settings.maxDepth);
-  const PixelFilter& filter = frame.settings.filter;
-  m.extra["lacrima:filter"] = fmt::format("{} {} px", filterTypeName(filter.type), filter.width);
-  m.extra["lacrima:sampler"] = frame.settings.sampler == SamplerKind::Sobol ? "sobol" : "independent";
-  const BounceLimits& b = frame.settings.bounces;
-  m.extra["lacrima:bounces"] = fmt::format("diffuse {} glossy {} transmission {} (of maxDepth {}; {} = no limit)",
-                                           b.diffuse, b.glossy, b.transmission, frame.settings.maxDepth,
-                                           BounceLimits::kUnlimited);
+  for (const auto& [name, value] : pixelSettingsMetadata(frame.settings)) m.extra[name] = value;
   m.extra["lacrima:nonFiniteSamples"] = std::to_string(stats.nonFiniteSamples);
   return m;
 }

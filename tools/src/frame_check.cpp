@@ -31,14 +31,35 @@ std::string checkMetadata(const OIIO::ImageSpec& spec, const RenderSettings& s) 
   if (spp != s.samplesPerPixel) return fmt::format("its lacrima:spp is {}, not {}", spp, s.samplesPerPixel);
   const std::string seed = spec.get_string_attribute("lacrima:seed", "(none)");
   if (seed != std::to_string(s.seed)) return fmt::format("its lacrima:seed is {}, not {}", seed, s.seed);
-  // Older frames may lack it; when present it must match too (it changes the pixels).
-  const std::string maxDepth = spec.get_string_attribute("lacrima:maxDepth", "");
-  if (!maxDepth.empty() && maxDepth != std::to_string(s.maxDepth))
-    return fmt::format("its lacrima:maxDepth is {}, not {}", maxDepth, s.maxDepth);
+  // Older frames may lack some; each one present must match too (it changes the pixels).
+  for (const auto& [name, value] : pixelSettingsMetadata(s)) {
+    const std::string onDisk = spec.get_string_attribute(name, "");
+    if (!onDisk.empty() && onDisk != value) return fmt::format("its {} is {}, not {}", name, onDisk, value);
+  }
   return "";
 }
 
+const char* causticsName(Caustics c) {
+  switch (c) {
+    case Caustics::Off: return "off";
+    case Caustics::Straight: return "straight";
+    case Caustics::Mnee: return "mnee";
+  }
+  return "?";
+}
+
 }  // namespace
+
+std::map<std::string, std::string> pixelSettingsMetadata(const RenderSettings& s) {
+  const BounceLimits& b = s.bounces;
+  return {
+      {"lacrima:maxDepth", std::to_string(s.maxDepth)},
+      {"lacrima:sampler", s.sampler == SamplerKind::Sobol ? "sobol" : "independent"},
+      {"lacrima:filter", fmt::format("{} {} px", filterTypeName(s.filter.type), s.filter.width)},
+      {"lacrima:bounces", fmt::format("diffuse {} glossy {} transmission {}", b.diffuse, b.glossy, b.transmission)},
+      {"lacrima:caustics", causticsName(s.causticsMode())},
+  };
+}
 
 std::string whyFrameMustBeRendered(const std::filesystem::path& exr, const RenderSettings& expected) {
   std::error_code ec;
