@@ -211,9 +211,14 @@ double TearLiquidSimulation::cellThickness(size_t cell) const {
   return cellWidth_[cell] > 0.0 ? cellVolume_[cell] / (cellWidth_[cell] * cellLength(cell)) : 0.0;
 }
 
+long TearLiquidSimulation::filmCellAt(double s) const {
+  if (!(s >= 0.0 && s <= pathLength_)) return -1;
+  return long(cellAt(s));
+}
+
 double TearLiquidSimulation::filmThicknessAt(double s) const {
-  if (!(s >= 0.0 && s <= pathLength_)) return 0.0;
-  return cellThickness(cellAt(s));
+  const long cell = filmCellAt(s);
+  return cell < 0 ? 0.0 : cellThickness(size_t(cell));
 }
 
 double TearLiquidSimulation::maxFilmThicknessBetween(double s0, double s1) const {
@@ -226,8 +231,8 @@ double TearLiquidSimulation::maxFilmThicknessBetween(double s0, double s1) const
 }
 
 double TearLiquidSimulation::filmWidthAt(double s) const {
-  if (!(s >= 0.0 && s <= pathLength_)) return 0.0;
-  return cellWidth_[cellAt(s)];
+  const long cell = filmCellAt(s);
+  return cell < 0 ? 0.0 : cellWidth_[size_t(cell)];
 }
 
 // Wetness met by the bead's front contact line (ignoring film the bead laid itself).

@@ -265,17 +265,22 @@ void applyDetails(const Shot& shot, int frameNumber, const ShutterTimes& shutter
   }
 }
 
-// Swells the lacrimal strip near each liquid tear's source with its meniscus (at shutter open and close).
-void swellMenisci(const Shot& shot, const ShutterTimes& shutter, PosedAssets& open, std::optional<PosedAssets>& close) {
+// Simulates each liquid tear over the shutter and swells the lacrimal strip near its source with its
+// meniscus (at shutter open and close).
+std::vector<shotfile::LiquidTearShutter> simulateLiquidTears(const Shot& shot, const ShutterTimes& shutter,
+                                                             PosedAssets& open, std::optional<PosedAssets>& close) {
+  std::vector<shotfile::LiquidTearShutter> runs;
   for (const ShotLiquidTear& tear : shot.liquidTears) {
+    runs.push_back(shotfile::simulateLiquidTearShutter(shot, tear, shutter.open, shutter.close, open[tear.asset]));
     if (tear.meniscusPrimitive < 0 || open[tear.asset].empty()) continue;
     if (close) {
       // A still asset is not posed again at close; its meniscus still fills, so it gets its own copy.
       if ((*close)[tear.asset].empty()) (*close)[tear.asset] = open[tear.asset];
-      shotfile::swellLiquidTearMeniscus(shot, tear, shutter.close, (*close)[tear.asset]);
+      shotfile::swellLiquidTearMeniscus(tear, runs.back().meniscusClose, (*close)[tear.asset]);
     }
-    shotfile::swellLiquidTearMeniscus(shot, tear, shutter.open, open[tear.asset]);
+    shotfile::swellLiquidTearMeniscus(tear, runs.back().meniscusOpen, open[tear.asset]);
   }
+  return runs;
 }
 
 // The renderer camera at a time: keyed look-at cameras are placed again, the rest as loaded.
@@ -327,6 +332,7 @@ Frame buildFrame(const Shot& shot, int frameNumber, FrameBuildTimes* times) {
   frame.materials = shot.frameMaterials();
   PosedAssets open;
   std::optional<PosedAssets> close;
+  std::vector<shotfile::LiquidTearShutter> liquidRuns;
   {
     const StageClock clock(&t.rigSeconds);
     open = poseAssets(shot, shutter.open, nullptr);
@@ -338,7 +344,7 @@ Frame buildFrame(const Shot& shot, int frameNumber, FrameBuildTimes* times) {
   }
   {
     const StageClock clock(&t.liquidSeconds);
-    swellMenisci(shot, shutter, open, close);
+    liquidRuns = simulateLiquidTears(shot, shutter, open, close);
   }
   const PosedAssets* closePtr = close ? &*close : nullptr;
   {
@@ -358,10 +364,11 @@ Frame buildFrame(const Shot& shot, int frameNumber, FrameBuildTimes* times) {
   }
   {
     const StageClock clock(&t.liquidSeconds);
-    for (const ShotLiquidTear& tear : shot.liquidTears)
-      shotfile::addLiquidTear(shot, tear, shutter.open, shutter.close, open[tear.asset],
-                              closePtr ? &(*closePtr)[tear.asset] : nullptr,
+    for (size_t i = 0; i < shot.liquidTears.size(); ++i) {
+      const ShotLiquidTear& tear = shot.liquidTears[i];
+      shotfile::addLiquidTear(tear, liquidRuns[i], open[tear.asset], closePtr ? &(*closePtr)[tear.asset] : nullptr,
                               assetMeshIndex(shot, open, tear.asset, tear.sourcePoint.primitive), frame);
+    }
   }
 
   const StageClock clock(&t.otherSeconds);

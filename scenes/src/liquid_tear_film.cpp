@@ -52,17 +52,30 @@ float edgeFalloff(float r, float halfWidth) {
   return 1.0f - x * x * (3.0f - 2.0f * x);
 }
 
+// The film's cells as this frame's simulation holds them, tabulated once: a frame asks for them
+// tens of millions of times, and each answer from the simulation costs three divisions.
+struct FilmCells {
+  explicit FilmCells(const TearLiquidSimulation& simulation) {
+    for (size_t c = 0; c < simulation.filmCellCount(); ++c) {
+      thickness.push_back(simulation.filmThicknessOfCell(c));
+      halfWidth.push_back(float(0.5 * simulation.filmWidthOfCell(c)));
+    }
+  }
+  std::vector<double> thickness;  // m
+  std::vector<float> halfWidth;   // m
+};
+
 // The film a piece lays on point p: thickness at p's closest point on the piece, times the falloff.
-float filmFromPiece(const WetPiece& piece, const TearLiquidSimulation& simulation, const Vec3& p) {
+float filmFromPiece(const WetPiece& piece, const FilmCells& cells, const TearLiquidSimulation& simulation,
+                    const Vec3& p) {
   const Vec3 d = piece.to - piece.from;
   const float length2 = d.squaredNorm();
   const float f = length2 > 0.0f ? std::clamp((p - piece.from).dot(d) / length2, 0.0f, 1.0f) : 0.0f;
   const float r = (p - (piece.from + f * d)).norm();
   if (r >= piece.reach) return 0.0f;
-  const double s = piece.s0 + double(f) * (piece.s1 - piece.s0);
-  const double thickness = simulation.filmThicknessAt(s);
-  if (thickness <= 0.0) return 0.0f;
-  return float(thickness) * edgeFalloff(r, float(0.5 * simulation.filmWidthAt(s)));
+  const long cell = simulation.filmCellAt(piece.s0 + double(f) * (piece.s1 - piece.s0));
+  if (cell < 0 || cells.thickness[size_t(cell)] <= 0.0) return 0.0f;
+  return float(cells.thickness[size_t(cell)]) * edgeFalloff(r, cells.halfWidth[size_t(cell)]);
 }
 
 // The wet pieces by the cells of a uniform grid over their boxes: each piece is listed in every
@@ -152,6 +165,7 @@ void addLiquidTearFilm(const ShotLiquidTear& tear, const FlowPath& course, const
   const WetPieceGrid grid(pieceBoxes, thickestFirst, box);
   // Each vertex's film depends on nothing but its position: the vertices are split between the
   // threads, and the result does not depend on how.
+  const FilmCells cells(simulation);
   std::vector<float> films(skin.positions.size(), 0.0f);
   tbb::parallel_for(tbb::blocked_range<size_t>(0, skin.positions.size(), 4096), [&](const tbb::blocked_range<size_t>& r) {
     for (size_t v = r.begin(); v != r.end(); ++v) {
@@ -160,7 +174,7 @@ void addLiquidTearFilm(const ShotLiquidTear& tear, const FlowPath& course, const
       float film = 0.0f;
       for (const uint32_t i : grid.piecesNear(p)) {
         if (pieces[i].peak <= film) break;
-        if (pieceBoxes[i].contains(p)) film = std::max(film, filmFromPiece(pieces[i], simulation, p));
+        if (pieceBoxes[i].contains(p)) film = std::max(film, filmFromPiece(pieces[i], cells, simulation, p));
       }
       films[v] = film;
     }

@@ -82,39 +82,53 @@ const T* findById(const std::vector<T>& items, int id, int T::*key) {
 
 }  // namespace
 
-void swellLiquidTearMeniscus(const Shot& shot, const ShotLiquidTear& tear, double frame,
-                             std::vector<TriangleMesh>& posed) {
-  if (tear.meniscusPrimitive < 0 || tear.input.path.empty() || posed.empty()) return;
-  TriangleMesh& strip = posed[size_t(tear.meniscusPrimitive)];
-  if (strip.vertexCount() != tear.meniscusWeights.size()) return;  // not the strip resolved at load
-  LiquidTearRun run(shot, tear);
-  run.advanceTo(frame);
-  swellMeniscus(strip, tear.meniscusWeights, run.simulation().meniscusVolume());
-}
-
-void addLiquidTear(const Shot& shot, const ShotLiquidTear& tear, double shutterOpen, double shutterClose,
-                   const std::vector<TriangleMesh>& openSkin, const std::vector<TriangleMesh>* closeSkin, int skinMesh,
-                   Frame& frame) {
-  if (tear.input.path.empty() || openSkin.empty()) return;  // not resolved (not from loadShot)
-  const bool blurred = shutterClose > shutterOpen;
-  // One run, advanced to shutter open and then to close: bitwise what two fresh ones give. Each
-  // state lies on its own course (the same one unless the shutter spans a change of course).
+LiquidTearShutter simulateLiquidTearShutter(const Shot& shot, const ShotLiquidTear& tear, double shutterOpen,
+                                            double shutterClose, const std::vector<TriangleMesh>& openSkin) {
+  LiquidTearShutter result;
+  if (tear.input.path.empty()) return result;  // not resolved (not from loadShot)
   LiquidTearRun run(shot, tear);
   run.advanceTo(shutterOpen);
-  const TearLiquidState open = run.state(shutterOpen);
-  const std::shared_ptr<const LiquidTearCourse> openCourse = run.coursePointer();
+  result.open = run.state(shutterOpen);
+  result.openCourse = run.coursePointer();
+  result.meniscusOpen = run.simulation().meniscusVolume();
   const size_t primitive = tear.sourcePoint.primitive;
-  // The wet trail, as at shutter open (it dries over seconds: no blur).
-  if (skinMesh >= 0)
-    addLiquidTearFilm(tear, openCourse->path, run.simulation(), openSkin[primitive],
-                      frame.meshes[size_t(skinMesh)].wetness);
-  TearLiquidState close = open;
-  std::shared_ptr<const LiquidTearCourse> closeCourse = openCourse;
-  if (blurred) {
-    run.advanceTo(shutterClose);
-    close = run.state(shutterClose);
-    closeCourse = run.coursePointer();
+  if (primitive < openSkin.size())
+    addLiquidTearFilm(tear, result.openCourse->path, run.simulation(), openSkin[primitive], result.film);
+  result.blurred = shutterClose > shutterOpen;
+  if (!result.blurred) {
+    result.close = result.open;
+    result.closeCourse = result.openCourse;
+    result.meniscusClose = result.meniscusOpen;
+    return result;
   }
+  run.advanceTo(shutterClose);
+  result.close = run.state(shutterClose);
+  result.closeCourse = run.coursePointer();
+  result.meniscusClose = run.simulation().meniscusVolume();
+  return result;
+}
+
+void swellLiquidTearMeniscus(const ShotLiquidTear& tear, double meniscusVolume, std::vector<TriangleMesh>& posed) {
+  if (tear.meniscusPrimitive < 0 || posed.empty()) return;
+  TriangleMesh& strip = posed[size_t(tear.meniscusPrimitive)];
+  if (strip.vertexCount() != tear.meniscusWeights.size()) return;  // not the strip resolved at load
+  swellMeniscus(strip, tear.meniscusWeights, meniscusVolume);
+}
+
+void addLiquidTear(const ShotLiquidTear& tear, const LiquidTearShutter& run, const std::vector<TriangleMesh>& openSkin,
+                   const std::vector<TriangleMesh>* closeSkin, int skinMesh, Frame& frame) {
+  if (!run.openCourse || openSkin.empty()) return;  // not resolved (not from loadShot)
+  if (skinMesh >= 0 && !run.film.empty()) {
+    std::vector<float>& wetness = frame.meshes[size_t(skinMesh)].wetness;
+    if (wetness.empty()) wetness.assign(run.film.size(), 0.0f);
+    for (size_t v = 0; v < wetness.size(); ++v) wetness[v] = std::max(wetness[v], run.film[v]);
+  }
+  const bool blurred = run.blurred;
+  const TearLiquidState& open = run.open;
+  const TearLiquidState& close = run.close;
+  const LiquidTearCourse* openCourse = run.openCourse.get();
+  const LiquidTearCourse* closeCourse = run.closeCourse.get();
+  const size_t primitive = tear.sourcePoint.primitive;
   const TriangleMesh& skinOpen = openSkin[primitive];
   const TriangleMesh& skinClose = closeSkin && !closeSkin->empty() ? (*closeSkin)[primitive] : skinOpen;
   for (const BeadView& bead : open.beads) {

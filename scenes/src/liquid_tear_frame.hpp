@@ -1,7 +1,9 @@
 #pragma once
 // The meshes and spheres of a shot's liquid tears in a frame (buildFrame's part; see ShotLiquidTear).
+#include <memory>
 #include <vector>
 
+#include "lacrima/scenes/liquid_tear.hpp"
 #include "lacrima/scenes/shot.hpp"
 
 namespace lacrima::shotfile {
@@ -12,22 +14,38 @@ inline constexpr float kLiquidBeadBaseOffset = 2e-5f;  // metres
 // sphere: its axes then differ by under 1.5% (about 20 um on a 1.5 mm drop, below a pixel).
 inline constexpr double kVisibleDropAmplitude = 0.01;
 
-// Adds the tear's beads ("liquid bead" meshes on the posed skin `open`, and on `close` at shutter
-// close when given) and its falling drops ("falling drop" spheroid meshes ringing in mode 2, their
-// shape and place at shutter close as positionsAtClose; spheres with centerAtClose once the
-// ringing is below kVisibleDropAmplitude) at the frame
-// whose shutter opens at frame `open` and closes at `close` (fractional frames; equal: no blur).
+// A liquid tear simulated over one frame's shutter: one run advanced to shutter open, then to close
+// (bitwise what runs from the start to each give: LiquidTearRun), and what the frame needs of it
+// at each moment.
+struct LiquidTearShutter {
+  bool blurred = false;  // the shutter closes after it opens; otherwise close is a copy of open
+  TearLiquidState open, close;
+  std::shared_ptr<const LiquidTearCourse> openCourse, closeCourse;  // the course each state lies on
+  double meniscusOpen = 0.0, meniscusClose = 0.0;                    // m^3
+  // The wet trail at shutter open (it dries over seconds: no blur) on openSkin[primitive], one value
+  // per vertex; empty when nothing is wet (liquid_tear_film.hpp).
+  std::vector<float> film;
+};
+
+// Simulates the tear to the frame whose shutter opens at frame `open` and closes at `close`
+// (fractional frames; equal: no blur). openSkin: the asset's primitives posed at open (the film is
+// laid on the tear's primitive).
+LiquidTearShutter simulateLiquidTearShutter(const Shot& shot, const ShotLiquidTear& tear, double shutterOpen,
+                                            double shutterClose, const std::vector<TriangleMesh>& openSkin);
+
+// Adds the tear's beads ("liquid bead" meshes on the posed skin `openSkin`, and on `closeSkin` at
+// shutter close when given) and its falling drops ("falling drop" spheroid meshes ringing in mode 2,
+// their shape and place at shutter close as positionsAtClose; spheres with centerAtClose once the
+// ringing is below kVisibleDropAmplitude), as `run` holds them.
 // openSkin / closeSkin: the asset's posed primitives (closeSkin null or empty: as at open).
 // skinMesh: the index in frame.meshes of the primitive the tear runs over (-1: not rendered); its
-// wetness gets the tear's wet trail at shutter open (liquid_tear_film.hpp).
-void addLiquidTear(const Shot& shot, const ShotLiquidTear& tear, double shutterOpen, double shutterClose,
-                   const std::vector<TriangleMesh>& openSkin, const std::vector<TriangleMesh>* closeSkin, int skinMesh,
-                   Frame& frame);
+// wetness gets the tear's film (the largest value of every tear is kept).
+void addLiquidTear(const ShotLiquidTear& tear, const LiquidTearShutter& run, const std::vector<TriangleMesh>& openSkin,
+                   const std::vector<TriangleMesh>* closeSkin, int skinMesh, Frame& frame);
 
 // Thickens the tear's lacrimal fluid strip (tear.meniscusPrimitive of `posed`, the asset's primitives
-// posed at `frame`) by the meniscus volume simulated at that (fractional) frame (swellMeniscus with
+// posed at the moment the volume was simulated) by the meniscus volume (swellMeniscus with
 // tear.meniscusWeights). Nothing happens without a strip, without posed primitives, or at volume 0.
-void swellLiquidTearMeniscus(const Shot& shot, const ShotLiquidTear& tear, double frame,
-                             std::vector<TriangleMesh>& posed);
+void swellLiquidTearMeniscus(const ShotLiquidTear& tear, double meniscusVolume, std::vector<TriangleMesh>& posed);
 
 }  // namespace lacrima::shotfile

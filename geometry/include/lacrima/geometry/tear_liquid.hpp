@@ -254,6 +254,13 @@ class TearLiquidSimulation {
   // Width (m) of the film at arc length s: the widest bead base that wetted its cell; 0 off the
   // path or where no film was laid.
   double filmWidthAt(double arcLength) const;
+  // The film cell at arc length s, or -1 off the path; with filmThicknessOfCell and
+  // filmWidthOfCell it answers filmThicknessAt and filmWidthAt with one index, for callers that ask
+  // millions of times a frame and tabulate the cells once.
+  long filmCellAt(double arcLength) const;
+  double filmThicknessOfCell(size_t cell) const { return cellThickness(cell); }
+  double filmWidthOfCell(size_t cell) const { return cellWidth_[cell]; }
+  size_t filmCellCount() const { return cellVolume_.size(); }
   // The state for rendering at time t, which must lie in the current step: advanceTo(t) first
   // (InputError otherwise). Beads are as of the last step; drops are placed at exactly t.
   TearLiquidState state(double t) const;
