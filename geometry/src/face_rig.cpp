@@ -10,6 +10,7 @@
 
 #include "lacrima/geometry/error.hpp"
 #include "lacrima/geometry/name_suggestion.hpp"
+#include "lacrima/geometry/region_refinement.hpp"
 
 namespace lacrima {
 
@@ -192,8 +193,8 @@ TriangleMesh FaceRig::evaluatePrimitive(size_t i, const FacePose& pose) const {
   moved |= skin(i, pose, mesh.positions);
   // Unmoved primitives keep the neutral normals bitwise; recomputing would only cost time.
   if (moved) {
-    if (primitive.weldMap.size() == mesh.vertexCount()) computeSmoothNormals(mesh, primitive.weldMap);
-    else computeSmoothNormals(mesh, findCoincidentVertices(primitive.mesh));
+    // Welded by the neutral mesh's map; a linearly refined primitive shaded as the surface it split.
+    computePrimitiveNormals(mesh, primitive);
   }
   return mesh;
 }

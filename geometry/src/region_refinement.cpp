@@ -345,6 +345,56 @@ TriangleMesh refineMesh(const TriangleMesh& mesh, std::vector<bool> selected, Re
   return out;
 }
 
+namespace {
+
+// Per vertex, the original vertices (with weights) whose normals its normal blends; empty: its own.
+using NormalSourceRows = std::vector<std::vector<std::pair<uint32_t, float>>>;
+
+NormalSourceRows rowsOf(const VertexStencils& stencils, size_t vertexCount) {
+  NormalSourceRows rows(vertexCount);
+  if (stencils.size() != vertexCount) return rows;  // none recorded (or from another mesh): own normals
+  for (size_t v = 0; v < vertexCount; ++v)
+    for (uint32_t k = stencils.offsets[v]; k < stencils.offsets[v + 1]; ++k)
+      rows[v].emplace_back(stencils.sources[k], stencils.weights[k]);
+  return rows;
+}
+
+VertexStencils stencilsOf(const NormalSourceRows& rows) {
+  VertexStencils stencils;
+  if (std::all_of(rows.begin(), rows.end(), [](const auto& row) { return row.empty(); })) return stencils;
+  for (const auto& row : rows) stencils.add(row);
+  return stencils;
+}
+
+// The rows of the refined vertices: each stencil source replaced by its own row (when it has one),
+// weights multiplied, duplicates summed. A vertex that is just one source with its own normal
+// (an original vertex) gets an empty row.
+NormalSourceRows composeNormalSources(const VertexStencils& stencils, const NormalSourceRows& previous) {
+  NormalSourceRows rows(stencils.size());
+  for (size_t v = 0; v < stencils.size(); ++v) {
+    std::vector<std::pair<uint32_t, float>>& row = rows[v];
+    auto addSource = [&row](uint32_t source, float weight) {
+      for (auto& [existing, w] : row)
+        if (existing == source) {
+          w += weight;
+          return;
+        }
+      row.emplace_back(source, weight);
+    };
+    for (uint32_t k = stencils.offsets[v]; k < stencils.offsets[v + 1]; ++k) {
+      const uint32_t source = stencils.sources[k];
+      const float weight = stencils.weights[k];
+      if (previous[source].empty()) addSource(source, weight);
+      else
+        for (const auto& [original, w] : previous[source]) addSource(original, weight * w);
+    }
+    if (row.size() == 1 && row.front().first == v) row.clear();  // an original vertex kept in place
+  }
+  return rows;
+}
+
+}  // namespace
+
 GltfPrimitive refinePrimitive(const GltfPrimitive& primitive, std::vector<bool> selected, RefinementScheme scheme,
                               int levels, std::vector<Vec3>* carried) {
   checkLevels(levels, "refinePrimitive");
@@ -355,9 +405,12 @@ GltfPrimitive refinePrimitive(const GltfPrimitive& primitive, std::vector<bool> 
   GltfPrimitive out = primitive;
   if (levels == 0 || std::none_of(selected.begin(), selected.end(), [](bool s) { return s; })) return out;
   TriangleMesh& mesh = out.mesh;
+  NormalSourceRows normalRows = rowsOf(out.normalSources, mesh.vertexCount());
+  if (scheme == RefinementScheme::Linear && out.normalTriangles.empty()) out.normalTriangles = mesh.indices;
   for (int level = 0; level < levels; ++level) {
     RegionRefinement r = refineRegionOnce(mesh, selected, scheme);
     const size_t oldCount = mesh.vertexCount();
+    if (scheme == RefinementScheme::Linear) normalRows = composeNormalSources(r.stencils, normalRows);
     mesh.positions = applyStencils(r.stencils, mesh.positions);
     if (!mesh.uvs.empty()) mesh.uvs = applyStencils(r.stencils, mesh.uvs);
     for (SparseDelta& target : out.targets) target = applyStencils(r.stencils, target, oldCount);
@@ -366,10 +419,43 @@ GltfPrimitive refinePrimitive(const GltfPrimitive& primitive, std::vector<bool> 
     mesh.indices = std::move(r.indices);
     selected = std::move(r.refined);
   }
+  if (scheme == RefinementScheme::Linear) {
+    out.normalSources = stencilsOf(normalRows);
+  } else {
+    out.normalTriangles.clear();
+    out.normalSources = VertexStencils();
+  }
   // As the loader does for every primitive: welded by position, smooth, area-weighted.
   out.weldMap = findCoincidentVertices(mesh);
-  computeSmoothNormals(mesh, out.weldMap);
+  computePrimitiveNormals(mesh, out);
   return out;
+}
+
+void computePrimitiveNormals(TriangleMesh& mesh, const GltfPrimitive& primitive) {
+  const bool welded = primitive.weldMap.size() == mesh.vertexCount();
+  const std::vector<uint32_t> weldMap = welded ? primitive.weldMap : findCoincidentVertices(primitive.mesh);
+  if (primitive.normalTriangles.empty()) {
+    computeSmoothNormals(mesh, weldMap);
+    return;
+  }
+  const VertexStencils& normalSources = primitive.normalSources;
+  if (normalSources.size() != mesh.vertexCount())
+    throw std::invalid_argument(fmt::format("computePrimitiveNormals: primitive '{}': {} normal rows for {} vertices",
+                                            primitive.name, normalSources.size(), mesh.vertexCount()));
+  // The original vertices as the unrefined mesh shades them (added vertices lie on no triangle
+  // of it and get a placeholder, replaced below).
+  std::vector<uint32_t> refinedTriangles = std::move(mesh.indices);
+  mesh.indices = primitive.normalTriangles;
+  computeSmoothNormals(mesh, weldMap);
+  mesh.indices = std::move(refinedTriangles);
+  for (size_t v = 0; v < mesh.vertexCount(); ++v) {
+    const uint32_t begin = normalSources.offsets[v], end = normalSources.offsets[v + 1];
+    if (begin == end) continue;
+    Vec3 blend = Vec3::Zero();
+    for (uint32_t k = begin; k < end; ++k) blend += normalSources.weights[k] * mesh.normals[normalSources.sources[k]];
+    // Opposite normals cancel only across a fold; there any of them will do.
+    mesh.normals[v] = blend.squaredNorm() > 1e-12f ? blend.normalized() : mesh.normals[normalSources.sources[begin]];
+  }
 }
 
 }  // namespace lacrima

@@ -8,6 +8,7 @@
 #include <numeric>
 #include <span>
 
+#include "lacrima/geometry/gradient_noise.hpp"
 #include "lacrima/geometry/surface_point.hpp"
 
 namespace lacrima::shotfile {
@@ -38,7 +39,7 @@ std::vector<WetPiece> wetPieces(const ShotLiquidTear& tear, const FlowPath& path
     if (widest <= 0.0) continue;
     piece.from = surfacePosition(skin, path.points[i]);
     piece.to = surfacePosition(skin, SurfacePoint{path.points[i].triangle, path.arrival[i + 1]});
-    piece.reach = float(0.5 * widest) * (1.0f + kFilmEdgeFraction);
+    piece.reach = float(0.5 * widest) * (1.0f + kFilmEdgeFraction) * (1.0f + kFilmEdgeWander);
     piece.peak = float(simulation.maxFilmThicknessBetween(piece.s0, piece.s1));
     pieces.push_back(piece);
   }
@@ -65,9 +66,10 @@ struct FilmCells {
   std::vector<float> halfWidth;   // m
 };
 
-// The film a piece lays on point p: thickness at p's closest point on the piece, times the falloff.
+// The film a piece lays on point p: thickness at p's closest point on the piece, times the falloff
+// at the half width there scaled by p's edge factor (1 + kFilmEdgeWander v).
 float filmFromPiece(const WetPiece& piece, const FilmCells& cells, const TearLiquidSimulation& simulation,
-                    const Vec3& p) {
+                    const Vec3& p, float edgeFactor) {
   const Vec3 d = piece.to - piece.from;
   const float length2 = d.squaredNorm();
   const float f = length2 > 0.0f ? std::clamp((p - piece.from).dot(d) / length2, 0.0f, 1.0f) : 0.0f;
@@ -75,7 +77,7 @@ float filmFromPiece(const WetPiece& piece, const FilmCells& cells, const TearLiq
   if (r >= piece.reach) return 0.0f;
   const long cell = simulation.filmCellAt(piece.s0 + double(f) * (piece.s1 - piece.s0));
   if (cell < 0 || cells.thickness[size_t(cell)] <= 0.0) return 0.0f;
-  return float(cells.thickness[size_t(cell)]) * edgeFalloff(r, cells.halfWidth[size_t(cell)]);
+  return float(cells.thickness[size_t(cell)]) * edgeFalloff(r, edgeFactor * cells.halfWidth[size_t(cell)]);
 }
 
 // The wet pieces by the cells of a uniform grid over their boxes: each piece is listed in every
@@ -142,6 +144,17 @@ class WetPieceGrid {
 
 }  // namespace
 
+std::vector<float> filmEdgeVariation(const TriangleMesh& skinAtFirstFrame) {
+  std::vector<float> variation(skinAtFirstFrame.positions.size());
+  // A fixed seed: the pattern is a property of the skin, the same in every shot.
+  constexpr uint64_t kSeed = 0x7ea5f11e;
+  for (size_t v = 0; v < variation.size(); ++v)
+    variation[v] = std::clamp(
+        kFilmEdgeContrast * fractalGradientNoise(skinAtFirstFrame.positions[v] / kFilmEdgeFeatureSize, kFilmEdgeOctaves, kSeed),
+        -1.0f, 1.0f);
+  return variation;
+}
+
 void addLiquidTearFilm(const ShotLiquidTear& tear, const FlowPath& course, const TearLiquidSimulation& simulation,
                        const TriangleMesh& skin, std::vector<float>& wetness) {
   const std::vector<WetPiece> pieces = wetPieces(tear, course, simulation, skin);
@@ -166,15 +179,17 @@ void addLiquidTearFilm(const ShotLiquidTear& tear, const FlowPath& course, const
   // Each vertex's film depends on nothing but its position: the vertices are split between the
   // threads, and the result does not depend on how.
   const FilmCells cells(simulation);
+  const bool hasVariation = tear.filmEdgeVariation.size() == skin.positions.size();
   std::vector<float> films(skin.positions.size(), 0.0f);
   tbb::parallel_for(tbb::blocked_range<size_t>(0, skin.positions.size(), 4096), [&](const tbb::blocked_range<size_t>& r) {
     for (size_t v = r.begin(); v != r.end(); ++v) {
       const Vec3& p = skin.positions[v];
       if (!box.contains(p)) continue;
+      const float edgeFactor = hasVariation ? 1.0f + kFilmEdgeWander * tear.filmEdgeVariation[v] : 1.0f;
       float film = 0.0f;
       for (const uint32_t i : grid.piecesNear(p)) {
         if (pieces[i].peak <= film) break;
-        if (pieceBoxes[i].contains(p)) film = std::max(film, filmFromPiece(pieces[i], cells, simulation, p));
+        if (pieceBoxes[i].contains(p)) film = std::max(film, filmFromPiece(pieces[i], cells, simulation, p, edgeFactor));
       }
       films[v] = film;
     }

@@ -10,6 +10,7 @@
 #include "json_source.hpp"  // childPointer
 #include "lacrima/geometry/error.hpp"
 #include "lacrima/geometry/meniscus_swelling.hpp"
+#include "liquid_tear_film.hpp"
 #include "lacrima/geometry/surface_point.hpp"
 #include "surface_anchor.hpp"
 
@@ -151,6 +152,7 @@ void resolveTear(const Shot& shot, ShotLiquidTear& tear, std::vector<LiquidTearP
   const TriangleMesh skin = posedPrimitive(asset, pose, tear.sourcePoint.primitive);
   const SurfacePoint sourceOnSkin{tear.sourcePoint.triangle, tear.sourcePoint.barycentric};
   resolveMeniscus(asset, pose, surfacePosition(skin, sourceOnSkin), tear);
+  tear.filmEdgeVariation = filmEdgeVariation(skin);
   const size_t primitive = tear.sourcePoint.primitive;
   const std::vector<Vec3>* carried =
       primitive < tear.smoothedSkins.size() && tear.smoothedSkins[primitive] ? tear.smoothedSkins[primitive].get() : nullptr;

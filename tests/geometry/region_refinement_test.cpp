@@ -301,6 +301,94 @@ TEST(RegionRefinementPrimitive, LinearInterpolatesMorphTargetsAndKeepsOriginalVe
   for (const Vec3& n : r.mesh.normals) EXPECT_EQ(n, Vec3(Vec3::UnitZ()));
 }
 
+// A primitive made of a coarse icosphere (level 1, on the unit sphere), its smooth normals as the
+// loader computes them.
+GltfPrimitive spherePrimitive() {
+  GltfPrimitive p;
+  p.name = "sphere/skin";
+  p.mesh = icosphere(1);
+  p.weldMap = findCoincidentVertices(p.mesh);
+  computeSmoothNormals(p.mesh, p.weldMap);
+  return p;
+}
+
+// Largest angle (radians) between a vertex normal of `m` and the sphere's true normal there, over
+// the vertices from `first` on.
+float worstSphereNormalError(const TriangleMesh& m, size_t first) {
+  float worst = 0.0f;
+  for (size_t v = first; v < m.vertexCount(); ++v)
+    worst = std::max(worst, std::acos(std::clamp(m.normals[v].dot(m.positions[v].normalized()), -1.0f, 1.0f)));
+  return worst;
+}
+
+TEST(RegionRefinementPrimitive, ALinearSplitShadesAsTheSurfaceItSplitNotAsFacets) {
+  const GltfPrimitive coarse = spherePrimitive();
+  const std::vector<bool> patch = trianglesNear(coarse.mesh, coarse.mesh.positions[0], 0.7f);
+  const GltfPrimitive once = refinePrimitive(coarse, patch, RefinementScheme::Linear, 2);
+  const size_t original = coarse.mesh.vertexCount();
+  ASSERT_EQ(once.normalTriangles, coarse.mesh.indices);
+  ASSERT_EQ(once.normalSources.size(), once.mesh.vertexCount());
+  // Original vertices keep the unrefined mesh's normals, also on the patch's border where small
+  // split triangles meet large ones; every added vertex blends original vertices' normals
+  // (composed over the two levels) with its own interpolation weights.
+  for (size_t v = 0; v < once.mesh.vertexCount(); ++v) {
+    const uint32_t begin = once.normalSources.offsets[v], end = once.normalSources.offsets[v + 1];
+    if (v < original) {
+      EXPECT_EQ(begin, end) << v;
+      EXPECT_LT((once.mesh.normals[v] - coarse.mesh.normals[v]).norm(), 1e-6f) << v;
+      continue;
+    }
+    ASSERT_GT(end, begin) << v;
+    float weights = 0.0f;
+    Vec3 blend = Vec3::Zero(), position = Vec3::Zero();
+    for (uint32_t k = begin; k < end; ++k) {
+      ASSERT_LT(once.normalSources.sources[k], original);
+      weights += once.normalSources.weights[k];
+      blend += once.normalSources.weights[k] * coarse.mesh.normals[once.normalSources.sources[k]];
+      position += once.normalSources.weights[k] * coarse.mesh.positions[once.normalSources.sources[k]];
+    }
+    EXPECT_NEAR(weights, 1.0f, 1e-6f);
+    EXPECT_LT((position - once.mesh.positions[v]).norm(), 1e-6f) << "the row is the vertex's interpolation";
+    EXPECT_LT((once.mesh.normals[v] - blend.normalized()).norm(), 1e-5f) << v;
+  }
+  // Against the true sphere: normals computed from the split triangles are facets, off by up to
+  // half a coarse triangle's angle.
+  TriangleMesh faceted = once.mesh;
+  computeSmoothNormals(faceted, once.weldMap);
+  EXPECT_LT(worstSphereNormalError(once.mesh, original), 0.5f * worstSphereNormalError(faceted, original));
+  // A second linear refinement over the first composes: its rows still name original vertices.
+  const GltfPrimitive twice = refinePrimitive(once, trianglesNear(once.mesh, once.mesh.positions[0], 0.3f),
+                                              RefinementScheme::Linear, 1);
+  ASSERT_EQ(twice.normalTriangles, coarse.mesh.indices);
+  ASSERT_EQ(twice.normalSources.size(), twice.mesh.vertexCount());
+  for (uint32_t source : twice.normalSources.sources) EXPECT_LT(source, original);
+  EXPECT_LT(worstSphereNormalError(twice.mesh, original), 0.5f * worstSphereNormalError(faceted, original));
+  // Loop refinement's surface is smooth: its normals are its own.
+  const GltfPrimitive loopOnly = refinePrimitive(coarse, patch, RefinementScheme::Loop, 1);
+  EXPECT_TRUE(loopOnly.normalTriangles.empty());
+  EXPECT_EQ(loopOnly.normalSources.size(), 0u);
+}
+
+TEST(RegionRefinementPrimitive, ARefinedPrimitiveShadedAfterItMovesKeepsBlendingItsOriginalNormals) {
+  GltfPrimitive refined = refinePrimitive(spherePrimitive(), std::vector<bool>(80, true), RefinementScheme::Linear, 1);
+  // Squash the sphere as a pose would (a linear map keeps added vertices on the original triangles).
+  TriangleMesh posed = refined.mesh;
+  for (Vec3& p : posed.positions) p.z() *= 0.5f;
+  computePrimitiveNormals(posed, refined);
+  TriangleMesh coarsePosed = posed;
+  coarsePosed.indices = refined.normalTriangles;
+  computeSmoothNormals(coarsePosed, refined.weldMap);
+  for (size_t v = 0; v < 42; ++v) EXPECT_LT((posed.normals[v] - coarsePosed.normals[v]).norm(), 1e-6f) << v;
+  for (size_t v = 42; v < posed.vertexCount(); ++v) {
+    Vec3 blend = Vec3::Zero();
+    for (uint32_t k = refined.normalSources.offsets[v]; k < refined.normalSources.offsets[v + 1]; ++k)
+      blend += refined.normalSources.weights[k] * coarsePosed.normals[refined.normalSources.sources[k]];
+    EXPECT_LT((posed.normals[v] - blend.normalized()).norm(), 1e-5f) << v;
+  }
+  refined.normalSources = VertexStencils();  // rows missing for the vertices
+  EXPECT_THROW(computePrimitiveNormals(posed, refined), std::invalid_argument);
+}
+
 TEST(RegionRefinementPrimitive, SkinInfluencesStayFourNormalisedAndLargestFirst) {
   const GltfPrimitive p = gridPrimitive();
   const std::vector<bool> patch = trianglesNear(p.mesh, Vec3(0.5f, 0.5f, 0.0f), 0.3f);

@@ -1,9 +1,10 @@
 // The wet trail of liquid tears on the skin mesh (MeshInstance::wetness, liquid_tear_film.hpp):
 // dry before the first bead, film along the path behind a sliding bead and none far from it,
-// drying after the bead has passed, and frames independent of their order.
+// drying after the bead has passed, edges that wander, and frames independent of their order.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "lacrima/geometry/surface_point.hpp"
@@ -123,6 +124,63 @@ TEST(LiquidTearFilm, TrailDriesAfterTheBeadHasPassed) {
   }
   // Drying is exp(-t / 2 s): after up to 1.25 s clearly thinner, not gone.
   EXPECT_LT(previous, 0.8f * first.wetness[v]);
+}
+
+// Per 1 mm of arc length along the trail, the distance from the path of its farthest wet vertex:
+// where the trail's edge lies there.
+std::vector<float> edgeDistances(const Shot& shot, const Frame& frame, double from, double to) {
+  const MeshInstance& skin = skinOf(frame, shot);
+  const ShotLiquidTear& tear = shot.liquidTears[0];
+  std::vector<Vec3> path;
+  std::vector<double> arc;
+  for (double s = 0.0; s <= tear.path.length(); s += 2.5e-4) {
+    path.push_back(surfacePosition(skin.mesh, liquidTearPathPoint(tear, s)));
+    arc.push_back(s);
+  }
+  std::vector<float> edge(size_t((to - from) / 1e-3), 0.0f);
+  for (size_t v = 0; v < skin.wetness.size(); ++v) {
+    if (!(skin.wetness[v] > 0.0f)) continue;
+    size_t nearest = 0;
+    float distance = std::numeric_limits<float>::infinity();
+    for (size_t i = 0; i < path.size(); ++i) {
+      const float d = (skin.mesh.positions[v] - path[i]).norm();
+      if (d < distance) distance = d, nearest = i;
+    }
+    if (arc[nearest] < from || arc[nearest] >= to) continue;
+    float& bin = edge[std::min(edge.size() - 1, size_t((arc[nearest] - from) / 1e-3))];
+    bin = std::max(bin, distance);
+  }
+  return edge;
+}
+
+double relativeSpread(const std::vector<float>& values) {
+  double sum = 0.0, sum2 = 0.0;
+  for (float v : values) sum += v, sum2 += double(v) * v;
+  const double mean = sum / double(values.size());
+  return std::sqrt(std::max(0.0, sum2 / double(values.size()) - mean * mean)) / mean;
+}
+
+TEST(LiquidTearFilm, TheTrailsEdgeWandersAndReachesNoFurtherThanBefore) {
+  Shot shot = loadFilmShot("film_edge.json");
+  const ShotLiquidTear& tear = shot.liquidTears[0];
+  const MeshInstance& firstSkin = skinOf(buildFrame(shot, shot.frameStart), shot);
+  ASSERT_EQ(tear.filmEdgeVariation.size(), firstSkin.mesh.vertexCount());  // one value per vertex, fixed
+  for (float v : tear.filmEdgeVariation) ASSERT_TRUE(v >= -1.0f && v <= 1.0f);
+  const int f = frameAfterTheBeadRan(shot);
+  const double bead = beadArcLength(shot, f);
+  const std::vector<float> wandering = edgeDistances(shot, buildFrame(shot, f), 0.004, bead - 0.004);
+  shot.liquidTears[0].filmEdgeVariation.clear();  // the straight-edged trail, for comparison
+  const std::vector<float> straight = edgeDistances(shot, buildFrame(shot, f), 0.004, bead - 0.004);
+  ASSERT_GE(wandering.size(), 8u);
+  const double spreadWandering = relativeSpread(wandering), spreadStraight = relativeSpread(straight);
+  std::printf("[ film ] edge distance from the path over %zu mm: spread %.3f wandering, %.3f straight\n",
+              wandering.size(), spreadWandering, spreadStraight);
+  EXPECT_GT(spreadWandering, 1.3 * spreadStraight);
+  EXPECT_GT(spreadWandering, 0.05);
+  // The wandering edge stays within the straight trail's reach (1.5 half widths, where the trail's
+  // skin refinement ends), up to a vertex spacing.
+  const float straightReach = *std::max_element(straight.begin(), straight.end());
+  EXPECT_LE(*std::max_element(wandering.begin(), wandering.end()), straightReach * (1.5f / 1.1f) + 3e-4f);
 }
 
 TEST(LiquidTearFilm, AFrameAloneEqualsTheSameFrameInASequence) {

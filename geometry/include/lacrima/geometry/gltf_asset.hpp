@@ -55,6 +55,13 @@ struct GltfPrimitive {
   std::vector<Vec4> skinWeights;
   // findCoincidentVertices of the neutral mesh: keeps UV seams welded when morphs recompute normals.
   std::vector<uint32_t> weldMap;
+  // Set by a linear refinement (refinePrimitive), empty otherwise: the mesh is shaded as the mesh
+  // before that refinement was (computePrimitiveNormals): normalTriangles are its triangles (over
+  // the original vertices, which keep their indices), and normalSources gives per vertex the
+  // original vertices whose normals an added vertex's normal blends (an empty row: an original
+  // vertex, normal from normalTriangles).
+  std::vector<uint32_t> normalTriangles;
+  VertexStencils normalSources;
 };
 
 // A facial landmark: a vertex of one primitive (nodes[0].extras.landmarks68 in the ICT face).

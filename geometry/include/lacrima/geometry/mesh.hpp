@@ -2,6 +2,7 @@
 // Triangle meshes stored as a structure of arrays (one std::vector per attribute).
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "lacrima/geometry/math.hpp"
@@ -17,6 +18,17 @@ struct TriangleMesh {
 
   size_t vertexCount() const { return positions.size(); }
   size_t triangleCount() const { return indices.size() / 3; }
+};
+
+// One sparse row per vertex of a mesh derived from another (a refinement): vertex v =
+// sum_k weights[k] * old[sources[k]], k in [offsets[v], offsets[v + 1]). Weights of a row sum to 1.
+struct VertexStencils {
+  std::vector<uint32_t> offsets{0};
+  std::vector<uint32_t> sources;
+  std::vector<float> weights;
+
+  size_t size() const { return offsets.size() - 1; }
+  void add(const std::vector<std::pair<uint32_t, float>>& row);
 };
 
 // Applies an affine transform to positions and (inverse-transpose) normals, in place.

@@ -22,17 +22,6 @@ enum class RefinementScheme {
   Loop,    // Loop (1987) masks inside the region; linear on its border and on mesh boundaries
 };
 
-// One sparse row per vertex of a refined mesh: vertex v = sum_k weights[k] * old[sources[k]],
-// k in [offsets[v], offsets[v + 1]). Weights of a row sum to 1.
-struct VertexStencils {
-  std::vector<uint32_t> offsets{0};
-  std::vector<uint32_t> sources;
-  std::vector<float> weights;
-
-  size_t size() const { return offsets.size() - 1; }
-  void add(const std::vector<std::pair<uint32_t, float>>& row);
-};
-
 // One level of refinement of a mesh.
 struct RegionRefinement {
   std::vector<uint32_t> indices;  // the refined triangles (same winding as their parents)
@@ -73,10 +62,24 @@ void applyStencils(const VertexStencils& stencils, std::vector<std::array<uint16
 TriangleMesh refineMesh(const TriangleMesh& mesh, std::vector<bool> selected, RefinementScheme scheme, int levels);
 
 // A glTF primitive refined as refineMesh does, with its morph targets and skin influences, and
-// its normals and weldMap recomputed as the loader computes them. `carried`, when given, holds
-// one more per-vertex attribute (e.g. a smoothed copy of the positions) refined with the same
-// stencils (it must have one value per vertex: std::invalid_argument otherwise).
+// its weldMap recomputed as the loader computes it. `carried`, when given, holds one more
+// per-vertex attribute (e.g. a smoothed copy of the positions) refined with the same stencils (it
+// must have one value per vertex: std::invalid_argument otherwise). Normals: a Loop refinement's
+// are recomputed smooth from its triangles (its surface is smooth) and it clears normalTriangles
+// and normalSources; a linear refinement keeps shading the surface it split, not its flat facets:
+// it records the triangles from before its first linear refinement (normalTriangles) and, per
+// added vertex, the original vertices it interpolates (normalSources, composed over levels and
+// over earlier linear refinements), and its normals are computePrimitiveNormals'.
 GltfPrimitive refinePrimitive(const GltfPrimitive& primitive, std::vector<bool> selected, RefinementScheme scheme,
                               int levels, std::vector<Vec3>* carried = nullptr);
+
+// Smooth normals of a primitive's (posed) mesh, welded by its weldMap. Without normalTriangles,
+// computeSmoothNormals of the mesh's own triangles. With them (a linear refinement), the mesh is
+// shaded as the unrefined mesh would be: original vertices get the smooth normals of
+// normalTriangles, added vertices the normalised blend of their normalSources' normals (Phong's
+// interpolation). Normals computed from the split triangles instead would shade the split flat:
+// a band of facets where the smooth mesh had none, and biased normals on its border where small
+// split triangles meet large unsplit ones (the pale band along a liquid tear's path).
+void computePrimitiveNormals(TriangleMesh& mesh, const GltfPrimitive& primitive);
 
 }  // namespace lacrima

@@ -278,6 +278,9 @@ struct ShotLiquidTear {
   // falloff weight of each of its vertices (from the source, on the first frame's pose).
   int meniscusPrimitive = -1;
   std::vector<float> meniscusWeights;
+  // Per vertex of the source's primitive: where the wet trail's edge lies beyond or short of the
+  // film's half width (filmEdgeVariation in scenes/src/liquid_tear_film.hpp); set by loadShot.
+  std::vector<float> filmEdgeVariation;
   // The flow path's courses as the face moves, one per integer frame from the simulation's start
   // (liquid_tear.hpp); set by loadShot. `path` and `input.path` are its course at frameStart.
   std::shared_ptr<const LiquidTearCourses> courses;
