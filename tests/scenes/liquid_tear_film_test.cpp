@@ -163,7 +163,8 @@ double relativeSpread(const std::vector<float>& values) {
 TEST(LiquidTearFilm, TheTrailsEdgeWandersAndReachesNoFurtherThanBefore) {
   Shot shot = loadFilmShot("film_edge.json");
   const ShotLiquidTear& tear = shot.liquidTears[0];
-  const MeshInstance& firstSkin = skinOf(buildFrame(shot, shot.frameStart), shot);
+  const Frame firstFrame = buildFrame(shot, shot.frameStart);
+  const MeshInstance& firstSkin = skinOf(firstFrame, shot);
   ASSERT_EQ(tear.filmEdgeVariation.size(), firstSkin.mesh.vertexCount());  // one value per vertex, fixed
   for (float v : tear.filmEdgeVariation) ASSERT_TRUE(v >= -1.0f && v <= 1.0f);
   const int f = frameAfterTheBeadRan(shot);
