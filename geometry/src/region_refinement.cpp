@@ -432,8 +432,10 @@ GltfPrimitive refinePrimitive(const GltfPrimitive& primitive, std::vector<bool> 
 }
 
 void computePrimitiveNormals(TriangleMesh& mesh, const GltfPrimitive& primitive) {
-  const bool welded = primitive.weldMap.size() == mesh.vertexCount();
-  const std::vector<uint32_t> weldMap = welded ? primitive.weldMap : findCoincidentVertices(primitive.mesh);
+  // The primitive's own map, not a copy (the rig calls this every frame); built only when missing.
+  std::vector<uint32_t> builtWeldMap;
+  if (primitive.weldMap.size() != mesh.vertexCount()) builtWeldMap = findCoincidentVertices(primitive.mesh);
+  const std::vector<uint32_t>& weldMap = builtWeldMap.empty() ? primitive.weldMap : builtWeldMap;
   if (primitive.normalTriangles.empty()) {
     computeSmoothNormals(mesh, weldMap);
     return;
