@@ -5,7 +5,8 @@
 // write the same path at once: they would share the temporary name.)
 //
 // EXR layout (single part, zip): R,G,B,A (half, or float with floatBeauty), albedo.R/G/B,
-// N.X/Y/Z, Z (float). Metadata: lacrima:version, lacrima:shot, lacrima:frame (int),
+// N.X/Y/Z, Z (float), and under adaptive sampling "samples" (float: the pixel's camera samples).
+// Metadata: lacrima:version, lacrima:shot, lacrima:frame (int),
 // lacrima:seed (string: EXR has no 64-bit integer attribute and OIIO drops one),
 // lacrima:spp (int), lacrima:renderSeconds (float), lacrima:colorSpace ("ACEScg") with the
 // standard "chromaticities" of ACEScg (AP1, D60 white), and the standard worldToCamera and
@@ -121,14 +122,14 @@ void checkFilm(const Film& film, const char* function) {
     return plane.empty() || plane.size() == n * channels;
   };
   if (film.width < 1 || film.height < 1 || film.rgba.size() != n * 4 || !planeOk(film.albedo, 3) ||
-      !planeOk(film.normal, 3) || !planeOk(film.depth, 1)) {
+      !planeOk(film.normal, 3) || !planeOk(film.depth, 1) || !planeOk(film.sampleCount, 1)) {
     throw std::invalid_argument(fmt::format("{}: inconsistent {}x{} film (rgba {}, albedo {}, normal {}, depth {})",
                                             function, film.width, film.height, film.rgba.size(),
                                             film.albedo.size(), film.normal.size(), film.depth.size()));
   }
 }
 
-constexpr int kExrChannels = 11;
+constexpr int kExrChannels = 11;  // without the sample count
 
 }  // namespace
 
@@ -137,10 +138,13 @@ void writeExr(const fs::path& path, const Film& film, const ExrMetadata& metadat
   const int w = film.width, h = film.height;
   const std::size_t n = std::size_t(w) * h;
 
-  OIIO::ImageSpec spec(w, h, kExrChannels, OIIO::TypeDesc::FLOAT);
+  const bool withSamples = !film.sampleCount.empty();
+  const int channels = kExrChannels + (withSamples ? 1 : 0);
+  OIIO::ImageSpec spec(w, h, channels, OIIO::TypeDesc::FLOAT);
   spec.channelnames = {"R", "G", "B", "A", "albedo.R", "albedo.G", "albedo.B", "N.X", "N.Y", "N.Z", "Z"};
+  if (withSamples) spec.channelnames.push_back("samples");
   const OIIO::TypeDesc beauty = floatBeauty ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::HALF;
-  spec.channelformats.assign(kExrChannels, OIIO::TypeDesc::FLOAT);
+  spec.channelformats.assign(channels, OIIO::TypeDesc::FLOAT);
   std::fill_n(spec.channelformats.begin(), 4, beauty);
   spec.alpha_channel = 3;
   spec.z_channel = 10;
@@ -171,14 +175,15 @@ void writeExr(const fs::path& path, const Film& film, const ExrMetadata& metadat
   spec.attribute("worldToNDC", OIIO::TypeMatrix44, metadata.worldToNDC.data());
 
   // Interleave the planes; OIIO converts each channel to its own format while writing.
-  std::vector<float> pixels(n * kExrChannels);
+  std::vector<float> pixels(n * channels);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 16384), [&](const tbb::blocked_range<std::size_t>& r) {
     for (std::size_t p = r.begin(); p != r.end(); ++p) {
-      float* out = &pixels[p * kExrChannels];
+      float* out = &pixels[p * channels];
       std::copy_n(&film.rgba[p * 4], 4, out);
       if (!film.albedo.empty()) std::copy_n(&film.albedo[p * 3], 3, out + 4); else std::fill_n(out + 4, 3, 0.0f);
       if (!film.normal.empty()) std::copy_n(&film.normal[p * 3], 3, out + 7); else std::fill_n(out + 7, 3, 0.0f);
       out[10] = film.depth.empty() ? 0.0f : film.depth[p];
+      if (withSamples) out[11] = film.sampleCount[p];
     }
   });
   writeAtomically(path, "EXR", "openexr", spec, OIIO::TypeDesc::FLOAT, pixels.data());

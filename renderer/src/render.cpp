@@ -16,6 +16,8 @@
 #include <mutex>
 
 #include "embree_scene.hpp"
+#include "lacrima/renderer/adaptive_sampling.hpp"
+#include "lacrima/renderer/pixel_sums.hpp"
 #include "integrator.hpp"
 #include "lacrima/geometry/error.hpp"
 #include "lacrima/renderer/camera.hpp"
@@ -50,27 +52,16 @@ struct TileRect {
   int x0, y0, x1, y1;
 };
 
+int tileCountOf(int width, int height) {
+  return ((width + kTileSize - 1) / kTileSize) * ((height + kTileSize - 1) / kTileSize);
+}
+
 TileRect tileRect(int tileIndex, int width, int height) {
   const int tilesX = (width + kTileSize - 1) / kTileSize;
   const int x0 = (tileIndex % tilesX) * kTileSize;
   const int y0 = (tileIndex / tilesX) * kTileSize;
   return {x0, y0, std::min(x0 + kTileSize, width), std::min(y0 + kTileSize, height)};
 }
-
-// Beauty and alpha are filter-weighted; the AOVs (albedo, normal, depth) are plain averages over
-// the samples that hit something, as before.
-struct PixelResult {
-  Color weightedRadiance = Color::Zero();  // sum of w L
-  Color radiance = Color::Zero();          // sum of L
-  float weightedCoverage = 0.0f;           // sum of w * hit
-  float coverage = 0.0f;                   // sum of hit
-  float weight = 0.0f;                     // sum of w
-  int samples = 0;                         // finite radiance samples
-  Color albedo = Color::Zero();
-  Vec3 normal = Vec3::Zero();
-  float depth = 0.0f;
-  int depthSamples = 0;
-};
 
 // Distance along the camera's viewing axis (what compositors expect in Z).
 float cameraDepth(const Camera& camera, const Ray& ray, float distance) {
@@ -86,19 +77,24 @@ class TileRenderer {
         filter_(filter),
         film_(film),
         cameraRays_(frame.camera, frame.settings.width, frame.settings.height),
-        hasMotion_(frame.hasMotion()) {}
+        hasMotion_(frame.hasMotion()),
+        order_(frame.settings.adaptive.enabled ? SampleOrder::Progressive : SampleOrder::Shuffled) {}
 
+  // Every pixel of the tile with all its samples (no adaptive sampling).
   void renderTile(const TileRect& rect, PathCounters& counters, uint64_t& nonFinite) const {
     for (int y = rect.y0; y < rect.y1; ++y)
-      for (int x = rect.x0; x < rect.x1; ++x) renderPixel(x, y, counters, nonFinite);
+      for (int x = rect.x0; x < rect.x1; ++x) {
+        PixelSums sum;
+        addSamples(x, y, frame_.settings.samplesPerPixel, sum, counters, nonFinite);
+        store(x, y, sum);
+      }
   }
 
- private:
-  void renderPixel(int x, int y, PathCounters& counters, uint64_t& nonFinite) const {
+  // The pixel's samples from sum.samples up to (not including) `end`, added to its sums.
+  void addSamples(int x, int y, int end, PixelSums& sum, PathCounters& counters, uint64_t& nonFinite) const {
     const RenderSettings& s = frame_.settings;
-    PixelResult sum;
-    for (int i = 0; i < s.samplesPerPixel; ++i) {
-      PixelSampler sampler(s.sampler, s.seed, s.frameNumber, x, y, i, s.samplesPerPixel);
+    for (int i = sum.samples; i < end; ++i) {
+      PixelSampler sampler(s.sampler, s.seed, s.frameNumber, x, y, i, s.samplesPerPixel, order_);
       // The point in the filter's footprint and the point on the lens: one 4D block
       // (sample_dimensions::kPixelAndLens), mapped monotonically, so both stay stratified.
       const std::array<float, 4> pixelAndLens = sampler.get4D();
@@ -114,9 +110,8 @@ class TileRenderer {
         ++nonFinite;
       }
       sum.weightedRadiance += f.weight * L;
-      sum.radiance += L;
       sum.weight += f.weight;
-      ++sum.samples;
+      addRadiance(sum, L);
       if (first.valid) {
         sum.weightedCoverage += f.weight;
         sum.coverage += 1.0f;
@@ -126,50 +121,136 @@ class TileRenderer {
         ++sum.depthSamples;
       }
     }
-    store(x, y, sum);
   }
 
-  void store(int x, int y, const PixelResult& sum) const {
+  void store(int x, int y, const PixelSums& sum) const {
     const size_t p = film_.pixelIndex(x, y);
-    const Filtered f = filtered(sum);
-    for (int c = 0; c < 3; ++c) film_.rgba[4 * p + c] = f.radiance[c];
-    film_.rgba[4 * p + 3] = f.alpha;
+    const PixelValue value = pixelValue(sum);
+    for (int c = 0; c < 3; ++c) film_.rgba[4 * p + c] = value.radiance[c];
+    film_.rgba[4 * p + 3] = value.alpha;
     const float invHits = sum.depthSamples > 0 ? 1.0f / float(sum.depthSamples) : 0.0f;
     for (int c = 0; c < 3; ++c) film_.albedo[3 * p + c] = sum.albedo[c] * invHits;
     const Vec3 n = sum.normal.norm() > 0.0f ? Vec3(sum.normal.normalized()) : Vec3::Zero();
     for (int c = 0; c < 3; ++c) film_.normal[3 * p + c] = n[c];
     film_.depth[p] = sum.depthSamples > 0 ? sum.depth * invHits : std::numeric_limits<float>::infinity();
+    if (!film_.sampleCount.empty()) film_.sampleCount[p] = float(sum.samples);
   }
 
-  struct Filtered {
-    Color radiance;
-    float alpha;
-  };
-
-  // The pixel is the weighted average sum(w L) / sum(w) (pbrt-v4's RGBFilm does the same), not
-  // sum(w L) / N: both are consistent, but the ratio reproduces a constant radiance exactly
-  // whatever the weights, so a flat sky keeps no noise from a filter's negative lobes. Without
-  // negative lobes every w is exactly 1 and this is the plain mean, bitwise. With them (Mitchell),
-  // w = +-c and sum(w) can be 0 or negative with few samples (2 samples of opposite signs); such a
-  // pixel takes the plain mean instead, the estimate of the filter |f|.
-  static Filtered filtered(const PixelResult& sum) {
-    if (sum.samples == 0) return {Color::Zero(), 0.0f};
-    if (sum.weight > 0.0f) {
-      const float inv = 1.0f / sum.weight;
-      // Coverage is a fraction: a negative lobe may ring the colour but not the alpha past [0, 1].
-      return {sum.weightedRadiance * inv, std::clamp(sum.weightedCoverage * inv, 0.0f, 1.0f)};
-    }
-    const float inv = 1.0f / float(sum.samples);
-    return {sum.radiance * inv, sum.coverage * inv};
-  }
-
+ private:
   const Frame& frame_;
   const PathIntegrator& integrator_;
   const FilterSampler& filter_;
   Film& film_;
   CameraRays cameraRays_;
   bool hasMotion_;
+  SampleOrder order_;  // progressive under adaptive sampling: a pixel may stop after any round
 };
+
+// Counts what the tiles did, reports progress as camera samples done over those still planned,
+// and polls the cancel flag.
+class TracingProgress {
+ public:
+  TracingProgress(std::chrono::steady_clock::time_point start, const ProgressCallback& callback,
+                  const std::atomic<bool>* cancel)
+      : start_(start), callback_(callback), cancel_(cancel) {}
+
+  bool cancelled() const { return cancel_ && cancel_->load(std::memory_order_relaxed); }
+  uint64_t rays() const { return rays_.load(); }
+  uint64_t nonFiniteSamples() const { return nonFinite_.load(); }
+
+  // The camera samples still to come (adaptive sampling re-plans them after every round).
+  void planMore(uint64_t samples) { planned_ = done_.load() + samples; }
+
+  void tileDone(const PathCounters& counters, uint64_t nonFinite, uint64_t samples) {
+    rays_ += counters.rays;
+    nonFinite_ += nonFinite;
+    const uint64_t done = done_ += samples;
+    if (!callback_) return;
+    const std::lock_guard lock(mutex_);
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    callback_(RenderProgress{done, std::max(planned_.load(), done), elapsed, rays_.load()});
+  }
+
+ private:
+  std::chrono::steady_clock::time_point start_;
+  const ProgressCallback& callback_;
+  const std::atomic<bool>* cancel_;
+  std::atomic<uint64_t> rays_{0}, nonFinite_{0}, done_{0}, planned_{0};
+  std::mutex mutex_;
+};
+
+// Without adaptive sampling: every tile once, each pixel with all its samples. Returns the
+// camera samples taken.
+uint64_t renderAllSamples(const TileRenderer& tiles, const RenderSettings& s, TracingProgress& tracing) {
+  const int tileCount = tileCountOf(s.width, s.height);
+  tracing.planMore(uint64_t(s.width) * s.height * s.samplesPerPixel);
+  tbb::parallel_for(tbb::blocked_range<int>(0, tileCount, 1), [&](const tbb::blocked_range<int>& range) {
+    for (int t = range.begin(); t != range.end(); ++t) {
+      if (tracing.cancelled()) return;  // skip what is left, cheaply
+      PathCounters counters;
+      uint64_t nonFinite = 0;
+      const TileRect rect = tileRect(t, s.width, s.height);
+      tiles.renderTile(rect, counters, nonFinite);
+      tracing.tileDone(counters, nonFinite, uint64_t(rect.x1 - rect.x0) * (rect.y1 - rect.y0) * s.samplesPerPixel);
+    }
+  });
+  return uint64_t(s.width) * s.height * s.samplesPerPixel;
+}
+
+// Adaptive sampling (adaptive_sampling.hpp) in rounds over the whole image: each round, every
+// active pixel goes on to its next sample count, tiles in parallel; between rounds the pixels
+// that go on are chosen from all the sums. The rounds and choices depend on the sums alone, so
+// the image does not depend on the thread count. Returns the camera samples taken.
+uint64_t renderAdaptively(const TileRenderer& tiles, const RenderSettings& s, TracingProgress& tracing) {
+  const size_t pixelCount = size_t(s.width) * s.height;
+  std::vector<PixelSums> sums(pixelCount);
+  std::vector<uint8_t> active(pixelCount, 1);
+  const int tileCount = tileCountOf(s.width, s.height);
+  for (;;) {
+    std::vector<int> activeTiles;
+    uint64_t planned = 0;
+    for (int t = 0; t < tileCount; ++t) {
+      const TileRect rect = tileRect(t, s.width, s.height);
+      bool any = false;
+      for (int y = rect.y0; y < rect.y1; ++y)
+        for (int x = rect.x0; x < rect.x1; ++x) {
+          const size_t p = size_t(y) * s.width + x;
+          if (!active[p]) continue;
+          any = true;
+          planned += uint64_t(s.samplesPerPixel - sums[p].samples);
+        }
+      if (any) activeTiles.push_back(t);
+    }
+    if (activeTiles.empty() || tracing.cancelled()) break;
+    tracing.planMore(planned);
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, activeTiles.size(), 1), [&](const tbb::blocked_range<size_t>& range) {
+      for (size_t i = range.begin(); i != range.end(); ++i) {
+        if (tracing.cancelled()) return;
+        PathCounters counters;
+        uint64_t nonFinite = 0, taken = 0;
+        const TileRect rect = tileRect(activeTiles[i], s.width, s.height);
+        for (int y = rect.y0; y < rect.y1; ++y)
+          for (int x = rect.x0; x < rect.x1; ++x) {
+            PixelSums& sum = sums[size_t(y) * s.width + x];
+            if (!active[size_t(y) * s.width + x]) continue;
+            const int before = sum.samples;
+            tiles.addSamples(x, y, nextSampleCount(before, s.adaptive, s.samplesPerPixel), sum, counters, nonFinite);
+            taken += uint64_t(sum.samples - before);
+          }
+        tracing.tileDone(counters, nonFinite, taken);
+      }
+    });
+    selectActivePixels(sums, s.width, s.height, s.adaptive, s.samplesPerPixel, active);
+  }
+  uint64_t samples = 0;
+  for (int y = 0; y < s.height; ++y)
+    for (int x = 0; x < s.width; ++x) {
+      const PixelSums& sum = sums[size_t(y) * s.width + x];
+      tiles.store(x, y, sum);
+      samples += uint64_t(sum.samples);
+    }
+  return samples;
+}
 
 }  // namespace
 
@@ -201,14 +282,11 @@ Film Renderer::render(const Frame& frame, RenderStats* stats, const ProgressCall
   tbb::task_arena arena(s.threads > 0 ? s.threads : tbb::task_arena::automatic);
 
   Film film(s.width, s.height);
-  const int tilesX = (s.width + kTileSize - 1) / kTileSize;
-  const int tilesY = (s.height + kTileSize - 1) / kTileSize;
-  const int tileCount = tilesX * tilesY;
-  std::atomic<uint64_t> rays{0}, nonFinite{0};
-  std::atomic<int> tilesDone{0};
-  std::mutex progressMutex;
+  if (s.adaptive.enabled) film.sampleCount.assign(size_t(s.width) * s.height, 0.0f);
+  TracingProgress tracing(start, progress, cancel);
   SceneUpdate sceneUpdate = SceneUpdate::Build;
   double sceneUpdateSeconds = 0.0, tracingSeconds = 0.0;
+  uint64_t cameraPaths = 0;
 
   arena.execute([&] {
     const auto updateStart = std::chrono::steady_clock::now();
@@ -220,32 +298,17 @@ Film Renderer::render(const Frame& frame, RenderStats* stats, const ProgressCall
     const FilterSampler filter(s.filter);
     const TileRenderer tiles(frame, integrator, filter, film);
     const auto tracingStart = std::chrono::steady_clock::now();
-    tbb::parallel_for(tbb::blocked_range<int>(0, tileCount, 1), [&](const tbb::blocked_range<int>& range) {
-      for (int t = range.begin(); t != range.end(); ++t) {
-        if (cancel && cancel->load(std::memory_order_relaxed)) return;  // skip what is left, cheaply
-        PathCounters counters;
-        uint64_t tileNonFinite = 0;
-        tiles.renderTile(tileRect(t, s.width, s.height), counters, tileNonFinite);
-        rays += counters.rays;
-        nonFinite += tileNonFinite;
-        const int done = ++tilesDone;
-        if (progress) {
-          const std::lock_guard lock(progressMutex);
-          const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-          progress(RenderProgress{done, tileCount, elapsed, rays.load()});
-        }
-      }
-    });
+    cameraPaths = s.adaptive.enabled ? renderAdaptively(tiles, s, tracing) : renderAllSamples(tiles, s, tracing);
     tracingSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - tracingStart).count();
   });
-  if (cancel && cancel->load()) throw RenderCancelled();
+  if (tracing.cancelled()) throw RenderCancelled();
 
   if (stats) {
     stats->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     stats->tracingSeconds = tracingSeconds;
-    stats->cameraPaths = uint64_t(s.width) * s.height * s.samplesPerPixel;
-    stats->rays = rays.load();
-    stats->nonFiniteSamples = nonFinite.load();
+    stats->cameraPaths = cameraPaths;
+    stats->rays = tracing.rays();
+    stats->nonFiniteSamples = tracing.nonFiniteSamples();
     stats->sceneUpdate = sceneUpdate;
     stats->sceneUpdateSeconds = sceneUpdateSeconds;
   }

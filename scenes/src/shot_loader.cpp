@@ -280,7 +280,8 @@ class ShotReader {
   bool readRender(const Json& v) {
     const size_t before = c_.errorCount();
     ObjectReader o(c_, v, "/render", {"width", "height", "spp", "maxDepth", "seed", "threads", "floatOutput",
-                                           "transparentShadows", "caustics", "sampler", "filter", "bounces"});
+                                           "transparentShadows", "caustics", "sampler", "filter", "bounces",
+                                           "adaptive"});
     RenderSettings& s = shot_.render;
     if (auto x = o.integer("width", Range::closed(1, 16384), true)) s.width = int(*x);
     if (auto x = o.integer("height", Range::closed(1, 16384), true)) s.height = int(*x);
@@ -294,7 +295,30 @@ class ShotReader {
     readSampler(o, s);
     readFilter(o, s);
     readBounces(o, s);
+    readAdaptive(o, s);
     return c_.errorCount() == before;
+  }
+
+  // "adaptive": true | false | {"threshold": t > 0, "minSpp": n in [1, spp]} (docs/shot-format.md,
+  // "Adaptive sampling"); "spp" is then each pixel's maximum.
+  void readAdaptive(ObjectReader& render, RenderSettings& s) {
+    const Json* v = render.find("adaptive");
+    if (!v) return;
+    if (v->is_boolean()) {
+      s.adaptive.enabled = v->get<bool>();
+    } else {
+      ObjectReader o(c_, *v, render.at("adaptive"), {"threshold", "minSpp"});
+      s.adaptive.enabled = true;
+      if (auto x = o.number("threshold", Range::openClosed(0, 1))) s.adaptive.threshold = float(*x);
+      if (auto x = o.integer("minSpp", Range::atLeast(1))) {
+        if (*x > s.samplesPerPixel)
+          o.error("minSpp", fmt::format("minSpp {} is more than spp {}, each pixel's maximum under adaptive sampling",
+                                        *x, s.samplesPerPixel));
+        else
+          s.adaptive.minSamples = int(*x);
+      }
+    }
+    s.adaptive.minSamples = std::min(s.adaptive.minSamples, s.samplesPerPixel);  // the default 16 under a small spp
   }
 
   // "bounces": {"diffuse": n, "glossy": n, "transmission": n}, each 0-1024; a kind left out has no

@@ -142,10 +142,38 @@ TEST(Sobol, PermutationElementIsABijectionForAnyCount) {
   EXPECT_NE(a, b);
 }
 
-std::vector<Point> pixelPoints(SamplerKind kind, int x, int y, int spp, uint32_t dimension) {
+TEST(Sobol, ProgressiveElementMapsEveryPowerOfTwoPrefixOntoOneAlignedBlock) {
+  for (uint32_t n : {2u, 16u, 100u, 1024u})
+    for (uint32_t seed : {0u, 7u, 0x9e3779b9u}) {
+      uint32_t size = 1;
+      while (size < n) size <<= 1;
+      std::vector<uint32_t> image(size);
+      for (uint32_t i = 0; i < size; ++i) image[i] = progressiveElement(i, n, seed);
+      std::vector<uint32_t> sorted = image;
+      std::sort(sorted.begin(), sorted.end());
+      std::vector<uint32_t> identity(size);
+      std::iota(identity.begin(), identity.end(), 0u);
+      ASSERT_EQ(sorted, identity) << "n " << n << " seed " << seed;
+      for (uint32_t block = 1; block <= size; block <<= 1) {
+        const uint32_t base = image[0] / block * block;
+        for (uint32_t i = 0; i < block; ++i)
+          EXPECT_EQ(image[i] / block * block, base) << "n " << n << " prefix " << block << " index " << i;
+      }
+    }
+  // Not the identity: the prefix's block and its order depend on the seed.
+  std::vector<uint32_t> a, b;
+  for (uint32_t i = 0; i < 64; ++i) {
+    a.push_back(progressiveElement(i, 64, 1u));
+    b.push_back(progressiveElement(i, 64, 2u));
+  }
+  EXPECT_NE(a, b);
+}
+
+std::vector<Point> pixelPoints(SamplerKind kind, int x, int y, int spp, uint32_t dimension,
+                               SampleOrder order = SampleOrder::Shuffled, int count = -1) {
   std::vector<Point> points;
-  for (int i = 0; i < spp; ++i) {
-    PixelSampler sampler(kind, 42, 3, x, y, i, spp);
+  for (int i = 0; i < (count < 0 ? spp : count); ++i) {
+    PixelSampler sampler(kind, 42, 3, x, y, i, spp, order);
     sampler.setDimension(dimension);
     const Vec2 u = sampler.get2D();
     points.emplace_back(u.x(), u.y());
@@ -160,6 +188,20 @@ TEST(PixelSamplerSobol, EachDimensionPairOfAPixelIsANetForPowerOfTwoCounts) {
       EXPECT_TRUE(isZeroNet(pixelPoints(SamplerKind::Sobol, 5, 9, 1 << m, dimension), m))
           << "spp " << (1 << m) << " dimension " << dimension;
     }
+}
+
+// Adaptive sampling stops a pixel early: with the progressive order every power-of-two prefix of
+// the maximum count is a net, where the shuffled order's prefix is a random subset that is not.
+TEST(PixelSamplerSobol, ProgressiveOrderKeepsEveryPowerOfTwoPrefixANet) {
+  const int maxSpp = 256;
+  int shuffledNets = 0;
+  for (int m : {2, 4, 6, 8})
+    for (uint32_t dimension : {0u, 2u, 9u, 100u}) {
+      EXPECT_TRUE(isZeroNet(pixelPoints(SamplerKind::Sobol, 5, 9, maxSpp, dimension, SampleOrder::Progressive, 1 << m), m))
+          << "prefix " << (1 << m) << " dimension " << dimension;
+      shuffledNets += isZeroNet(pixelPoints(SamplerKind::Sobol, 5, 9, maxSpp, dimension, SampleOrder::Shuffled, 1 << m), m);
+    }
+  EXPECT_LT(shuffledNets, 8);  // the full count (m = 8) is a net in either order
 }
 
 TEST(PixelSamplerSobol, OneDimensionIsStratifiedIntoOnePointPerInterval) {

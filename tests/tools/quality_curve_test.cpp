@@ -47,6 +47,18 @@ TEST(QualityCurve, TimeToReachInterpolatesInLogLog) {
   const auto at50 = timeToReach(points, 0.4 / std::sqrt(50.0));
   ASSERT_TRUE(at50);
   EXPECT_NEAR(at50->spp, 50.0, 1e-9);
+  EXPECT_NEAR(at50->seconds, 0.5, 1e-9);
+}
+
+// Adaptive sampling: the seconds are measured, not proportional to the maximum spp. Between 32
+// (1 s) and 64 (1.5 s) max spp, halfway in log error: halfway in log seconds, sqrt(1.5) s.
+TEST(QualityCurve, TimeToReachInterpolatesTheMeasuredSeconds) {
+  const std::vector<QualityPoint> points = {{16, 0.6, 0.08}, {32, 1.0, 0.04}, {64, 1.5, 0.02}};
+  const auto halfway = timeToReach(points, std::sqrt(0.04 * 0.02));
+  ASSERT_TRUE(halfway);
+  EXPECT_NEAR(halfway->spp, std::sqrt(32.0 * 64.0), 1e-9);
+  EXPECT_NEAR(halfway->seconds, std::sqrt(1.5), 1e-9);
+  EXPECT_NEAR(timeToReach(points, 0.1)->seconds, 0.6, 1e-12);
 }
 
 TEST(QualityCurve, TargetsBeyondTheCurveAreExtrapolatedOrRefused) {
@@ -74,16 +86,16 @@ fs::path writeDiffuseShot(const fs::path& dir) {
   return path;
 }
 
-// The RMSE column of the table (rows "spp seconds RMSE").
+// The RMSE column of the table (rows "spp mean-spp seconds RMSE").
 std::vector<std::string> rmseColumn(const std::string& output) {
   std::vector<std::string> column;
   std::istringstream lines(output);
   for (std::string line; std::getline(lines, line);) {
     std::istringstream row(line);
     int spp = 0;
-    double seconds = 0;
+    double meanSpp = 0, seconds = 0;
     std::string rmse, rest;
-    if (row >> spp >> seconds >> rmse && !(row >> rest)) column.push_back(rmse);
+    if (row >> spp >> meanSpp >> seconds >> rmse && !(row >> rest)) column.push_back(rmse);
   }
   return column;
 }

@@ -234,7 +234,7 @@ TEST(SequenceResume, FramesOfOtherSettingsAreRenderedAgain) {
 }
 
 // The settings a shot file holds that change the pixels (sampler, pixel filter, bounce limits,
-// caustics): a frame rendered with others is rendered again.
+// caustics, adaptive sampling): a frame rendered with others is rendered again.
 TEST(SequenceResume, FramesOfOtherShotRenderSettingsAreRenderedAgain) {
   const fs::path dir = freshDir();
   const std::string out = (dir / "spheres.####.exr").string();
@@ -252,6 +252,7 @@ TEST(SequenceResume, FramesOfOtherShotRenderSettingsAreRenderedAgain) {
       {R"(, "bounces": {"glossy": 2})",
        "its lacrima:bounces is diffuse 1024 glossy 1024 transmission 1024, not diffuse 1024 glossy 2 transmission 1024"},
       {R"(, "caustics": "straight")", "its lacrima:caustics is mnee, not straight"},
+      {R"(, "adaptive": {"threshold": 0.05, "minSpp": 2})", "its lacrima:adaptive is off, not threshold 0.05 min 2 spp"},
   };
   for (const auto& change : changes) {
     SCOPED_TRACE(change.renderExtra);
@@ -261,7 +262,7 @@ TEST(SequenceResume, FramesOfOtherShotRenderSettingsAreRenderedAgain) {
     EXPECT_TRUE(contains(changed.output, why + change.reason + "\n")) << changed.output;
   }
   // The same settings again: nothing to render.
-  const auto same = render(changes[3].renderExtra);
+  const auto same = render(std::end(changes)[-1].renderExtra);  // the last change, rendered last
   EXPECT_TRUE(contains(same.output, "lacrima: 1 frames: 0 rendered, 1 skipped, 0 failed in ")) << same.output;
 }
 

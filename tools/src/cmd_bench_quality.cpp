@@ -92,6 +92,7 @@ std::vector<float> referenceImage(const BenchOptions& o, Frame frame, const fs::
       return *cached;
     }
   frame.settings.samplesPerPixel = o.referenceSpp;
+  frame.settings.adaptive.enabled = false;  // converged everywhere, whatever the measured renders do
   frame.settings.seed += kReferenceSeedOffset;
   std::fprintf(stderr, "lacrima bench: rendering the reference at %d spp ...\n", o.referenceSpp);
   RenderStats stats;
@@ -101,17 +102,19 @@ std::vector<float> referenceImage(const BenchOptions& o, Frame frame, const fs::
   return rgb;
 }
 
-// Renders at 1, 2, 4, ... up to maxSpp samples; seconds are path tracing only (the Embree scene
-// build, the same for every count, is left out).
+// Renders at 1, 2, 4, ... up to maxSpp samples (under adaptive sampling, each pixel's maximum;
+// "mean spp" is what the pixels took); seconds are path tracing only (the Embree scene build,
+// the same for every count, is left out).
 std::vector<QualityPoint> measureCurve(const BenchOptions& o, Frame frame, const std::vector<float>& reference) {
   std::vector<QualityPoint> points;
-  std::printf("%8s %12s %10s\n", "spp", "seconds", "RMSE");
+  std::printf("%8s %10s %12s %10s\n", "spp", "mean spp", "seconds", "RMSE");
   for (int spp = 1; spp <= o.maxSpp; spp *= 2) {
     frame.settings.samplesPerPixel = spp;
     RenderStats stats;
     const std::vector<float> rgb = beautyRgb(renderFrame(frame, &stats));
     points.push_back({spp, stats.seconds - stats.sceneUpdateSeconds, rootMeanSquareError(rgb, reference)});
-    std::printf("%8d %12.3f %10.5f\n", spp, points.back().seconds, points.back().rmse);
+    const double meanSpp = double(stats.cameraPaths) / (double(o.width) * o.height);
+    std::printf("%8d %10.1f %12.3f %10.5f\n", spp, meanSpp, points.back().seconds, points.back().rmse);
     std::fflush(stdout);
   }
   return points;
@@ -142,8 +145,16 @@ int runBenchQuality(const BenchOptions& o) {
     frame.settings.width = o.width;
     frame.settings.height = o.height;
     frame.settings.threads = o.threads;
-    std::printf("lacrima bench --quality: %s frame %d, %dx%d, max depth %d, threads %s\n", shotPath.c_str(), frameNumber,
-                o.width, o.height, frame.settings.maxDepth, o.threads ? std::to_string(o.threads).c_str() : "all");
+    if (o.adaptiveThreshold) {
+      frame.settings.adaptive.enabled = *o.adaptiveThreshold > 0.0;
+      if (frame.settings.adaptive.enabled) frame.settings.adaptive.threshold = float(*o.adaptiveThreshold);
+    }
+    const AdaptiveSampling& adaptive = frame.settings.adaptive;
+    std::printf("lacrima bench --quality: %s frame %d, %dx%d, max depth %d, threads %s, adaptive %s\n", shotPath.c_str(),
+                frameNumber, o.width, o.height, frame.settings.maxDepth,
+                o.threads ? std::to_string(o.threads).c_str() : "all",
+                adaptive.enabled ? fmt::format("threshold {} min {} spp", adaptive.threshold, adaptive.minSamples).c_str()
+                                 : "off");
     const fs::path path = referencePath(o, shotPath, frameNumber, frame.settings);
     const std::vector<float> reference = referenceImage(o, frame, path);
     const std::vector<QualityPoint> points = measureCurve(o, frame, reference);

@@ -65,6 +65,8 @@ struct BenchOptions {
   std::vector<double> targets = {0.1, 0.05, 0.043};
   std::string cacheDir;  // default: $XDG_CACHE_HOME/lacrima/quality or ~/.cache/lacrima/quality
   bool freshReference = false;
+  // --adaptive: adaptive sampling's threshold for the measured renders (0: off); none: the shot's.
+  std::optional<double> adaptiveThreshold;
 };
 
 struct DiffOptions {

@@ -221,6 +221,19 @@ void addInfo(CLI::App& app, std::string& file) {
   info->callback([&file] { throw CLI::RuntimeError(runInfo(file)); });
 }
 
+// Non-negative real numbers, with a message in the style of integerIn's.
+CLI::Validator nonNegativeNumber() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        char* end = nullptr;
+        const double value = text.empty() ? -1.0 : std::strtod(text.c_str(), &end);
+        if (!text.empty() && end == text.c_str() + text.size() && value >= 0.0 && std::isfinite(value))
+          return std::string();
+        return fmt::format("expected a number >= 0, found {}", describeArgument(text));
+      },
+      "NUMBER >= 0");
+}
+
 void addBench(CLI::App& app, BenchOptions& o) {
   auto* bench = app.add_subcommand("bench", "Measure render and raw Embree throughput (not a test)");
   bench->footer(
@@ -254,22 +267,13 @@ void addBench(CLI::App& app, BenchOptions& o) {
                     "max depth, pixel filter and spp");
   bench->add_flag("--fresh-reference", o.freshReference,
                   "--quality: render the reference again (after a change of assets or of what the renderer converges to)");
+  bench->add_option("--adaptive", o.adaptiveThreshold,
+                    "--quality: adaptive sampling for the measured renders with this threshold, 0 = off (default: "
+                    "as the shot says); each count is then the pixels' maximum, and the mean is reported")
+      ->check(nonNegativeNumber());
   bench->callback([&o] { throw CLI::RuntimeError(o.quality ? runBenchQuality(o) : runBench(o)); });
 }
 
-
-// Non-negative real numbers, with a message in the style of integerIn's.
-CLI::Validator nonNegativeNumber() {
-  return CLI::Validator(
-      [](std::string& text) -> std::string {
-        char* end = nullptr;
-        const double value = text.empty() ? -1.0 : std::strtod(text.c_str(), &end);
-        if (!text.empty() && end == text.c_str() + text.size() && value >= 0.0 && std::isfinite(value))
-          return std::string();
-        return fmt::format("expected a number >= 0, found {}", describeArgument(text));
-      },
-      "NUMBER >= 0");
-}
 
 const char* kDiffExamples =
     "A and B are two images (OpenEXR with all its AOV channels, PNG, ...), two directories (images\n"

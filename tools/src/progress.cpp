@@ -36,12 +36,12 @@ ProgressReporter::ProgressReporter(int frame, int frameIndex, int frameCount, co
       terminal_(isatty(STDERR_FILENO)) {}
 
 void ProgressReporter::update(const RenderProgress& p) {
-  if (quiet_ || p.tilesTotal == 0) return;
-  const double fraction = double(p.tilesDone) / p.tilesTotal;
+  if (quiet_ || p.samplesTotal == 0) return;
+  const double fraction = double(p.samplesDone) / double(p.samplesTotal);
   const int decile = int(fraction * 10.0);
   const auto now = std::chrono::steady_clock::now();
   if (terminal_) {
-    if (p.tilesDone != p.tilesTotal && now - lastPrint_ < std::chrono::milliseconds(200)) return;
+    if (p.samplesDone != p.samplesTotal && now - lastPrint_ < std::chrono::milliseconds(200)) return;
   } else if (decile == lastDecile_) {
     return;
   }

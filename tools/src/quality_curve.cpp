@@ -31,33 +31,25 @@ double rmseSlope(const std::vector<QualityPoint>& points) {
   return (n * sxy - sx * sy) / denominator;
 }
 
-namespace {
-
-// Seconds per sample of the largest measured render (the most accurate rate).
-double secondsPerSample(const std::vector<QualityPoint>& points) {
-  const QualityPoint& last = points.back();
-  return last.spp > 0 ? last.seconds / double(last.spp) : 0.0;
-}
-
-}  // namespace
-
 std::optional<TimeToQuality> timeToReach(const std::vector<QualityPoint>& points, double target) {
   if (points.empty() || !(target > 0.0)) return std::nullopt;
-  const double rate = secondsPerSample(points);
   for (size_t i = 0; i < points.size(); ++i) {
     if (points[i].rmse > target) continue;
-    if (i == 0) return TimeToQuality{double(points[0].spp), double(points[0].spp) * rate, false};
-    // Between points i-1 (above the target) and i (at or below it), linear in log-log.
+    if (i == 0) return TimeToQuality{double(points[0].spp), points[0].seconds, false};
+    // Between points i-1 (above the target) and i (at or below it), linear in log-log; the seconds
+    // between the two measured ones the same way (under adaptive sampling they are not in
+    // proportion to the maximum spp).
     const QualityPoint &a = points[i - 1], &b = points[i];
     const double t = (std::log(target) - std::log(a.rmse)) / (std::log(b.rmse) - std::log(a.rmse));
-    const double spp = std::exp(std::log(double(a.spp)) + t * (std::log(double(b.spp)) - std::log(double(a.spp))));
-    return TimeToQuality{spp, spp * rate, false};
+    const auto between = [t](double x, double y) { return std::exp(std::log(x) + t * (std::log(y) - std::log(x))); };
+    return TimeToQuality{between(double(a.spp), double(b.spp)), between(a.seconds, b.seconds), false};
   }
   const double slope = rmseSlope(points);
   const QualityPoint& last = points.back();
   if (!(slope < 0.0) || !(last.rmse > 0.0)) return std::nullopt;
   const double spp = double(last.spp) * std::pow(target / last.rmse, 1.0 / slope);
-  return TimeToQuality{spp, spp * rate, true};
+  // Beyond the curve, at the largest render's seconds per sample.
+  return TimeToQuality{spp, last.seconds * spp / double(last.spp), true};
 }
 
 }  // namespace lacrima::cli

@@ -29,7 +29,8 @@ struct TimeToQuality {
 };
 
 // Interpolates log-linearly between the two measured points around `target` (points sorted by
-// spp); seconds grow in proportion to the samples, at the largest measured render's rate. A target
+// spp), samples and seconds alike (under adaptive sampling the seconds do not grow in proportion
+// to the maximum spp); beyond the curve, seconds grow at the largest render's rate. A target
 // below every measured RMSE is extrapolated along the fitted slope; nothing when the slope does not
 // fall (the error does not shrink with more samples).
 std::optional<TimeToQuality> timeToReach(const std::vector<QualityPoint>& points, double target);

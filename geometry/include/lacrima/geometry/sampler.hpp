@@ -38,6 +38,17 @@ enum class SamplerKind {
   Independent,
 };
 
+// Which Sobol point each sample index of a pixel takes (SamplerKind::Sobol; per block of dimensions).
+enum class SampleOrder {
+  // A random permutation of [0, spp) (Kensler 2013): the spp samples together are the first spp
+  // points; a prefix of them is a random subset. For a fixed sample count, the default.
+  Shuffled,
+  // A nested scramble of the index over [0, 2^ceil(log2 spp)) (sobol.hpp, progressiveElement):
+  // every prefix of 2^k samples is an aligned block of points, stratified on its own. Adaptive
+  // sampling's order, where a pixel may stop after any multiple of its check step.
+  Progressive,
+};
+
 // The random numbers of one pixel sample: a pure function of (kind, seed, frame, pixel, sample
 // index, samples per pixel, dimension), so images depend neither on the thread count nor on the
 // order of tiles or frames. Each call draws one block of dimensions (get1D one, get2D two, get4D
@@ -47,8 +58,9 @@ enum class SamplerKind {
 class PixelSampler {
  public:
   PixelSampler(SamplerKind kind, uint64_t seed, int frame, int pixelX, int pixelY, int sampleIndex,
-               int samplesPerPixel)
+               int samplesPerPixel, SampleOrder order = SampleOrder::Shuffled)
       : kind_(kind),
+        order_(order),
         pixelKey_(hashCombine(hashCombine(hashCombine(mix64(seed), uint64_t(uint32_t(frame))), uint64_t(uint32_t(pixelX))),
                               uint64_t(uint32_t(pixelY)))),
         sampleKey_(hashCombine(pixelKey_, uint64_t(uint32_t(sampleIndex)))),
@@ -104,7 +116,9 @@ class PixelSampler {
     }
     // One hash per block: its low half shuffles the index, mixes of it scramble each dimension.
     const uint64_t hash = hashCombine(pixelKey_, first);
-    const uint32_t index = permutationElement(sampleIndex_, samplesPerPixel_, uint32_t(hash));
+    const uint32_t index = order_ == SampleOrder::Progressive
+                               ? progressiveElement(sampleIndex_, samplesPerPixel_, uint32_t(hash))
+                               : permutationElement(sampleIndex_, samplesPerPixel_, uint32_t(hash));
     uint64_t scramble = hash;
     for (int i = 0; i < count; ++i) {
       scramble = mix64(scramble);
@@ -113,6 +127,7 @@ class PixelSampler {
   }
 
   SamplerKind kind_;
+  SampleOrder order_;
   uint64_t pixelKey_;
   uint64_t sampleKey_;
   uint32_t sampleIndex_;

@@ -123,6 +123,19 @@ inline uint32_t permutationElement(uint32_t i, uint32_t n, uint32_t seed) {
   return (i + seed) % n;
 }
 
+// Element i of a permutation of [0, 2^m) (m the bits that hold n - 1) by a nested uniform scramble
+// of the index's m bits (Owen 1995 applied to the index, as Burley 2020 sec. 4 shuffles with the
+// scrambling hash): each bit flips by a hash of the bits above it, so the first 2^k indices map onto
+// one aligned block of 2^k. Sobol points of an aligned block are a net, so every power-of-two prefix
+// of a pixel's samples stays stratified: what adaptive sampling needs when a pixel stops early.
+inline uint32_t progressiveElement(uint32_t i, uint32_t n, uint32_t seed) {
+  if (n <= 1) return 0;
+  int bits = 0;
+  while (bits < 32 && (uint64_t(1) << bits) < n) ++bits;
+  const int shift = 32 - bits;
+  return owenScramble(i << shift, seed) >> shift;
+}
+
 // The top 24 of 32 fraction bits as a float in [0, 1) (24 bits: exact, never rounds up to 1).
 inline float fractionBitsToUnitFloat(uint32_t bits) { return float(bits >> 8) * 0x1p-24f; }
 

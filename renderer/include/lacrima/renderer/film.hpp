@@ -13,6 +13,8 @@ struct Film {
   std::vector<float> albedo;  // 3 per pixel, first-hit albedo average
   std::vector<float> normal;  // 3 per pixel, first-hit world shading normal average
   std::vector<float> depth;   // 1 per pixel, first-hit distance along the camera axis (inf = none)
+  // 1 per pixel, the camera samples the pixel took: filled by adaptive sampling only (else empty).
+  std::vector<float> sampleCount;
 
   Film() = default;
   Film(int w, int h)
@@ -34,7 +36,7 @@ struct RenderStats {
   // Path tracing alone: the wall time of the tiles, after the scene update, the light sampler and
   // the integrator's set-up (part of seconds). Rays per second are measured over it.
   double tracingSeconds = 0.0;
-  uint64_t cameraPaths = 0;
+  uint64_t cameraPaths = 0;   // camera samples taken, all pixels together
   uint64_t rays = 0;          // intersect + occluded queries
   uint64_t nonFiniteSamples = 0;  // NaN/Inf path contributions discarded (never on the film)
 };

@@ -102,10 +102,21 @@ struct BounceLimits {
   bool operator==(const BounceLimits&) const = default;
 };
 
+// Adaptive sampling (renderer/src/adaptive_sampling.hpp): every pixel takes minSamples, then
+// the pixels whose error estimate (Dammertz et al. 2010) is still above `threshold`, and their
+// neighbours, take more, up to RenderSettings::samplesPerPixel. Off by default.
+struct AdaptiveSampling {
+  bool enabled = false;
+  float threshold = 0.01f;  // relative to the square root of the pixel's value (Cycles' default)
+  int minSamples = 16;
+  bool operator==(const AdaptiveSampling&) const = default;
+};
+
 struct RenderSettings {
   int width = 640;
   int height = 360;
-  int samplesPerPixel = 16;
+  int samplesPerPixel = 16;  // the most a pixel takes (all of them without adaptive sampling)
+  AdaptiveSampling adaptive;
   int maxDepth = 12;       // path vertices after the camera ray
   BounceLimits bounces;    // per kind of scattering, within maxDepth
   uint64_t seed = 0;

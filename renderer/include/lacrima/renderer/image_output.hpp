@@ -20,7 +20,8 @@ struct ExrMetadata {
   std::map<std::string, std::string> extra;  // further string attributes ("lacrima:..." keys)
 };
 
-// Channels: R,G,B,A (half, or float when floatBeauty), albedo.R/G/B, N.X/Y/Z, Z (float).
+// Channels: R,G,B,A (half, or float when floatBeauty), albedo.R/G/B, N.X/Y/Z, Z (float), and
+// "samples" (float) when the film has sample counts (adaptive sampling).
 // Writes to "<path>.tmp-<pid>" then renames over <path>; creates parent directories.
 // Throws InputError (names the path) when the file cannot be written.
 void writeExr(const std::filesystem::path& path, const Film& film, const ExrMetadata& metadata,

@@ -10,9 +10,12 @@
 
 namespace lacrima {
 
+// Progress of one frame's path tracing, in camera samples (one per pixel sample): those taken,
+// and those taken plus those still planned (adaptive sampling plans each pixel up to the maximum,
+// then re-plans after every round, so the total shrinks as pixels converge).
 struct RenderProgress {
-  int tilesDone = 0;
-  int tilesTotal = 0;
+  uint64_t samplesDone = 0;
+  uint64_t samplesTotal = 0;
   double elapsedSeconds = 0.0;
   uint64_t raysSoFar = 0;
 };
@@ -37,7 +40,8 @@ class Renderer {
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
 
-  // Renders frame.settings.samplesPerPixel samples per pixel; bitwise identical for any thread
+  // Renders frame.settings.samplesPerPixel samples per pixel (at most that many under adaptive
+  // sampling, frame.settings.adaptive); bitwise identical for any thread
   // count. `frame` need only live for the duration of the call. Throws InputError for frames
   // that cannot be rendered (bad mesh data). `cancel` (optional) is polled before every tile,
   // so a signal handler can stop a long frame within about one tile's time; once it is true,
