@@ -9,16 +9,14 @@ namespace lacrima {
 float pixelError(const PixelSums& sum) {
   const int n = sum.samples;
   if (n < 2) return std::numeric_limits<float>::infinity();
-  int prefix = 1;
-  while (prefix * 2 < n) prefix *= 2;  // the largest power of two below n
-  const Color& prefixSum = prefix * 2 == n ? sum.previousPrefixRadiance : sum.prefixRadiance;
   // Plain means: with the default filters every filter weight is 1 and they are the pixel's value
   // itself; with Mitchell's signed weights they estimate |f|, close enough to judge convergence.
+  const PixelHalves halves = pixelHalves(sum);
+  const int p = halves.firstSamples;
   const Color whole = sum.radiance / float(n);
-  const Color first = prefixSum / float(prefix);
   // |I - A| has the spread of the whole's error times sqrt((n - p) / p) (I - A = (n - p) / n (B - A),
   // A over p samples, B over the n - p others): scaled back to the whole's, 1 at n = 2p.
-  const float difference = (whole - first).abs().sum() * std::sqrt(float(prefix) / float(n - prefix));
+  const float difference = (whole - halves.first).abs().sum() * std::sqrt(float(p) / float(n - p));
   return difference / (1e-4f + std::sqrt(std::max(whole.sum(), 0.0f)));
 }
 

@@ -5,7 +5,8 @@
 // write the same path at once: they would share the temporary name.)
 //
 // EXR layout (single part, zip): R,G,B,A (half, or float with floatBeauty), albedo.R/G/B,
-// N.X/Y/Z, Z (float), and under adaptive sampling "samples" (float: the pixel's camera samples).
+// N.X/Y/Z, Z (float), under adaptive sampling "samples" (float: the pixel's camera samples), and
+// when denoising denoised.R/G/B (the beauty's format).
 // Metadata: lacrima:version, lacrima:shot, lacrima:frame (int),
 // lacrima:seed (string: EXR has no 64-bit integer attribute and OIIO drops one),
 // lacrima:spp (int), lacrima:renderSeconds (float), lacrima:colorSpace ("ACEScg") with the
@@ -18,7 +19,7 @@
 // is built once from an explicit config (no global $OCIO / OIIO colour state), config errors come
 // back as OCIO exceptions that we turn into InputError naming the config, and the CPU processor
 // (thread-safe) is applied in row chunks in parallel with TBB straight from the film, without
-// ImageBuf copies. The film's RGB is premultiplied by coverage, so dropping alpha shows the frame
+// ImageBuf copies. It shows the denoised beauty when the film has one. The film's RGB is premultiplied by coverage, so dropping alpha shows the frame
 // over black; the PNG is 8-bit RGB, no alpha.
 #include "lacrima/renderer/image_output.hpp"
 
@@ -122,7 +123,8 @@ void checkFilm(const Film& film, const char* function) {
     return plane.empty() || plane.size() == n * channels;
   };
   if (film.width < 1 || film.height < 1 || film.rgba.size() != n * 4 || !planeOk(film.albedo, 3) ||
-      !planeOk(film.normal, 3) || !planeOk(film.depth, 1) || !planeOk(film.sampleCount, 1)) {
+      !planeOk(film.normal, 3) || !planeOk(film.depth, 1) || !planeOk(film.sampleCount, 1) ||
+      !planeOk(film.denoised, 3)) {
     throw std::invalid_argument(fmt::format("{}: inconsistent {}x{} film (rgba {}, albedo {}, normal {}, depth {})",
                                             function, film.width, film.height, film.rgba.size(),
                                             film.albedo.size(), film.normal.size(), film.depth.size()));
@@ -138,13 +140,16 @@ void writeExr(const fs::path& path, const Film& film, const ExrMetadata& metadat
   const int w = film.width, h = film.height;
   const std::size_t n = std::size_t(w) * h;
 
-  const bool withSamples = !film.sampleCount.empty();
-  const int channels = kExrChannels + (withSamples ? 1 : 0);
+  const bool withSamples = !film.sampleCount.empty(), withDenoised = !film.denoised.empty();
+  const int samplesChannel = kExrChannels, denoisedChannel = kExrChannels + (withSamples ? 1 : 0);
+  const int channels = denoisedChannel + (withDenoised ? 3 : 0);
   OIIO::ImageSpec spec(w, h, channels, OIIO::TypeDesc::FLOAT);
   spec.channelnames = {"R", "G", "B", "A", "albedo.R", "albedo.G", "albedo.B", "N.X", "N.Y", "N.Z", "Z"};
   if (withSamples) spec.channelnames.push_back("samples");
+  if (withDenoised) spec.channelnames.insert(spec.channelnames.end(), {"denoised.R", "denoised.G", "denoised.B"});
   const OIIO::TypeDesc beauty = floatBeauty ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::HALF;
   spec.channelformats.assign(channels, OIIO::TypeDesc::FLOAT);
+  if (withDenoised) std::fill_n(spec.channelformats.begin() + denoisedChannel, 3, beauty);
   std::fill_n(spec.channelformats.begin(), 4, beauty);
   spec.alpha_channel = 3;
   spec.z_channel = 10;
@@ -183,7 +188,8 @@ void writeExr(const fs::path& path, const Film& film, const ExrMetadata& metadat
       if (!film.albedo.empty()) std::copy_n(&film.albedo[p * 3], 3, out + 4); else std::fill_n(out + 4, 3, 0.0f);
       if (!film.normal.empty()) std::copy_n(&film.normal[p * 3], 3, out + 7); else std::fill_n(out + 7, 3, 0.0f);
       out[10] = film.depth.empty() ? 0.0f : film.depth[p];
-      if (withSamples) out[11] = film.sampleCount[p];
+      if (withSamples) out[samplesChannel] = film.sampleCount[p];
+      if (withDenoised) std::copy_n(&film.denoised[p * 3], 3, out + denoisedChannel);
     }
   });
   writeAtomically(path, "EXR", "openexr", spec, OIIO::TypeDesc::FLOAT, pixels.data());
@@ -251,6 +257,8 @@ void writePreviewPng(const fs::path& path, const Film& film, const fs::path& oci
     const std::size_t first = std::size_t(rows.begin()) * w, count = std::size_t(rows.size()) * w;
     std::vector<float> chunk(film.rgba.begin() + std::ptrdiff_t(first * 4),
                              film.rgba.begin() + std::ptrdiff_t((first + count) * 4));
+    if (!film.denoised.empty())  // the preview shows the denoised beauty where there is one
+      for (std::size_t p = 0; p < count; ++p) std::copy_n(&film.denoised[(first + p) * 3], 3, &chunk[p * 4]);
     for (float& x : chunk) {  // NaN would survive the transform; infinities become the largest half
       if (std::isnan(x)) x = 0.0f;
       else if (std::isinf(x)) x = x > 0.0f ? 65504.0f : 0.0f;

@@ -17,6 +17,7 @@
 
 #include "embree_scene.hpp"
 #include "lacrima/renderer/adaptive_sampling.hpp"
+#include "lacrima/renderer/denoiser.hpp"
 #include "lacrima/renderer/pixel_sums.hpp"
 #include "integrator.hpp"
 #include "lacrima/geometry/error.hpp"
@@ -78,7 +79,11 @@ class TileRenderer {
         film_(film),
         cameraRays_(frame.camera, frame.settings.width, frame.settings.height),
         hasMotion_(frame.hasMotion()),
-        order_(frame.settings.adaptive.enabled ? SampleOrder::Progressive : SampleOrder::Shuffled) {}
+        order_(frame.settings.adaptive.enabled || frame.settings.denoise ? SampleOrder::Progressive
+                                                                          : SampleOrder::Shuffled) {}
+
+  // Where store() also writes each pixel's two half buffers (null: nowhere).
+  void keepHalvesIn(DenoiseInput* halves) { halves_ = halves; }
 
   // Every pixel of the tile with all its samples (no adaptive sampling).
   void renderTile(const TileRect& rect, PathCounters& counters, uint64_t& nonFinite) const {
@@ -134,6 +139,15 @@ class TileRenderer {
     for (int c = 0; c < 3; ++c) film_.normal[3 * p + c] = n[c];
     film_.depth[p] = sum.depthSamples > 0 ? sum.depth * invHits : std::numeric_limits<float>::infinity();
     if (!film_.sampleCount.empty()) film_.sampleCount[p] = float(sum.samples);
+    if (halves_) {
+      const PixelHalves h = pixelHalves(sum);
+      const Color variance = halfMeanVariance(sum);
+      for (int c = 0; c < 3; ++c) {
+        halves_->halfA[3 * p + c] = h.first[c];
+        halves_->halfB[3 * p + c] = h.rest[c];
+        halves_->variance[3 * p + c] = variance[c];
+      }
+    }
   }
 
  private:
@@ -143,8 +157,21 @@ class TileRenderer {
   Film& film_;
   CameraRays cameraRays_;
   bool hasMotion_;
-  SampleOrder order_;  // progressive under adaptive sampling: a pixel may stop after any round
+  // Progressive under adaptive sampling (a pixel may stop after any round) and when denoising
+  // (the half buffers are then stratified on their own).
+  SampleOrder order_;
+  DenoiseInput* halves_ = nullptr;
 };
+
+// The denoiser's input: the half buffers (already filled by the tiles) and the film's features.
+void denoiseFilm(DenoiseInput& input, Film& film) {
+  input.width = film.width;
+  input.height = film.height;
+  input.albedo = film.albedo;
+  input.normal = film.normal;
+  input.depth = film.depth;
+  film.denoised = denoise(input);
+}
 
 // Counts what the tiles did, reports progress as camera samples done over those still planned,
 // and polls the cancel flag.
@@ -285,7 +312,7 @@ Film Renderer::render(const Frame& frame, RenderStats* stats, const ProgressCall
   if (s.adaptive.enabled) film.sampleCount.assign(size_t(s.width) * s.height, 0.0f);
   TracingProgress tracing(start, progress, cancel);
   SceneUpdate sceneUpdate = SceneUpdate::Build;
-  double sceneUpdateSeconds = 0.0, tracingSeconds = 0.0;
+  double sceneUpdateSeconds = 0.0, tracingSeconds = 0.0, denoiseSeconds = 0.0;
   uint64_t cameraPaths = 0;
 
   arena.execute([&] {
@@ -296,10 +323,22 @@ Film Renderer::render(const Frame& frame, RenderStats* stats, const ProgressCall
     const LightSampler lights(frame);
     const PathIntegrator integrator(frame, scene, lights);
     const FilterSampler filter(s.filter);
-    const TileRenderer tiles(frame, integrator, filter, film);
+    TileRenderer tiles(frame, integrator, filter, film);
+    DenoiseInput halves;
+    if (s.denoise) {
+      halves.halfA.assign(size_t(s.width) * s.height * 3, 0.0f);
+      halves.halfB.assign(size_t(s.width) * s.height * 3, 0.0f);
+      halves.variance.assign(size_t(s.width) * s.height * 3, 0.0f);
+      tiles.keepHalvesIn(&halves);
+    }
     const auto tracingStart = std::chrono::steady_clock::now();
     cameraPaths = s.adaptive.enabled ? renderAdaptively(tiles, s, tracing) : renderAllSamples(tiles, s, tracing);
-    tracingSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - tracingStart).count();
+    const auto tracingEnd = std::chrono::steady_clock::now();
+    tracingSeconds = std::chrono::duration<double>(tracingEnd - tracingStart).count();
+    if (s.denoise && !tracing.cancelled()) {
+      denoiseFilm(halves, film);
+      denoiseSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - tracingEnd).count();
+    }
   });
   if (tracing.cancelled()) throw RenderCancelled();
 
@@ -311,6 +350,7 @@ Film Renderer::render(const Frame& frame, RenderStats* stats, const ProgressCall
     stats->nonFiniteSamples = tracing.nonFiniteSamples();
     stats->sceneUpdate = sceneUpdate;
     stats->sceneUpdateSeconds = sceneUpdateSeconds;
+    stats->denoiseSeconds = denoiseSeconds;
   }
   return film;
 }

@@ -281,7 +281,7 @@ class ShotReader {
     const size_t before = c_.errorCount();
     ObjectReader o(c_, v, "/render", {"width", "height", "spp", "maxDepth", "seed", "threads", "floatOutput",
                                            "transparentShadows", "caustics", "sampler", "filter", "bounces",
-                                           "adaptive"});
+                                           "adaptive", "denoise"});
     RenderSettings& s = shot_.render;
     if (auto x = o.integer("width", Range::closed(1, 16384), true)) s.width = int(*x);
     if (auto x = o.integer("height", Range::closed(1, 16384), true)) s.height = int(*x);
@@ -291,6 +291,7 @@ class ShotReader {
     if (auto x = o.integer("threads", Range::atLeast(0))) s.threads = int(*x);
     if (auto x = o.boolean("floatOutput")) s.floatOutput = *x;
     if (auto x = o.boolean("transparentShadows")) s.transparentShadows = *x;
+    if (auto x = o.boolean("denoise")) s.denoise = *x;
     readCaustics(o, s);
     readSampler(o, s);
     readFilter(o, s);

@@ -157,9 +157,15 @@ FrameOutcome renderOneFrame(Renderer& renderer, const RenderOptions& o, const Sh
     std::fprintf(stderr, "lacrima: frame %d rendered but NOT written: %s\n", frameNumber, e.what());
     return FrameOutcome::NotWritten;
   }
-  std::fprintf(stderr, "frame %d: %dx%d, %d spp, %s (scene %s %.3f s), %srays/s, %llu NaN/Inf samples discarded -> %s%s\n",
-               frameNumber, s.width, s.height, s.samplesPerPixel, formatDuration(stats.seconds).c_str(),
-               stats.sceneUpdate == SceneUpdate::Refit ? "refit" : "build", stats.sceneUpdateSeconds,
+  // Under adaptive sampling spp is each pixel's maximum: the mean says what the frame took.
+  const std::string spp = s.adaptive.enabled
+                              ? fmt::format("{} spp max, {:.1f} mean", s.samplesPerPixel,
+                                            double(stats.cameraPaths) / (double(s.width) * s.height))
+                              : fmt::format("{} spp", s.samplesPerPixel);
+  const std::string denoised = s.denoise ? fmt::format(", denoised in {:.1f} s", stats.denoiseSeconds) : "";
+  std::fprintf(stderr, "frame %d: %dx%d, %s, %s (scene %s %.3f s%s), %srays/s, %llu NaN/Inf samples discarded -> %s%s\n",
+               frameNumber, s.width, s.height, spp.c_str(), formatDuration(stats.seconds).c_str(),
+               stats.sceneUpdate == SceneUpdate::Refit ? "refit" : "build", stats.sceneUpdateSeconds, denoised.c_str(),
                formatRate(stats.rays / std::max(stats.seconds, 1e-9)).c_str(),
                (unsigned long long)stats.nonFiniteSamples, exrPath.string().c_str(), previewNote.c_str());
   return FrameOutcome::Written;

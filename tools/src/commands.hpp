@@ -22,6 +22,7 @@ struct RenderOptions {
   std::optional<std::string> frames;  // none: the shot's range
   std::optional<int> spp, width, height, threads, maxDepth;
   std::optional<uint64_t> seed;
+  std::optional<bool> denoise;  // --denoise / --no-denoise; none: the shot's render.denoise
   std::string outputPattern;  // empty: the shot's
   bool preview = false;
   bool floatOutput = false;

@@ -40,6 +40,7 @@ std::vector<std::string> renderArguments(const RenderOptions& r) {
   if (!r.outputPattern.empty()) args.insert(args.end(), {"--out", r.outputPattern});
   if (r.preview) args.push_back("--preview");
   if (r.floatOutput) args.push_back("--float");
+  if (r.denoise) args.push_back(*r.denoise ? "--denoise" : "--no-denoise");
   return args;
 }
 
@@ -112,6 +113,7 @@ json renderToJson(const RenderOptions& r) {
   j["output"] = r.outputPattern;
   j["preview"] = r.preview;
   j["float"] = r.floatOutput;
+  if (r.denoise) j["denoise"] = *r.denoise;
   return j;
 }
 
@@ -126,6 +128,7 @@ RenderOptions renderFromJson(const json& j, const fs::path& shot) {
   r.outputPattern = j.at("output").get<std::string>();
   r.preview = j.at("preview").get<bool>();
   r.floatOutput = j.at("float").get<bool>();
+  if (j.contains("denoise")) r.denoise = j["denoise"].get<bool>();
   return r;
 }
 

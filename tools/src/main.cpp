@@ -102,6 +102,12 @@ void addShotAndOverrides(CLI::App& command, RenderOptions& o) {
   command.add_option("--out,-o", o.outputPattern, "Output path pattern, #### = frame number (e.g. out/shot.####.exr)");
   command.add_flag("--preview", o.preview, "Also write an sRGB PNG preview (OCIO, ACES SDR view) next to each EXR");
   command.add_flag("--float", o.floatOutput, "Write the beauty as 32-bit float instead of half");
+  auto* denoise = command.add_flag_callback("--denoise", [&o] { o.denoise = true; },
+                                            "Denoise each frame: a denoised.R/G/B layer beside the raw beauty, shown "
+                                            "by the preview (needs spp >= 2)");
+  auto* noDenoise = command.add_flag_callback("--no-denoise", [&o] { o.denoise = false; },
+                                              "Do not denoise, whatever the shot's render.denoise says");
+  denoise->excludes(noDenoise);
 }
 
 void addRender(CLI::App& app, RenderOptions& o) {

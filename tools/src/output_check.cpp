@@ -16,7 +16,8 @@ namespace fs = std::filesystem;
 
 uint64_t estimatedFrameBytes(const RenderSettings& s, bool preview) {
   const uint64_t pixels = uint64_t(s.width) * uint64_t(s.height);
-  const uint64_t exr = pixels * 11 * (s.floatOutput ? 4 : 2) / 2;
+  const uint64_t channels = 11 + (s.adaptive.enabled ? 1 : 0) + (s.denoise ? 3 : 0);
+  const uint64_t exr = pixels * channels * (s.floatOutput ? 4 : 2) / 2;
   return exr + (preview ? pixels * 3 / 2 : 0);
 }
 

@@ -17,6 +17,7 @@ void applyOverrides(const RenderOptions& o, RenderSettings& s) {
   if (o.maxDepth) s.maxDepth = *o.maxDepth;
   if (o.seed) s.seed = *o.seed;
   if (o.floatOutput) s.floatOutput = true;
+  if (o.denoise) s.denoise = *o.denoise;
 }
 
 RenderSettings settingsFor(const RenderOptions& o, const Shot& shot, int frameNumber) {

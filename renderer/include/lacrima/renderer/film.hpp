@@ -15,6 +15,8 @@ struct Film {
   std::vector<float> depth;   // 1 per pixel, first-hit distance along the camera axis (inf = none)
   // 1 per pixel, the camera samples the pixel took: filled by adaptive sampling only (else empty).
   std::vector<float> sampleCount;
+  // 3 per pixel, the denoised beauty RGB (denoiser.hpp): filled when denoising (else empty).
+  std::vector<float> denoised;
 
   Film() = default;
   Film(int w, int h)
@@ -39,6 +41,7 @@ struct RenderStats {
   uint64_t cameraPaths = 0;   // camera samples taken, all pixels together
   uint64_t rays = 0;          // intersect + occluded queries
   uint64_t nonFiniteSamples = 0;  // NaN/Inf path contributions discarded (never on the film)
+  double denoiseSeconds = 0.0;    // the denoiser, after path tracing (part of seconds)
 };
 
 }  // namespace lacrima

@@ -117,6 +117,9 @@ struct RenderSettings {
   int height = 360;
   int samplesPerPixel = 16;  // the most a pixel takes (all of them without adaptive sampling)
   AdaptiveSampling adaptive;
+  // Denoise the frame after path tracing (denoiser.hpp): the film gets a denoised layer beside
+  // the raw beauty. Needs at least 2 samples per pixel (two half buffers).
+  bool denoise = false;
   int maxDepth = 12;       // path vertices after the camera ray
   BounceLimits bounces;    // per kind of scattering, within maxDepth
   uint64_t seed = 0;

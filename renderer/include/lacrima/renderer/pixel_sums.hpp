@@ -13,6 +13,7 @@ namespace lacrima {
 struct PixelSums {
   Color weightedRadiance = Color::Zero();  // sum of w L
   Color radiance = Color::Zero();          // sum of L
+  Color radianceSquared = Color::Zero();   // sum of L^2 (the sample variance, for the denoiser)
   Color prefixRadiance = Color::Zero();          // sum of L over the first 2^k samples, 2^k <= samples the largest
   Color previousPrefixRadiance = Color::Zero();  // the same over the first 2^(k-1)
   float weightedCoverage = 0.0f;           // sum of w * hit
@@ -28,11 +29,40 @@ struct PixelSums {
 // Adds one sample's radiance to the plain sums (the filter-weighted ones are the caller's).
 inline void addRadiance(PixelSums& sum, const Color& L) {
   sum.radiance += L;
+  sum.radianceSquared += L * L;
   ++sum.samples;
   if ((sum.samples & (sum.samples - 1)) == 0) {  // a power of two: a new prefix
     sum.previousPrefixRadiance = sum.prefixRadiance;
     sum.prefixRadiance = sum.radiance;
   }
+}
+
+// Two independent estimates of the pixel: the mean over its first p samples (p the largest power
+// of two below its count) and the mean over the others. Under the progressive sample order
+// (sampler.hpp) the first p are one aligned block of Sobol points and the others the start of the
+// next: both stratified. A pixel of one sample has one estimate, given twice.
+struct PixelHalves {
+  Color first = Color::Zero(), rest = Color::Zero();
+  int firstSamples = 0;  // p
+};
+
+inline PixelHalves pixelHalves(const PixelSums& sum) {
+  const int n = sum.samples;
+  if (n < 2) return {sum.radiance, sum.radiance, n};
+  int prefix = 1;
+  while (prefix * 2 < n) prefix *= 2;
+  const Color& prefixSum = prefix * 2 == n ? sum.previousPrefixRadiance : sum.prefixRadiance;
+  return {prefixSum / float(prefix), (sum.radiance - prefixSum) / float(n - prefix), prefix};
+}
+
+// The variance of the mean of half the pixel's samples, per channel: the samples' variance over
+// n / 2 (0 under 2 samples, where there is nothing to estimate it from).
+inline Color halfMeanVariance(const PixelSums& sum) {
+  const int n = sum.samples;
+  if (n < 2) return Color::Zero();
+  const Color mean = sum.radiance / float(n);
+  const Color sampleVariance = ((sum.radianceSquared - float(n) * mean * mean) / float(n - 1)).max(0.0f);
+  return sampleVariance / (0.5f * float(n));
 }
 
 struct PixelValue {

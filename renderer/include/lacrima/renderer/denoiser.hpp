@@ -1,0 +1,53 @@
+#pragma once
+// A feature-guided denoiser for path-traced frames: first-order regression on the first-hit
+// features, weighted by non-local means on the colour, cross-filtered between two independent
+// half buffers. After Bitterli, Rousselle, Moon, Iglesias-Guitian, Adler, Mitchell, Jarosz &
+// Novak 2016, "Nonlinearly Weighted First-order Regression for Denoising Monte Carlo
+// Renderings" (NFOR), sec. 4-5, with the non-local means weights of Rousselle, Knaus & Zwicker
+// 2012, "Adaptive rendering with non-local means filtering", eq. 3-4 (after Buades, Coll & Morel
+// 2005). What lacrima's version leaves out of NFOR: the feature prefiltering and the selection
+// among several bandwidths (one bandwidth, docs/denoising.md says why).
+//
+// For each pixel p and each neighbour q in a (2r+1)^2 window, a weight from the patch distance
+// between p and q in the guide buffer, normalised by the colour variance (so noise alone gives a
+// distance near 0 and a weight near 1, and a real difference of a few standard deviations a
+// weight near 0); then the colour of the filtered buffer over the window is fitted, by weighted
+// least squares, as a linear function of the features' differences from p's (albedo, shading
+// normal, inverse depth), and the fit at p is the output. A texture edge or a silhouette that
+// the features show is kept by the regression even where the colour is too noisy to show it; a
+// highlight, a refraction or a shadow that the features do not show is kept by the weights.
+// Half A is filtered with weights from half B and B with weights from A (the weights' noise is
+// then independent of the values they average, which removes most of the bias of a self-guided
+// filter), and the output is their mean. Each fitted value is kept within the range of the
+// values that carry weight in its window: a regression may extrapolate where a bright outlier
+// (a catchlight, a firefly) sits at the window's edge with a large feature difference, and would
+// draw a dark ring around it.
+#include <vector>
+
+namespace lacrima {
+
+struct DenoiseInput {
+  int width = 0, height = 0;
+  // Two independent estimates of each pixel's colour (RGB, 3 floats a pixel), e.g. the means of
+  // the first and second halves of its samples.
+  std::vector<float> halfA, halfB;
+  // The variance of one half's estimate (3 a pixel) from the samples, their variance over half
+  // their count: optional, it bounds the estimate from the halves' difference (denoiser.cpp).
+  std::vector<float> variance;
+  std::vector<float> albedo;  // 3 a pixel
+  std::vector<float> normal;  // 3 a pixel (zero where nothing was hit)
+  std::vector<float> depth;   // 1 a pixel (infinite where nothing was hit)
+};
+
+struct DenoiseSettings {
+  int windowRadius = 8;  // neighbours within this many pixels (a 17 x 17 window)
+  int patchRadius = 3;   // 7 x 7 patches for the colour distance
+  // Non-local means' bandwidth k (Rousselle et al. 2012): distances are in units of k^2 times
+  // the variance; smaller keeps more detail and removes less noise.
+  float bandwidth = 0.45f;
+};
+
+// The denoised colour, 3 floats a pixel. Throws std::invalid_argument for inconsistent sizes.
+std::vector<float> denoise(const DenoiseInput& input, const DenoiseSettings& settings = {});
+
+}  // namespace lacrima

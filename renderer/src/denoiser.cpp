@@ -1,0 +1,242 @@
+// The denoiser (denoiser.hpp): non-local means weights from one half buffer, a first-order
+// regression of the other half on the features, in bands of rows processed in parallel (each band
+// on its own, so the output does not depend on the thread count).
+#include "lacrima/renderer/denoiser.hpp"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace lacrima {
+
+namespace {
+
+constexpr int kFeatures = 7;                 // albedo (3), normal (3), inverse depth (1)
+constexpr int kUnknowns = 1 + kFeatures;     // the value at p and one slope per feature
+constexpr int kBandRows = 16;                // rows of one parallel band
+constexpr float kDistanceEpsilon = 1e-10f;   // against 0 / 0 where the variance is 0
+constexpr double kRidge = 1e-3;              // relative to the sum of weights, on the slopes only
+
+struct Image {
+  int width, height;
+  size_t index(int x, int y) const { return size_t(y) * size_t(width) + size_t(x); }
+};
+
+// Mean over the (2r+1)^2 box around each pixel, over the pixels inside the plane (`rows` rows of
+// `width` pixels, `channels` interleaved values a pixel), by running sums in x then y.
+std::vector<float> boxMean(const std::vector<float>& values, int width, int rows, int channels, int r) {
+  std::vector<float> horizontal(values.size()), out(values.size());
+  for (int y = 0; y < rows; ++y)
+    for (int c = 0; c < channels; ++c) {
+      double sum = 0.0;
+      int count = 0;
+      for (int x = 0; x <= std::min(r, width - 1); ++x, ++count) sum += values[(size_t(y) * width + x) * channels + c];
+      for (int x = 0; x < width; ++x) {
+        horizontal[(size_t(y) * width + x) * channels + c] = float(sum / count);
+        const int add = x + r + 1, drop = x - r;
+        if (add < width) sum += values[(size_t(y) * width + add) * channels + c], ++count;
+        if (drop >= 0) sum -= values[(size_t(y) * width + drop) * channels + c], --count;
+      }
+    }
+  for (int x = 0; x < width; ++x)
+    for (int c = 0; c < channels; ++c) {
+      double sum = 0.0;
+      int count = 0;
+      for (int y = 0; y <= std::min(r, rows - 1); ++y, ++count) sum += horizontal[(size_t(y) * width + x) * channels + c];
+      for (int y = 0; y < rows; ++y) {
+        out[(size_t(y) * width + x) * channels + c] = float(sum / count);
+        const int add = y + r + 1, drop = y - r;
+        if (add < rows) sum += horizontal[(size_t(add) * width + x) * channels + c], ++count;
+        if (drop >= 0) sum -= horizontal[(size_t(drop) * width + x) * channels + c], --count;
+      }
+    }
+  return out;
+}
+
+// The variance of one half buffer's estimate, per channel. Two independent estimates a and b of
+// the same mean have sample variance (a - b)^2 / 2: one degree of freedom, so averaged over a 5 x 5
+// box. Under stratified sampling it is the right measure (each half is stratified), where the
+// samples' own variance over their count overestimates the error many times and would let the
+// filter blur what it takes for noise. The box spreads a catchlight's or a firefly's large
+// difference onto its neighbours, though, which would then average the catchlight in: where the
+// samples' variance (given per pixel) is lower, it is taken instead.
+std::vector<float> halfBufferVariance(const DenoiseInput& in) {
+  std::vector<float> variance(in.halfA.size());
+  for (size_t i = 0; i < variance.size(); ++i) {
+    const float d = in.halfA[i] - in.halfB[i];
+    variance[i] = 0.5f * d * d;
+  }
+  variance = boxMean(variance, in.width, in.height, 3, 2);
+  if (!in.variance.empty())
+    for (size_t i = 0; i < variance.size(); ++i) variance[i] = std::min(variance[i], in.variance[i]);
+  return variance;
+}
+
+// The regression's features a pixel: albedo, normal, and inverse depth over its mean (0 where
+// nothing was hit, so the background is far from every surface).
+std::vector<float> regressionFeatures(const DenoiseInput& in) {
+  const size_t n = size_t(in.width) * in.height;
+  double inverseDepthSum = 0.0;
+  size_t hits = 0;
+  for (float z : in.depth)
+    if (std::isfinite(z) && z > 0.0f) inverseDepthSum += 1.0 / z, ++hits;
+  const double scale = hits > 0 ? double(hits) / inverseDepthSum : 1.0;
+  std::vector<float> features(n * kFeatures);
+  for (size_t p = 0; p < n; ++p) {
+    float* f = &features[p * kFeatures];
+    for (int c = 0; c < 3; ++c) f[c] = in.albedo[3 * p + c], f[3 + c] = in.normal[3 * p + c];
+    const float z = in.depth[p];
+    f[6] = std::isfinite(z) && z > 0.0f ? float(scale / z) : 0.0f;
+  }
+  return features;
+}
+
+// Weighted least squares sums of one pixel: X^T W X (upper triangle) and X^T W y.
+struct NormalEquations {
+  double xtx[kUnknowns * (kUnknowns + 1) / 2] = {};
+  double xty[kUnknowns][3] = {};
+  // The range of the values of weight at least kRangeWeight, per channel.
+  float low[3] = {std::numeric_limits<float>::max(), std::numeric_limits<float>::max(),
+                  std::numeric_limits<float>::max()};
+  float high[3] = {std::numeric_limits<float>::lowest(), std::numeric_limits<float>::lowest(),
+                   std::numeric_limits<float>::lowest()};
+};
+
+constexpr float kRangeWeight = 0.05f;
+
+class HalfFilter {
+ public:
+  HalfFilter(const DenoiseInput& in, const std::vector<float>& values, const std::vector<float>& guide,
+             const std::vector<float>& variance, const std::vector<float>& features, const DenoiseSettings& s)
+      : in_(in), values_(values), guide_(guide), variance_(variance), features_(features), s_(s) {}
+
+  // The filtered rows [y0, y1) into out (3 floats a pixel, whole image).
+  void filterBand(int y0, int y1, std::vector<float>& out) const {
+    const int w = in_.width, r = s_.windowRadius, f = s_.patchRadius;
+    const int top = std::max(0, y0 - f), bottom = std::min(in_.height, y1 + f);  // rows with patch halo
+    std::vector<NormalEquations> sums(size_t(y1 - y0) * w);
+    std::vector<float> term(size_t(bottom - top) * w);
+    for (int dy = -r; dy <= r; ++dy)
+      for (int dx = -r; dx <= r; ++dx) {
+        distanceTerms(top, bottom, dx, dy, term);
+        const std::vector<float> distance = boxMean(term, w, bottom - top, 1, f);
+        for (int y = y0; y < y1; ++y)
+          for (int x = 0; x < w; ++x) {
+            const int qx = x + dx, qy = y + dy;
+            if (qx < 0 || qy < 0 || qx >= w || qy >= in_.height) continue;
+            const float weight = std::exp(-std::max(0.0f, distance[size_t(y - top) * w + x]));
+            if (weight < 1e-6f) continue;
+            accumulate(sums[size_t(y - y0) * w + x], x, y, qx, qy, weight);
+          }
+      }
+    for (int y = y0; y < y1; ++y)
+      for (int x = 0; x < w; ++x) solve(sums[size_t(y - y0) * w + x], &out[3 * (size_t(y) * w + x)]);
+  }
+
+ private:
+  // Rousselle et al. 2012, eq. 3: the squared difference of the guide at p and q = p + (dx, dy),
+  // less the variance it is expected to have from noise alone, over k^2 times that variance;
+  // averaged over the channels. Pairs whose q is outside the image get 0 (they are not used).
+  void distanceTerms(int top, int bottom, int dx, int dy, std::vector<float>& term) const {
+    const int w = in_.width;
+    const float k2 = s_.bandwidth * s_.bandwidth;
+    for (int y = top; y < bottom; ++y)
+      for (int x = 0; x < w; ++x) {
+        const int qx = x + dx, qy = y + dy;
+        float sum = 0.0f;
+        if (qx >= 0 && qy >= 0 && qx < w && qy < in_.height) {
+          const size_t p = 3 * (size_t(y) * w + x), q = 3 * (size_t(qy) * w + qx);
+          for (int c = 0; c < 3; ++c) {
+            const float vp = variance_[p + c], vq = variance_[q + c];
+            const float d = guide_[p + c] - guide_[q + c];
+            sum += (d * d - (vp + std::min(vp, vq))) / (kDistanceEpsilon + k2 * (vp + vq));
+          }
+        }
+        term[size_t(y - top) * w + x] = sum / 3.0f;
+      }
+  }
+
+  void accumulate(NormalEquations& e, int x, int y, int qx, int qy, float weight) const {
+    double row[kUnknowns];
+    row[0] = 1.0;
+    const float* fp = &features_[(size_t(y) * in_.width + x) * kFeatures];
+    const float* fq = &features_[(size_t(qy) * in_.width + qx) * kFeatures];
+    for (int i = 0; i < kFeatures; ++i) row[1 + i] = double(fq[i] - fp[i]);
+    const float* value = &values_[3 * (size_t(qy) * in_.width + qx)];
+    if (weight >= kRangeWeight)
+      for (int c = 0; c < 3; ++c) e.low[c] = std::min(e.low[c], value[c]), e.high[c] = std::max(e.high[c], value[c]);
+    int k = 0;
+    for (int i = 0; i < kUnknowns; ++i) {
+      const double wi = weight * row[i];
+      for (int j = i; j < kUnknowns; ++j) e.xtx[k++] += wi * row[j];
+      for (int c = 0; c < 3; ++c) e.xty[i][c] += wi * double(value[c]);
+    }
+  }
+
+  // The fitted value at p (the constant term). A small ridge on the slopes keeps the system
+  // solvable where a feature does not vary in the window (flat albedo, one normal); should it
+  // still fail, the weighted mean.
+  static void solve(const NormalEquations& e, float* out) {
+    Eigen::Matrix<double, kUnknowns, kUnknowns> a;
+    int k = 0;
+    for (int i = 0; i < kUnknowns; ++i)
+      for (int j = i; j < kUnknowns; ++j) a(i, j) = a(j, i) = e.xtx[k++];
+    const double weightSum = a(0, 0);
+    for (int i = 1; i < kUnknowns; ++i) a(i, i) += kRidge * weightSum;
+    Eigen::Matrix<double, kUnknowns, 3> b;
+    for (int i = 0; i < kUnknowns; ++i)
+      for (int c = 0; c < 3; ++c) b(i, c) = e.xty[i][c];
+    const Eigen::LDLT<Eigen::Matrix<double, kUnknowns, kUnknowns>> ldlt(a);
+    const Eigen::Matrix<double, kUnknowns, 3> beta = ldlt.solve(b);
+    for (int c = 0; c < 3; ++c) {
+      const bool ok = ldlt.info() == Eigen::Success && std::isfinite(beta(0, c));
+      const float fitted = float(ok ? beta(0, c) : (weightSum > 0.0 ? e.xty[0][c] / weightSum : 0.0));
+      out[c] = e.low[c] <= e.high[c] ? std::clamp(fitted, e.low[c], e.high[c]) : fitted;
+    }
+  }
+
+  const DenoiseInput& in_;
+  const std::vector<float>& values_;
+  const std::vector<float>& guide_;
+  const std::vector<float>& variance_;
+  const std::vector<float>& features_;
+  const DenoiseSettings& s_;
+};
+
+void checkInput(const DenoiseInput& in) {
+  const size_t n = size_t(std::max(in.width, 0)) * size_t(std::max(in.height, 0));
+  if (in.width < 1 || in.height < 1 || in.halfA.size() != 3 * n || in.halfB.size() != 3 * n ||
+      !(in.variance.empty() || in.variance.size() == 3 * n) ||
+      in.albedo.size() != 3 * n || in.normal.size() != 3 * n || in.depth.size() != n)
+    throw std::invalid_argument("denoise: the half buffers and features do not match the image size");
+}
+
+}  // namespace
+
+std::vector<float> denoise(const DenoiseInput& in, const DenoiseSettings& settings) {
+  checkInput(in);
+  const std::vector<float> variance = halfBufferVariance(in);
+  const std::vector<float> features = regressionFeatures(in);
+  // A with B's weights, B with A's; the same variance serves both (it is symmetric in a and b).
+  const HalfFilter filterA(in, in.halfA, in.halfB, variance, features, settings);
+  const HalfFilter filterB(in, in.halfB, in.halfA, variance, features, settings);
+  std::vector<float> a(in.halfA.size()), b(in.halfB.size());
+  const int bands = (in.height + kBandRows - 1) / kBandRows;
+  tbb::parallel_for(tbb::blocked_range<int>(0, 2 * bands, 1), [&](const tbb::blocked_range<int>& range) {
+    for (int i = range.begin(); i != range.end(); ++i) {
+      const int band = i % bands;
+      const int y0 = band * kBandRows, y1 = std::min(in.height, y0 + kBandRows);
+      if (i < bands) filterA.filterBand(y0, y1, a);
+      else filterB.filterBand(y0, y1, b);
+    }
+  });
+  for (size_t i = 0; i < a.size(); ++i) a[i] = 0.5f * (a[i] + b[i]);
+  return a;
+}
+
+}  // namespace lacrima
