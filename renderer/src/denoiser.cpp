@@ -119,6 +119,7 @@ class HalfFilter {
   void filterBand(int y0, int y1, std::vector<float>& out) const {
     const int w = in_.width, r = s_.windowRadius, f = s_.patchRadius;
     const int top = std::max(0, y0 - f), bottom = std::min(in_.height, y1 + f);  // rows with patch halo
+    const float k2 = s_.bandwidth * s_.bandwidth;
     std::vector<NormalEquations> sums(size_t(y1 - y0) * w);
     std::vector<float> term(size_t(bottom - top) * w);
     for (int dy = -r; dy <= r; ++dy)
@@ -129,9 +130,8 @@ class HalfFilter {
           for (int x = 0; x < w; ++x) {
             const int qx = x + dx, qy = y + dy;
             if (qx < 0 || qy < 0 || qx >= w || qy >= in_.height) continue;
-            const float weight = std::exp(-std::max(0.0f, distance[size_t(y - top) * w + x]));
-            if (weight < 1e-6f) continue;
-            accumulate(sums[size_t(y - y0) * w + x], x, y, qx, qy, weight);
+            const float weight = std::exp(-std::max(0.0f, distance[size_t(y - top) * w + x]) / k2);
+            if (weight >= 1e-6f) accumulate(sums[size_t(y - y0) * w + x], x, y, qx, qy, weight);
           }
       }
     for (int y = y0; y < y1; ++y)
@@ -140,11 +140,11 @@ class HalfFilter {
 
  private:
   // Rousselle et al. 2012, eq. 3: the squared difference of the guide at p and q = p + (dx, dy),
-  // less the variance it is expected to have from noise alone, over k^2 times that variance;
-  // averaged over the channels. Pairs whose q is outside the image get 0 (they are not used).
+  // less the variance it is expected to have from noise alone, over that variance (k^2 times it:
+  // the caller divides by k^2); averaged over the channels. Pairs whose q is outside the image get 0
+  // (they are not used).
   void distanceTerms(int top, int bottom, int dx, int dy, std::vector<float>& term) const {
     const int w = in_.width;
-    const float k2 = s_.bandwidth * s_.bandwidth;
     for (int y = top; y < bottom; ++y)
       for (int x = 0; x < w; ++x) {
         const int qx = x + dx, qy = y + dy;
@@ -154,7 +154,7 @@ class HalfFilter {
           for (int c = 0; c < 3; ++c) {
             const float vp = variance_[p + c], vq = variance_[q + c];
             const float d = guide_[p + c] - guide_[q + c];
-            sum += (d * d - (vp + std::min(vp, vq))) / (kDistanceEpsilon + k2 * (vp + vq));
+            sum += (d * d - (vp + std::min(vp, vq))) / (kDistanceEpsilon + vp + vq);
           }
         }
         term[size_t(y - top) * w + x] = sum / 3.0f;
