@@ -16,6 +16,7 @@
 #include "lacrima/scenes/shot.hpp"
 #include "support/run_command.hpp"
 #include "support/test_directory.hpp"
+#include "tools/lacrima_cli_support.hpp"
 
 namespace lacrima {
 namespace {
@@ -550,6 +551,33 @@ TEST(CliRender, OverridesReachTheExr) {
   // The defaults of what the shot leaves out: how its samples were drawn and filtered.
   EXPECT_EQ(attributeLine(info.output, "lacrima:sampler"), "  lacrima:sampler = sobol");
   EXPECT_EQ(attributeLine(info.output, "lacrima:filter"), "  lacrima:filter = blackman-harris 1.5 px");
+}
+
+// --denoise adds the denoised layer (and says how long it took); --no-denoise overrides a shot
+// that asks for it; the shot's adaptive sampling adds the samples channel and the mean spp.
+TEST(CliRender, DenoiseAndAdaptiveSamplingReachTheExr) {
+  const fs::path dir = freshDir();
+  const std::string out = (dir / "s.####.exr").string();
+  const fs::path shot = test::writeSphereShot(dir, 1, R"(, "adaptive": {"threshold": 0.05, "minSpp": 2}, "denoise": true)");
+  const auto on = lacrima({"render", shot.string(), "--spp", "4", "--out", out});
+  ASSERT_EQ(on.exitStatus, 0) << on.output;
+  EXPECT_NE(on.output.find("frame 1: 32x18, 4 spp max, "), std::string::npos) << on.output;
+  EXPECT_NE(on.output.find(", denoised in "), std::string::npos) << on.output;
+  const std::string exr = (dir / "s.0001.exr").string();
+  auto info = lacrima({"info", exr});
+  EXPECT_NE(info.output.find("15 channels"), std::string::npos) << info.output;
+  EXPECT_NE(info.output.find("samples(float)"), std::string::npos) << info.output;
+  EXPECT_NE(info.output.find("denoised.R(half) denoised.G(half) denoised.B(half)"), std::string::npos) << info.output;
+  EXPECT_EQ(attributeLine(info.output, "lacrima:denoise"), "  lacrima:denoise = on");
+  EXPECT_EQ(attributeLine(info.output, "lacrima:adaptive"), "  lacrima:adaptive = threshold 0.05 min 2 spp");
+
+  const auto off = lacrima({"render", shot.string(), "--spp", "4", "--out", out, "--no-denoise", "--quiet"});
+  ASSERT_EQ(off.exitStatus, 0) << off.output;
+  info = lacrima({"info", exr});
+  EXPECT_NE(info.output.find("12 channels"), std::string::npos) << info.output;
+  EXPECT_EQ(attributeLine(info.output, "lacrima:denoise"), "  lacrima:denoise = off");
+  const auto both = lacrima({"render", shot.string(), "--denoise", "--no-denoise", "--out", out});
+  EXPECT_EQ(both.exitStatus, 2) << both.output;
 }
 
 TEST(CliRender, WarningsComeBeforeRenderingAndFrameStepsAreHonoured) {
