@@ -22,39 +22,31 @@ constexpr int kBandRows = 16;                // rows of one parallel band
 constexpr float kDistanceEpsilon = 1e-10f;   // against 0 / 0 where the variance is 0
 constexpr double kRidge = 1e-3;              // relative to the sum of weights, on the slopes only
 
-struct Image {
-  int width, height;
-  size_t index(int x, int y) const { return size_t(y) * size_t(width) + size_t(x); }
-};
+// Mean over the 2r+1 values around each of n values `stride` apart (over those inside), by a
+// running sum.
+void runningMean(const float* in, float* out, int n, size_t stride, int r) {
+  double sum = 0.0;
+  int count = 0;
+  for (int i = 0; i <= std::min(r, n - 1); ++i, ++count) sum += in[size_t(i) * stride];
+  for (int i = 0; i < n; ++i) {
+    out[size_t(i) * stride] = float(sum / count);
+    const int add = i + r + 1, drop = i - r;
+    if (add < n) sum += in[size_t(add) * stride], ++count;
+    if (drop >= 0) sum -= in[size_t(drop) * stride], --count;
+  }
+}
 
 // Mean over the (2r+1)^2 box around each pixel, over the pixels inside the plane (`rows` rows of
-// `width` pixels, `channels` interleaved values a pixel), by running sums in x then y.
+// `width` pixels, `channels` interleaved values a pixel): running means along x, then along y.
 std::vector<float> boxMean(const std::vector<float>& values, int width, int rows, int channels, int r) {
   std::vector<float> horizontal(values.size()), out(values.size());
+  const size_t rowStride = size_t(width) * channels;
   for (int y = 0; y < rows; ++y)
-    for (int c = 0; c < channels; ++c) {
-      double sum = 0.0;
-      int count = 0;
-      for (int x = 0; x <= std::min(r, width - 1); ++x, ++count) sum += values[(size_t(y) * width + x) * channels + c];
-      for (int x = 0; x < width; ++x) {
-        horizontal[(size_t(y) * width + x) * channels + c] = float(sum / count);
-        const int add = x + r + 1, drop = x - r;
-        if (add < width) sum += values[(size_t(y) * width + add) * channels + c], ++count;
-        if (drop >= 0) sum -= values[(size_t(y) * width + drop) * channels + c], --count;
-      }
-    }
+    for (int c = 0; c < channels; ++c)
+      runningMean(&values[y * rowStride + c], &horizontal[y * rowStride + c], width, channels, r);
   for (int x = 0; x < width; ++x)
-    for (int c = 0; c < channels; ++c) {
-      double sum = 0.0;
-      int count = 0;
-      for (int y = 0; y <= std::min(r, rows - 1); ++y, ++count) sum += horizontal[(size_t(y) * width + x) * channels + c];
-      for (int y = 0; y < rows; ++y) {
-        out[(size_t(y) * width + x) * channels + c] = float(sum / count);
-        const int add = y + r + 1, drop = y - r;
-        if (add < rows) sum += horizontal[(size_t(add) * width + x) * channels + c], ++count;
-        if (drop >= 0) sum -= horizontal[(size_t(drop) * width + x) * channels + c], --count;
-      }
-    }
+    for (int c = 0; c < channels; ++c)
+      runningMean(&horizontal[size_t(x) * channels + c], &out[size_t(x) * channels + c], rows, rowStride, r);
   return out;
 }
 

@@ -119,7 +119,9 @@ TEST(AdaptiveSampling, ExactRegionsStopAtTheMinimumAndTheBlurredEdgeTakesMore) {
           const float v = film.rgba[4 * (size_t(ny) * 24 + nx)];
           nearEdge |= v != 0.0f && v != 1.0f;
         }
-      if (!nearEdge) EXPECT_EQ(n, 16.0f) << "pixel " << x << ", " << y;
+      if (!nearEdge) {
+        EXPECT_EQ(n, 16.0f) << "pixel " << x << ", " << y;
+      }
     }
   }
   EXPECT_GT(atMinimum, 24 * 24 / 3);

@@ -130,17 +130,7 @@ TEST(Denoiser, InconsistentSizesAreRefused) {
 // the raw beauty at 64 spp (the stratified sampler's error falls about as spp^-0.75 here):
 // docs/denoising.md has what is missing.
 Frame softShadowScene(int spp, uint64_t seed, bool denoise) {
-  Frame frame;
-  frame.materials.push_back(Material{"grey", DiffuseParams{Color::Constant(0.5f)}, Color::Zero()});
-  frame.meshes.push_back(test::largeFloor(0));
-  frame.spheres.push_back(Sphere{Vec3(0, 0.7f, 0), 0.3f, 0});
-  AreaLight light;
-  light.center = Vec3(0, 2, 0);
-  light.edgeU = Vec3(1, 0, 0);
-  light.edgeV = Vec3(0, 0, 1);
-  light.radiance = Color::Constant(4.0f);
-  frame.lights.push_back(light);
-  frame.camera = test::lookAt(Vec3(0.6f, 1.6f, 1.2f), Vec3(0.3f, 0, 0.2f), 40.0f);
+  Frame frame = test::softShadowFrame(40.0f);
   frame.settings = test::smallSettings(32, spp, 2);
   frame.settings.seed = seed;
   frame.settings.denoise = denoise;

@@ -21,17 +21,7 @@ using test::lookAt;
 // the ball's penumbra. Every pixel integrates over its area, the light and (for the light's
 // BSDF-sampled hits) the hemisphere.
 Frame softShadowScene() {
-  Frame frame;
-  frame.materials.push_back(Material{"grey", DiffuseParams{Color::Constant(0.5f)}, Color::Zero()});
-  frame.meshes.push_back(test::largeFloor(0));
-  frame.spheres.push_back(Sphere{Vec3(0, 0.7f, 0), 0.3f, 0});
-  AreaLight light;
-  light.center = Vec3(0, 2, 0);
-  light.edgeU = Vec3(1, 0, 0);
-  light.edgeV = Vec3(0, 0, 1);  // emits downwards
-  light.radiance = Color::Constant(4.0f);
-  frame.lights.push_back(light);
-  frame.camera = lookAt(Vec3(0.6f, 1.6f, 1.2f), Vec3(0.3f, 0, 0.2f), 30.0f);
+  Frame frame = test::softShadowFrame(30.0f);
   frame.settings = test::smallSettings(12, 1, 1);
   return frame;
 }

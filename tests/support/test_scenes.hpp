@@ -44,6 +44,23 @@ inline MeshInstance largeFloor(uint32_t materialId) {
   return floor;
 }
 
+// A grey diffuse ball on a grey floor under a 1 m square light 2 m up; the camera (vertical field
+// of view `fovDegrees`) looks down at the ball's penumbra. Settings are the caller's.
+inline Frame softShadowFrame(float fovDegrees) {
+  Frame frame;
+  frame.materials.push_back(Material{"grey", DiffuseParams{Color::Constant(0.5f)}, Color::Zero()});
+  frame.meshes.push_back(largeFloor(0));
+  frame.spheres.push_back(Sphere{Vec3(0, 0.7f, 0), 0.3f, 0});
+  AreaLight light;
+  light.center = Vec3(0, 2, 0);
+  light.edgeU = Vec3(1, 0, 0);
+  light.edgeV = Vec3(0, 0, 1);  // emits downwards
+  light.radiance = Color::Constant(4.0f);
+  frame.lights.push_back(light);
+  frame.camera = lookAt(Vec3(0.6f, 1.6f, 1.2f), Vec3(0.3f, 0, 0.2f), fovDegrees);
+  return frame;
+}
+
 // |mean - exact| < 5 standard errors + floor, for R, G and B: a biased estimator fails, noise does not.
 inline void expectMean(const Film& film, double exact, double floor) {
   for (int c = 0; c < 3; ++c) {
