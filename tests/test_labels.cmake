@@ -11,7 +11,7 @@
 set(_cluster "^FarmCluster\\.")
 set(_slow "^(DefaultShotStory|FarmCluster|RenderMemory)\\.|^LiquidTearCourse\\.OnTheDefaultShot|^SequenceInterrupt\\.Killed")
 set(_statistical
-    "^(AllBsdfs/BsdfChi2|BsdfEnergy|VndfChi2|Chi2SelfTest|Chi2Family|SubsurfaceAlbedo|AnalyticScenes|BounceLimits|Caustics|SamplerConvergence|WaterAnalytic)\\.")
+    "^(AllBsdfs/BsdfChi2|BsdfEnergy|VndfChi2|Chi2SelfTest|Chi2Family|SubsurfaceAlbedo|DiffusionProfile|SubsurfaceDiffusion|AnalyticScenes|BounceLimits|Caustics|SamplerConvergence|WaterAnalytic)\\.")
 set(_render_in_tools "^(Shots/ImageRegression|TestSuiteCli|CliRender|BenchQuality)\\.")
 
 foreach(_executable geometry materials renderer scenes tools fuzz)

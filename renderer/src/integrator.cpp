@@ -11,6 +11,7 @@
 #include "lacrima/materials/wet_skin.hpp"
 #include "ray_offset.hpp"
 #include "sample_dimensions.hpp"
+#include "subsurface_probe.hpp"
 #include "subsurface_walk.hpp"
 
 namespace lacrima {
@@ -384,12 +385,11 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
     if (subsurface_[hit.materialId]) {  // skin with subsurface: v.bsdf's lobes or a random walk
       const float dryFraction = 1.0f - (wetSkin ? wetSkin->coverage() : 0.0f);
       const SubsurfaceSkin& skin = *subsurface_[hit.materialId];
-      // A textured skin walks in the medium of its textured albedo and mean free path.
-      const SubsurfaceMedium medium =
-          textured.skin ? subsurfaceMedium(*textured.skin, *textured.skin->subsurface) : skin.medium;
+      // A textured skin scatters below with its textured albedo and mean free path.
+      const SkinParams& beneath = textured.skin ? *textured.skin : skin.params;
       const SkinBsdf& surface = textured.skin ? std::get<SkinBsdf>(textured.bsdf) : *skin.bsdf;
       sampler.setDimension(dimensions + sample_dimensions::kSubsurfaceChoice);
-      const Below below = scatterBelowSurface(skin, medium, surface, v, dryFraction, throughput, sampler, counters);
+      const Below below = scatterBelowSurface(skin, beneath, surface, v, dryFraction, throughput, sampler, counters);
       if (below == Below::Absorbed) break;
       if (below == Below::Exited) {
         hit.position = v.position;  // the path goes on from the exit point
@@ -445,25 +445,25 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
 std::optional<PathIntegrator::SubsurfaceSkin> PathIntegrator::makeSubsurfaceSkin(const MaterialParams& params) {
   const auto* skin = std::get_if<SkinParams>(&params);
   if (!skin || !skin->subsurface) return std::nullopt;
-  return SubsurfaceSkin{subsurfaceMedium(*skin, *skin->subsurface), std::make_shared<SkinBsdf>(*skin),
+  return SubsurfaceSkin{*skin, std::make_shared<SkinBsdf>(*skin),
                         std::make_shared<SubsurfaceExitBsdf>(skin->ior), skin->ior};
 }
 
-PathIntegrator::Below PathIntegrator::scatterBelowSurface(const SubsurfaceSkin& skin, const SubsurfaceMedium& medium,
+PathIntegrator::Below PathIntegrator::scatterBelowSurface(const SubsurfaceSkin& skin, const SkinParams& below,
                                                           const SkinBsdf& surface, Vertex& v, float dryFraction,
                                                           Color& throughput, PixelSampler& sampler,
                                                           PathCounters& counters) const {
   const float pSurface = 1.0f - dryFraction * (1.0f - surface.specularProbability(v.woLocal));
-  if (sampler.get1D() < pSurface) {
+  const float uChoice = sampler.get1D();
+  if (uChoice < pSurface) {
     throughput /= pSurface;
     return Below::Surface;
   }
   // Entry pays the Fresnel transmission of the base it replaces (skin.hpp, subsurface.hpp).
   const float entry = 1.0f - fresnelDielectric(v.woLocal.z(), skin.ior);
-  // The walk draws as many numbers as it takes steps: an independent stream of its own.
-  PixelSampler walk = sampler.independentStream(sampler.dimension());
-  const auto exit = walkBelowSurface(scene_, medium, dielectricIndex_, v.position, v.geometricNormal, v.time,
-                                     walk, counters.rays);
+  // The choice's number, uniform again on [0, 1) past pSurface: stratified for the probe's radius.
+  const float uRadius = std::min((uChoice - pSurface) / (1.0f - pSurface), 0.99999994f);
+  const auto exit = findSubsurfaceExit(below, v, uRadius, sampler, counters);
   if (!exit) return Below::Absorbed;
   throughput *= exit->weight * (dryFraction * entry / (1.0f - pSurface));
   v.position = exit->position;
@@ -474,6 +474,21 @@ PathIntegrator::Below PathIntegrator::scatterBelowSurface(const SubsurfaceSkin& 
   v.bsdf = skin.exitBsdf.get();
   v.entering = true;
   return Below::Exited;
+}
+
+std::optional<SubsurfaceExit> PathIntegrator::findSubsurfaceExit(const SkinParams& below, const Vertex& v,
+                                                                  float uRadius, PixelSampler& sampler,
+                                                                  PathCounters& counters) const {
+  // The walk draws as many numbers as it takes steps, the probe a few: an independent stream.
+  PixelSampler stream = sampler.independentStream(sampler.dimension());
+  if (below.subsurface->method == SubsurfaceMethod::RandomWalk)
+    return walkBelowSurface(scene_, subsurfaceMedium(below, *below.subsurface), dielectricIndex_, v.position,
+                            v.geometricNormal, v.time, stream, counters.rays);
+  const DiffusionProfile profile(below.albedo, below.subsurface->meanFreePath);
+  const std::array<float, 4> u = stream.get4D();
+  const ProbeNumbers numbers{u[0], u[1], uRadius, u[2], u[3]};
+  return probeDiffusionExit(scene_, profile, {v.materialId, v.entering}, dielectricIndex_, v.position,
+                            v.geometricNormal, v.time, numbers, counters.rays);
 }
 
 }  // namespace lacrima

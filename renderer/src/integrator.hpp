@@ -10,6 +10,7 @@
 #include "embree_scene.hpp"
 #include "light_sampler.hpp"
 #include "surface_textures.hpp"
+#include "subsurface_walk.hpp"
 #include "lacrima/geometry/sampler.hpp"
 #include "lacrima/materials/bsdf.hpp"
 #include "lacrima/materials/skin.hpp"
@@ -81,20 +82,23 @@ class PathIntegrator {
 
   // Subsurface skin (integrator.cpp, subsurface_walk.hpp): what a skin with subsurface needs.
   struct SubsurfaceSkin {
-    SubsurfaceMedium medium;
+    SkinParams params;  // untextured: the albedo and mean free path below the surface
     std::shared_ptr<const SkinBsdf> bsdf;  // for the specular/walk split
     std::shared_ptr<const Bsdf> exitBsdf;
     float ior;
   };
   enum class Below { Surface, Exited, Absorbed };
   static std::optional<SubsurfaceSkin> makeSubsurfaceSkin(const MaterialParams& params);
-  // Picks v.bsdf's lobes (Surface: v unchanged) or a walk below the dry fraction of the skin:
-  // then v becomes the exit vertex with the exit lobe, and throughput takes the walk's weight.
-  // Absorbed ends the path.
-  // medium and surface: skin's own, or those of a textured hit (integrator.cpp, TexturedHit).
-  Below scatterBelowSurface(const SubsurfaceSkin& skin, const SubsurfaceMedium& medium, const SkinBsdf& surface,
+  // Picks v.bsdf's lobes (Surface: v unchanged) or a path below the dry fraction of the skin (a
+  // random walk or a diffusion-profile probe, SubsurfaceParams::method): then v becomes the exit
+  // vertex with the exit lobe, and throughput takes the exit's weight. Absorbed ends the path.
+  // below and surface: skin's own, or those of a textured hit (integrator.cpp, TexturedHit).
+  Below scatterBelowSurface(const SubsurfaceSkin& skin, const SkinParams& below, const SkinBsdf& surface,
                             Vertex& v, float dryFraction, Color& throughput, PixelSampler& sampler,
                             PathCounters& counters) const;
+  // Where light that entered at v leaves the skin `below`, by its method.
+  std::optional<SubsurfaceExit> findSubsurfaceExit(const SkinParams& below, const Vertex& v, float uRadius,
+                                                   PixelSampler& sampler, PathCounters& counters) const;
 
   const Frame& frame_;
   const EmbreeScene& scene_;

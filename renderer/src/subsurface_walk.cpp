@@ -57,11 +57,10 @@ FlightEnd flyToSurface(const EmbreeScene& scene, const std::vector<float>& diele
   return FlightEnd::Lost;
 }
 
-// The refractive index of what lies outside the skin at a surface point: the first surface along
-// the outward normal decides; a dielectric's surface seen from inside means the point is under
-// it (a drop on the skin), anything else means air (1).
-float outsideIndex(const EmbreeScene& scene, const std::vector<float>& dielectricIndex, const Vec3& position,
-                   const Vec3& outwardNormal, float time, uint64_t& rays) {
+}  // namespace
+
+float indexOutsideSkin(const EmbreeScene& scene, const std::vector<float>& dielectricIndex, const Vec3& position,
+                       const Vec3& outwardNormal, float time, uint64_t& rays) {
   SurfaceHit hit;
   ++rays;
   const Ray probe{offsetOrigin(position, outwardNormal, outwardNormal), outwardNormal, time};
@@ -69,8 +68,6 @@ float outsideIndex(const EmbreeScene& scene, const std::vector<float>& dielectri
   const bool underDielectric = dielectricIndex[hit.materialId] > 0.0f && hit.geometricNormal.dot(outwardNormal) > 0.0f;
   return underDielectric ? dielectricIndex[hit.materialId] : 1.0f;
 }
-
-}  // namespace
 
 std::optional<SubsurfaceExit> walkBelowSurface(const EmbreeScene& scene, const SubsurfaceMedium& medium,
                                                const std::vector<float>& dielectricIndex, const Vec3& entry,
@@ -82,7 +79,7 @@ std::optional<SubsurfaceExit> walkBelowSurface(const EmbreeScene& scene, const S
   Vec3 position = offsetOrigin(entry, outwardNormal, direction);
   const Color sigmaS = medium.sigmaS();
   Color weight = Color::Ones();
-  const float entryIndex = outsideIndex(scene, dielectricIndex, entry, outwardNormal, time, rays);
+  const float entryIndex = indexOutsideSkin(scene, dielectricIndex, entry, outwardNormal, time, rays);
   for (int step = 0; step < kMaxSubsurfaceSteps; ++step) {
     const Color probabilities = channelProbabilities(weight);
     if ((probabilities <= 0.0f).all()) return std::nullopt;
@@ -103,7 +100,7 @@ std::optional<SubsurfaceExit> walkBelowSurface(const EmbreeScene& scene, const S
       const Vec3 ns = hit.shadingNormal.dot(ng) > 0.0f ? hit.shadingNormal : Vec3(-hit.shadingNormal);
       // Radiance scales with the square of the index of the medium it is in (L / n^2 is conserved,
       // pbrt-v4 §9.5.2): a walk from under a drop out into air, or back, carries that ratio.
-      const float ratio = entryIndex / outsideIndex(scene, dielectricIndex, hit.position, ng, time, rays);
+      const float ratio = entryIndex / indexOutsideSkin(scene, dielectricIndex, hit.position, ng, time, rays);
       weight *= ratio * ratio;
       return SubsurfaceExit{hit.position, ng, ns, weight};
     }

@@ -40,4 +40,10 @@ std::optional<SubsurfaceExit> walkBelowSurface(const EmbreeScene& scene, const S
                                                const Vec3& outwardNormal, float time,
                                                PixelSampler& sampler, uint64_t& rays);
 
+// The refractive index of what lies outside the skin at a surface point: the first surface along
+// the outward normal decides; a dielectric's surface seen from inside means the point is under it
+// (a drop on the skin), anything else means air (1). One ray query, counted in `rays`.
+float indexOutsideSkin(const EmbreeScene& scene, const std::vector<float>& dielectricIndex, const Vec3& position,
+                       const Vec3& outwardNormal, float time, uint64_t& rays);
+
 }  // namespace lacrima

@@ -41,6 +41,7 @@ const std::vector<std::string> kRootKeys = {"version",   "frames", "output",    
 const std::vector<std::string> kMaterialTypes = {"diffuse", "skin", "water", "rough_dielectric"};
 const std::vector<std::string> kCausticsModes = {"mnee", "straight", "off"};  // order of readCaustics' modes
 const std::vector<std::string> kSamplerKinds = {"sobol", "independent"};  // order of readSampler's kinds
+const std::vector<std::string> kSubsurfaceMethods = {"randomWalk", "diffusion"};  // order of readSubsurfaceMethod's
 const std::vector<std::string> kFilterTypes = {"blackman-harris", "gaussian", "mitchell", "box"};  // readFilter's order
 // A filter wider than this blurs away the detail it should keep (and 16 px is already 8 pixels
 // each way); a typo such as 15 for 1.5 is caught.
@@ -334,6 +335,22 @@ class ShotReader {
     if (auto x = o.integer("transmission", range)) s.bounces.transmission = int(*x);
   }
 
+  // "method": "randomWalk" | "diffusion" of a skin's "subsurface" (docs/shot-format.md, "Skin").
+  void readSubsurfaceMethod(ObjectReader& o, SubsurfaceParams& subsurface) {
+    const auto method = o.string("method");
+    if (!method) return;
+    const auto it = std::find(kSubsurfaceMethods.begin(), kSubsurfaceMethods.end(), *method);
+    if (it == kSubsurfaceMethods.end()) {
+      const std::string suggestion = didYouMean(*method, kSubsurfaceMethods);
+      o.error("method", suggestion.empty() ? fmt::format("unknown subsurface method '{}' (expected one of {})", *method,
+                                                         quotedList(kSubsurfaceMethods))
+                                           : fmt::format("unknown subsurface method '{}'{}", *method, suggestion));
+      return;
+    }
+    static constexpr SubsurfaceMethod methods[] = {SubsurfaceMethod::RandomWalk, SubsurfaceMethod::Diffusion};
+    subsurface.method = methods[it - kSubsurfaceMethods.begin()];
+  }
+
   // "sampler": "sobol" | "independent" (docs/shot-format.md, "Sampling").
   void readSampler(ObjectReader& o, RenderSettings& s) {
     const auto kind = o.string("sampler");
@@ -437,9 +454,10 @@ class ShotReader {
       if (auto x = o.number("poreScale", Range::above(0))) p.poreScale = float(*x);
       if (auto x = o.number("poreDepth", Range::atLeast(0))) p.poreDepth = float(*x);
       if (const Json* sss = o.find("subsurface")) {  // random-walk subsurface scattering (subsurface.hpp)
-        ObjectReader so(c_, *sss, o.at("subsurface"), {"meanFreePath"});
+        ObjectReader so(c_, *sss, o.at("subsurface"), {"meanFreePath", "method"});
         SubsurfaceParams subsurface;
         if (auto x = so.color("meanFreePath", Range::above(0))) subsurface.meanFreePath = *x;
+        readSubsurfaceMethod(so, subsurface);
         if (so.ok()) p.subsurface = subsurface;
       }
       if (m.textures.meanFreePath && !o.has("subsurface"))

@@ -66,6 +66,10 @@ TEST(SkinMaterialShot, SubsurfaceIsOffByDefaultAndReadsItsMeanFreePath) {
       test::writeShot("skin_sss.json", shotWithSkin(R"(, "subsurface": {"meanFreePath": [0.002, 0.001, 0.0005]})")));
   ASSERT_TRUE(skinOf(given).subsurface);
   EXPECT_TRUE((skinOf(given).subsurface->meanFreePath == Color(0.002f, 0.001f, 0.0005f)).all());
+  EXPECT_EQ(skinOf(given).subsurface->method, SubsurfaceMethod::RandomWalk);
+  const Shot diffusion =
+      loadShot(test::writeShot("skin_sss_diffusion.json", shotWithSkin(R"(, "subsurface": {"method": "diffusion"})")));
+  EXPECT_EQ(skinOf(diffusion).subsurface->method, SubsurfaceMethod::Diffusion);
 }
 
 TEST(SkinMaterialShot, BadSubsurfaceNamesItsKey) {
@@ -73,6 +77,11 @@ TEST(SkinMaterialShot, BadSubsurfaceNamesItsKey) {
                           "/materials/skin/subsurface/meanFreePath/1: expected a number > 0, found 0");
   test::expectSingleError("skin_sss_not_object.json", shotWithSkin(R"(, "subsurface": true)"),
                           "/materials/skin/subsurface: expected an object, found true");
+  test::expectSingleError("skin_sss_method.json", shotWithSkin(R"(, "subsurface": {"method": "difusion"})"),
+                          "/materials/skin/subsurface/method: unknown subsurface method 'difusion'; did you mean 'diffusion'?");
+  test::expectSingleError("skin_sss_method_unknown.json", shotWithSkin(R"(, "subsurface": {"method": "dipole"})"),
+                          "/materials/skin/subsurface/method: unknown subsurface method 'dipole' (expected one of "
+                          "'randomWalk', 'diffusion')");
 }
 
 // The example of the "skin" section of docs/shot-format.md must stay a valid material.

@@ -116,6 +116,20 @@ TEST(FarmStatus, EachFrameTakesTheWordOfTheNewestTaskThatRendersIt) {
                          "`scancel 9` and submit again");
 }
 
+// `status --wait` waits for the job's tasks, not only its frames: a task whose frames are on disk
+// records its exit status after the render returns (the race a cluster run once lost).
+TEST(FarmStatus, TheJobHasQueuedTasksUntilItsOwnTasksLeaveTheQueue) {
+  FarmJob job;
+  job.frames = {1, 2};
+  job.submissions.push_back({"7", {{1, 2}}, "job-1.sh"});
+  job.submissions.push_back({"", {{2}}, "job-2.sh"});  // a --dry-run: no job id
+  EXPECT_TRUE(jobHasQueuedTasks(job, {{"7", 0, "COMPLETING", "None"}}));
+  EXPECT_TRUE(jobHasQueuedTasks(job, {{"12", 0, "RUNNING", "None"}, {"7", 0, "RUNNING", "None"}}));
+  EXPECT_FALSE(jobHasQueuedTasks(job, {}));
+  EXPECT_FALSE(jobHasQueuedTasks(job, {{"12", 0, "RUNNING", "None"}})) << "another job's task";
+  EXPECT_FALSE(jobHasQueuedTasks(job, {{"7", 0, "PENDING", "launch failed requeued held"}})) << "held: never ends";
+}
+
 TEST(FarmCommand, DryRunWritesTheJobAndSubmitsNothing) {
   const fs::path dir = test::testDirectory("farm", /*fresh=*/true);
   const fs::path shot = writeSphereShot(dir, 5);

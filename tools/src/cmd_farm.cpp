@@ -234,7 +234,7 @@ int runFarmStatus(const FarmStatusOptions& o) {
       const auto reports = classifyFrames(job, jobDir, done, queue, recordedExitStatuses(jobDir));
       const StatusCounts counts = countStates(reports);
       const std::string line = summaryLine(job, counts);
-      if (o.wait && counts.inProgress()) {
+      if (o.wait && (counts.inProgress() || jobHasQueuedTasks(job, queue))) {
         if (line != lastLine) std::printf("%s\n", line.c_str());
         std::fflush(stdout);
         lastLine = line;

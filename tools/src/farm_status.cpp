@@ -121,4 +121,11 @@ std::vector<FrameReport> classifyFrames(const FarmJob& job, const std::filesyste
   return reports;
 }
 
+bool jobHasQueuedTasks(const FarmJob& job, const std::vector<QueuedTask>& queue) {
+  for (const QueuedTask& q : queue)
+    for (const FarmSubmission& s : job.submissions)
+      if (!s.jobId.empty() && q.jobId == s.jobId && !q.held()) return true;
+  return false;
+}
+
 }  // namespace lacrima::cli

@@ -42,6 +42,11 @@ std::vector<FrameReport> classifyFrames(const FarmJob& job, const std::filesyste
                                         const std::vector<int>& doneFrames, const std::vector<QueuedTask>& queue,
                                         const std::map<std::pair<std::string, size_t>, int>& exitStatuses);
 
+// Whether a task of one of the job's submissions is still queued or running (held tasks aside:
+// they never end by themselves). A task whose frames are all on disk may still be running: its
+// script records the exit status after the render returns, so `status --wait` waits for this too.
+bool jobHasQueuedTasks(const FarmJob& job, const std::vector<QueuedTask>& queue);
+
 const char* frameStateName(FrameState state);
 
 }  // namespace lacrima::cli

@@ -209,7 +209,7 @@ void addFarm(CLI::App& app, FarmSubmitOptions& submit, FarmStatusOptions& status
   statusCommand->add_option("shot", status.render.shotPath, "Shot file (JSON)")->required();
   statusCommand->add_option("--out,-o", status.render.outputPattern, "The --out given to submit, if any");
   statusCommand->add_option("--job-dir", status.jobDir, "The --job-dir given to submit, if any");
-  statusCommand->add_flag("--wait", status.wait, "Poll until no frame runs or waits, then report");
+  statusCommand->add_flag("--wait", status.wait, "Poll until no frame runs or waits and the job's tasks have left the queue, then report");
   statusCommand->add_option("--poll", status.pollSeconds, "Seconds between polls with --wait (default 2)")
       ->check(CLI::Range(0.05, 3600.0));
   statusCommand->callback([&status] { throw CLI::RuntimeError(runFarmStatus(status)); });

@@ -27,8 +27,15 @@ struct DiffuseParams {
 // (1.30, 0.95, 0.67) mm; the reduced (transport) coefficients, since the walk scatters
 // isotropically (similarity relation). The single-scattering albedo is not given here: it
 // follows from the skin's albedo.
+// How light below the skin finds where it leaves: a random walk through the medium (Chiang, Kutz
+// & Burley 2016; exact for the homogeneous medium, the reference) or the diffusion profile of
+// Christensen & Burley 2015 sampled by probe rays (a flat-surface approximation, a few ray
+// queries instead of tens); see subsurface.hpp and diffusion_profile.hpp.
+enum class SubsurfaceMethod { RandomWalk, Diffusion };
+
 struct SubsurfaceParams {
   Color meanFreePath = Color(1.30e-3f, 0.95e-3f, 0.67e-3f);
+  SubsurfaceMethod method = SubsurfaceMethod::RandomWalk;
 };
 
 // Skin: Lambertian base under one or two GGX specular lobes whose strength follows dielectric

@@ -1,0 +1,102 @@
+// Probe-ray sampling of a diffusion profile (King et al. 2013; pbrt-v3 §15.4); see
+// subsurface_probe.hpp.
+#include "subsurface_probe.hpp"
+
+#include <array>
+#include <cmath>
+#include <limits>
+
+namespace lacrima {
+
+namespace {
+
+constexpr std::array<float, 3> kAxisProbability = {0.5f, 0.25f, 0.25f};  // normal, tangent s, tangent t
+constexpr float kChannelProbability = 1.0f / 3.0f;
+constexpr int kMaxCandidates = 8;
+constexpr int kMaxCrossings = 16;  // surfaces of other materials crossed along one probe
+
+// The projection axes about the entry's normal: axes[0] the normal, then the two tangents.
+std::array<Vec3, 3> projectionAxes(const Vec3& normal) {
+  const ShadingFrame frame = ShadingFrame::fromNormal(normal);
+  return {frame.n, frame.s, frame.t};
+}
+
+int pickAxis(float u) { return u < kAxisProbability[0] ? 0 : (u < kAxisProbability[0] + kAxisProbability[1] ? 1 : 2); }
+
+struct Candidate {
+  Vec3 position;
+  Vec3 geometricNormal;  // the winding normal, as the hit gives it
+  Vec3 shadingNormal;
+};
+
+// The crossings of the skin material along origin + t direction, 0 < t < length, in order.
+int findCandidates(const EmbreeScene& scene, uint32_t materialId, const Vec3& origin, const Vec3& direction,
+                   float length, float time, std::array<Candidate, kMaxCandidates>& found, uint64_t& rays) {
+  int count = 0;
+  Ray ray{origin, direction, time};
+  for (int crossing = 0; crossing < kMaxCrossings && count < kMaxCandidates; ++crossing) {
+    SurfaceHit hit;
+    ++rays;
+    if (!scene.intersect(ray, hit) || hit.rayDistance >= length) break;
+    if (hit.lightIndex < 0 && hit.materialId == materialId)
+      found[count++] = {hit.position, hit.geometricNormal, hit.shadingNormal};
+    // On along the same line, just past this hit (a fixed line keeps the density exact).
+    ray.tnear = std::nextafter(hit.rayDistance * (1.0f + 1e-5f), std::numeric_limits<float>::infinity());
+  }
+  return count;
+}
+
+}  // namespace
+
+float probeDensity(const DiffusionProfile& profile, const Vec3& entry, const Vec3& outwardNormal, const Vec3& exit,
+                   const Vec3& exitNormal) {
+  const std::array<Vec3, 3> axes = projectionAxes(outwardNormal);
+  const Vec3 offset = exit - entry;
+  const float distanceSquared = offset.squaredNorm();
+  float density = 0.0f;
+  for (int a = 0; a < 3; ++a) {
+    const float along = offset.dot(axes[a]);
+    // The radius in the plane normal to the axis; floored so a point on the axis stays finite.
+    const float radius = std::sqrt(std::max(distanceSquared - along * along, 1e-14f));
+    const float cosine = std::abs(exitNormal.dot(axes[a]));
+    for (int c = 0; c < 3; ++c)
+      density += kAxisProbability[a] * kChannelProbability * profile.radiusPdf(c, radius) * cosine /
+                 (2.0f * kPi * radius);
+  }
+  return density;
+}
+
+std::optional<SubsurfaceExit> probeDiffusionExit(const EmbreeScene& scene, const DiffusionProfile& profile,
+                                                 const ProbeSurface& surface, const std::vector<float>& dielectricIndex,
+                                                 const Vec3& entry, const Vec3& outwardNormal, float time,
+                                                 const ProbeNumbers& u, uint64_t& rays) {
+  const std::array<Vec3, 3> axes = projectionAxes(outwardNormal);
+  const int axis = pickAxis(u.axis);
+  const int channel = std::min(int(u.channel * 3.0f), 2);
+  const float rMax = profile.maxRadius(channel);
+  const float radius = profile.sampleRadius(channel, u.radius);
+  const float angle = 2.0f * kPi * u.angle;
+  // The disk's two directions are the other two axes.
+  const Vec3& across1 = axes[(axis + 1) % 3];
+  const Vec3& across2 = axes[(axis + 2) % 3];
+  const float halfChord = std::sqrt(std::max(rMax * rMax - radius * radius, 0.0f));
+  const Vec3 onDisk = entry + radius * (std::cos(angle) * across1 + std::sin(angle) * across2);
+  std::array<Candidate, kMaxCandidates> candidates;
+  const int count = findCandidates(scene, surface.materialId, onDisk + halfChord * axes[axis], -axes[axis],
+                                   2.0f * halfChord, time, candidates, rays);
+  if (count == 0) return std::nullopt;
+  const Candidate& chosen = candidates[std::min(int(u.candidate * float(count)), count - 1)];
+  const Vec3 ng = surface.entryOnWindingSide ? chosen.geometricNormal : Vec3(-chosen.geometricNormal);
+  const Vec3 ns = chosen.shadingNormal.dot(ng) > 0.0f ? chosen.shadingNormal : Vec3(-chosen.shadingNormal);
+  const float density = probeDensity(profile, entry, outwardNormal, chosen.position, ng);
+  if (!(density > 0.0f)) return std::nullopt;
+  const float distance = (chosen.position - entry).norm();
+  Color weight = profile.eval(std::max(distance, 1e-7f)) * (float(count) / density);
+  // Radiance scales with the square of the index of the medium it is in (subsurface_walk.hpp).
+  const float ratio = indexOutsideSkin(scene, dielectricIndex, entry, outwardNormal, time, rays) /
+                      indexOutsideSkin(scene, dielectricIndex, chosen.position, ng, time, rays);
+  weight *= ratio * ratio;
+  return SubsurfaceExit{chosen.position, ng, ns, weight};
+}
+
+}  // namespace lacrima
