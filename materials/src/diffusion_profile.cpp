@@ -8,7 +8,7 @@ namespace lacrima {
 
 namespace {
 
-constexpr float kEnergyWithinMaxRadius = 0.999f;
+constexpr float kEnergyWithinMaxRadius = 0.99f;
 constexpr float kShortWeight = 0.25f;  // the exp(-r/d) component's share of the energy
 constexpr float kLongWeight = 0.75f;   // the exp(-r/(3d)) component's
 
@@ -52,7 +52,9 @@ Color DiffusionProfile::eval(float r) const {
   Color result;
   for (int c = 0; c < 3; ++c) {
     const float d = shape_[c];
-    result[c] = albedo_[c] * (std::exp(-r / d) + std::exp(-r / (3.0f * d))) / (8.0f * kPi * d * r);
+    result[c] = r < maxRadius_[c] ? albedo_[c] * (std::exp(-r / d) + std::exp(-r / (3.0f * d))) /
+                                        (8.0f * kPi * d * r * kEnergyWithinMaxRadius)
+                                  : 0.0f;
   }
   return result;
 }

@@ -389,13 +389,19 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
       const SkinParams& beneath = textured.skin ? *textured.skin : skin.params;
       const SkinBsdf& surface = textured.skin ? std::get<SkinBsdf>(textured.bsdf) : *skin.bsdf;
       sampler.setDimension(dimensions + sample_dimensions::kSubsurfaceChoice);
-      const Below below = scatterBelowSurface(skin, beneath, surface, v, dryFraction, throughput, sampler, counters);
-      if (below == Below::Absorbed) break;
-      if (below == Below::Exited) {
+      const Below below = scatterBelowSurface(skin, beneath, surface, v, dryFraction, sampler, counters);
+      if (below.exit) {  // the light that leaves at the exit, whichever way the path goes on
+        sampler.setDimension(dimensions + sample_dimensions::kExitLight);
+        result += throughput * below.exitWeight * sampleDirectLight(*below.exit, media, sampler, counters);
+      }
+      if (!below.goesBelow) {
+        throughput /= below.pSurface;
+      } else {
+        if (!below.exit) break;  // absorbed below the skin
+        throughput *= below.exitWeight / (1.0f - below.pSurface);
+        v = *below.exit;
         hit.position = v.position;  // the path goes on from the exit point
         ng = v.geometricNormal;
-        sampler.setDimension(dimensions + sample_dimensions::kExitLight);
-        result += throughput * sampleDirectLight(v, media, sampler, counters);
       }
     }
 
@@ -436,12 +442,15 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
   return result;
 }
 
-// Random-walk subsurface scattering (subsurface_walk.hpp). v.bsdf holds the skin's specular lobes
-// (and, under a tear film, the wet layer of wet_skin.hpp, whose base stays Lambertian); the walk
-// replaces the Lambertian base of the dry fraction. One of the two continues the path: v.bsdf
-// with probability pB = c + (1 - c) specularProbability(wo) (c = film coverage), else the walk,
-// weighted (1 - c)(1 - F(cos_o)) / (1 - pB). Each branch divides by its probability, so the sum
-// is unbiased, and NEE with v.bsdf pairs with the v.bsdf branch's MIS weights.
+// Subsurface scattering (subsurface_walk.hpp, subsurface_probe.hpp). v.bsdf holds the skin's
+// specular lobes (and, under a tear film, the wet layer of wet_skin.hpp, whose base stays
+// Lambertian); the walk or probe replaces the Lambertian base of the dry fraction. Every sample
+// finds an exit and takes the light there, weighted (1 - c)(1 - F(cos_o)) times the method's
+// weight (c = film coverage): the light through the skin is split off the path, as the light
+// at any vertex is (NEE). One of the two then continues the path: v.bsdf with probability
+// pB = c + (1 - c) specularProbability(wo), else the exit, weighted 1 / (1 - pB). Each branch
+// divides by its probability, so the sum is unbiased, and the light found by the continuation
+// pairs with the NEE of its own vertex by MIS as before.
 std::optional<PathIntegrator::SubsurfaceSkin> PathIntegrator::makeSubsurfaceSkin(const MaterialParams& params) {
   const auto* skin = std::get_if<SkinParams>(&params);
   if (!skin || !skin->subsurface) return std::nullopt;
@@ -450,30 +459,31 @@ std::optional<PathIntegrator::SubsurfaceSkin> PathIntegrator::makeSubsurfaceSkin
 }
 
 PathIntegrator::Below PathIntegrator::scatterBelowSurface(const SubsurfaceSkin& skin, const SkinParams& below,
-                                                          const SkinBsdf& surface, Vertex& v, float dryFraction,
-                                                          Color& throughput, PixelSampler& sampler,
-                                                          PathCounters& counters) const {
-  const float pSurface = 1.0f - dryFraction * (1.0f - surface.specularProbability(v.woLocal));
+                                                          const SkinBsdf& surface, const Vertex& v, float dryFraction,
+                                                          PixelSampler& sampler, PathCounters& counters) const {
+  Below result;
+  result.pSurface = 1.0f - dryFraction * (1.0f - surface.specularProbability(v.woLocal));
   const float uChoice = sampler.get1D();
-  if (uChoice < pSurface) {
-    throughput /= pSurface;
-    return Below::Surface;
-  }
+  result.goesBelow = uChoice >= result.pSurface;
+  if (dryFraction <= 0.0f) return result;  // all wet: nothing enters the skin (pSurface is 1)
+  // The choice's number, uniform again on [0, 1) within its branch: stratified for the probe's radius.
+  const float uRadius = std::min(result.goesBelow ? (uChoice - result.pSurface) / (1.0f - result.pSurface)
+                                                  : uChoice / result.pSurface,
+                                 0.99999994f);
+  const auto exit = findSubsurfaceExit(below, v, uRadius, sampler, counters);
+  if (!exit) return result;
   // Entry pays the Fresnel transmission of the base it replaces (skin.hpp, subsurface.hpp).
   const float entry = 1.0f - fresnelDielectric(v.woLocal.z(), skin.ior);
-  // The choice's number, uniform again on [0, 1) past pSurface: stratified for the probe's radius.
-  const float uRadius = std::min((uChoice - pSurface) / (1.0f - pSurface), 0.99999994f);
-  const auto exit = findSubsurfaceExit(below, v, uRadius, sampler, counters);
-  if (!exit) return Below::Absorbed;
-  throughput *= exit->weight * (dryFraction * entry / (1.0f - pSurface));
-  v.position = exit->position;
-  v.geometricNormal = exit->geometricNormal;
-  v.frame = ShadingFrame::fromNormal(exit->shadingNormal);
-  v.wo = exit->shadingNormal;  // the exit lobe ignores wo; any direction above the surface will do
-  v.woLocal = Vec3(0.0f, 0.0f, 1.0f);
-  v.bsdf = skin.exitBsdf.get();
-  v.entering = true;
-  return Below::Exited;
+  result.exitWeight = exit->weight * (dryFraction * entry);
+  Vertex& out = result.exit.emplace(v);
+  out.position = exit->position;
+  out.geometricNormal = exit->geometricNormal;
+  out.frame = ShadingFrame::fromNormal(exit->shadingNormal);
+  out.wo = exit->shadingNormal;  // the exit lobe ignores wo; any direction above the surface will do
+  out.woLocal = Vec3(0.0f, 0.0f, 1.0f);
+  out.bsdf = skin.exitBsdf.get();
+  out.entering = true;
+  return result;
 }
 
 std::optional<SubsurfaceExit> PathIntegrator::findSubsurfaceExit(const SkinParams& below, const Vertex& v,

@@ -87,15 +87,14 @@ class PathIntegrator {
     std::shared_ptr<const Bsdf> exitBsdf;
     float ior;
   };
-  enum class Below { Surface, Exited, Absorbed };
+  struct Below;  // defined below, after Vertex
   static std::optional<SubsurfaceSkin> makeSubsurfaceSkin(const MaterialParams& params);
-  // Picks v.bsdf's lobes (Surface: v unchanged) or a path below the dry fraction of the skin (a
-  // random walk or a diffusion-profile probe, SubsurfaceParams::method): then v becomes the exit
-  // vertex with the exit lobe, and throughput takes the exit's weight. Absorbed ends the path.
-  // below and surface: skin's own, or those of a textured hit (integrator.cpp, TexturedHit).
+  // Finds the exit below the dry fraction of the skin (a random walk or a diffusion-profile probe,
+  // SubsurfaceParams::method) for every sample, so the light through the skin is never left to a
+  // coin toss, then picks how the path goes on: v.bsdf's lobes with probability pSurface, else
+  // from the exit. below and surface: skin's own, or those of a textured hit (TexturedHit).
   Below scatterBelowSurface(const SubsurfaceSkin& skin, const SkinParams& below, const SkinBsdf& surface,
-                            Vertex& v, float dryFraction, Color& throughput, PixelSampler& sampler,
-                            PathCounters& counters) const;
+                            const Vertex& v, float dryFraction, PixelSampler& sampler, PathCounters& counters) const;
   // Where light that entered at v leaves the skin `below`, by its method.
   std::optional<SubsurfaceExit> findSubsurfaceExit(const SkinParams& below, const Vertex& v, float uRadius,
                                                    PixelSampler& sampler, PathCounters& counters) const;
@@ -134,6 +133,16 @@ struct PathIntegrator::Vertex {
   Vec3 woLocal;
   const Bsdf* bsdf;
   float time;            // shutter time of the path
+};
+
+// What happened below the skin at one hit: where the light that entered there leaves (none when
+// the walk or probe found no exit, or the skin is all wet) and with what weight (the dry
+// fraction's entry Fresnel times the method's weight), and which way the path goes on.
+struct PathIntegrator::Below {
+  std::optional<Vertex> exit;  // the exit vertex, with the exit lobe as its BSDF
+  Color exitWeight = Color::Zero();
+  bool goesBelow = false;   // the path continues from the exit (else on v.bsdf's lobes)
+  float pSurface = 1.0f;    // the probability of going on on v.bsdf's lobes
 };
 
 }  // namespace lacrima

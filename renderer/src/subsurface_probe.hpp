@@ -3,7 +3,8 @@
 // exit point is found by a probe ray instead of a random walk, after King, Kulla, Conty & Fajardo
 // 2013 ("BSSRDF Importance Sampling", SIGGRAPH Talks), as pbrt-v3 §15.4 implements it
 // (SeparableBSSRDF::Sample_Sp and Pdf_Sp): pick a projection axis (the normal with probability
-// 1/2, each tangent 1/4) and a channel (1/3 each), sample a radius from that channel's profile
+// 0.8, each tangent 0.1; subsurface_probe.cpp says why) and a channel (in proportion to its
+// albedo), sample a radius from that channel's profile
 // and an angle, and shoot a ray along the axis through the disk at that radius, inside the
 // sphere of the channel's maximum radius. Every crossing of the same skin material is a
 // candidate; one is chosen uniformly. Its weight is R(|p_exit - p_entry|) times the number of

@@ -11,8 +11,11 @@
 // So the same skin parameters drive both methods, and with the same mean free path the profile
 // approximates what the random walk (subsurface.hpp) produces on a slab.
 //
+// The profile is cut at maxRadius, the radius holding 99 % of its energy, and scaled by 1 / 0.99
+// so that it still integrates to A: probe rays then stay short, and the rare far exits that would
+// land in a differently lit place (the bright, coloured outliers of a render) are not sampled.
 // Sampling the radius: 2 pi r R(r) / A = (1/4) (1/d) exp(-r/d) + (3/4) (1/(3d)) exp(-r/(3d)), a
-// mixture of two exponentials, sampled exactly and truncated at maxRadius (99.9 % of the energy).
+// mixture of two exponentials, sampled exactly within maxRadius.
 #include "lacrima/geometry/math.hpp"
 
 namespace lacrima {
@@ -25,9 +28,9 @@ class DiffusionProfile {
   const Color& albedo() const { return albedo_; }
   const Color& shape() const { return shape_; }  // d per channel, metres
 
-  // R(r) per unit area, per channel (r > 0).
+  // R(r) per unit area, per channel (r > 0): zero from maxRadius on, scaled by 1 / 0.99 within.
   Color eval(float r) const;
-  // Radius holding 99.9 % of channel c's energy: probes reach no further.
+  // Radius holding 99 % of channel c's untruncated energy: probes reach no further.
   float maxRadius(int channel) const { return maxRadius_[channel]; }
   // Density of sampleRadius's r for channel c (per unit length, truncated at maxRadius).
   float radiusPdf(int channel, float r) const;
