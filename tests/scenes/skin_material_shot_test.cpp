@@ -98,6 +98,8 @@ TEST(SkinMaterialShot, DocExampleLoads) {
   const SkinParams& p = skinOf(shot);
   EXPECT_GT(p.lobeMix, 0.0f);
   EXPECT_GT(p.poreDepth, 0.0f);
+  ASSERT_TRUE(p.subsurface);
+  EXPECT_EQ(p.subsurface->method, SubsurfaceMethod::Diffusion);
 }
 
 }  // namespace
