@@ -32,18 +32,6 @@ Color channelProbabilities(const DiffusionProfile& profile) {
   return sum > 0.0f ? Color(profile.albedo() / sum) : Color::Zero();
 }
 
-int pickChannel(const Color& probabilities, float u) {
-  int last = 0;
-  float cumulative = 0.0f;
-  for (int c = 0; c < 3; ++c) {
-    if (probabilities[c] <= 0.0f) continue;
-    last = c;
-    cumulative += probabilities[c];
-    if (u < cumulative) return c;
-  }
-  return last;
-}
-
 int pickAxis(float u) { return u < kAxisProbability[0] ? 0 : (u < kAxisProbability[0] + kAxisProbability[1] ? 1 : 2); }
 
 struct Candidate {

@@ -19,19 +19,6 @@ Color channelProbabilities(const Color& weight) {
   return sum > 0.0f ? Color(weight / sum) : Color::Zero();
 }
 
-// The channel whose cumulative probability passes u; rounding falls back to the last possible one.
-int pickChannel(const Color& probabilities, float u) {
-  int last = 0;
-  float cumulative = 0.0f;
-  for (int c = 0; c < 3; ++c) {
-    if (probabilities[c] <= 0.0f) continue;
-    last = c;
-    cumulative += probabilities[c];
-    if (u < cumulative) return c;
-  }
-  return last;
-}
-
 enum class FlightEnd { Scattered, Surface, Lost };
 
 // Follows a free flight of length `distance`: Surface when it meets a surface that ends the walk
@@ -58,6 +45,18 @@ FlightEnd flyToSurface(const EmbreeScene& scene, const std::vector<float>& diele
 }
 
 }  // namespace
+
+int pickChannel(const Color& probabilities, float u) {
+  int last = 0;
+  float cumulative = 0.0f;
+  for (int c = 0; c < 3; ++c) {
+    if (probabilities[c] <= 0.0f) continue;
+    last = c;
+    cumulative += probabilities[c];
+    if (u < cumulative) return c;
+  }
+  return last;
+}
 
 float indexOutsideSkin(const EmbreeScene& scene, const std::vector<float>& dielectricIndex, const Vec3& position,
                        const Vec3& outwardNormal, float time, uint64_t& rays) {

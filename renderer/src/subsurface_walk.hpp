@@ -40,6 +40,10 @@ std::optional<SubsurfaceExit> walkBelowSurface(const EmbreeScene& scene, const S
                                                const Vec3& outwardNormal, float time,
                                                PixelSampler& sampler, uint64_t& rays);
 
+// The channel whose cumulative probability passes u (probabilities sum to 1; zero ones are never
+// picked); rounding falls back to the last possible one.
+int pickChannel(const Color& probabilities, float u);
+
 // The refractive index of what lies outside the skin at a surface point: the first surface along
 // the outward normal decides; a dielectric's surface seen from inside means the point is under it
 // (a drop on the skin), anything else means air (1). One ray query, counted in `rays`.

@@ -71,6 +71,21 @@ std::string quotedList(const std::vector<std::string>& items) {
   return join(quoted);
 }
 
+// The index in `names` of the string at `key`; nothing when the key is absent, or, with an error
+// naming the key and the closest name (or all of them), when it is none of them:
+// "unknown <what> 'x'; did you mean 'y'?".
+std::optional<size_t> readChoice(ObjectReader& o, const char* key, const std::vector<std::string>& names,
+                                 const char* what) {
+  const auto value = o.string(key);
+  if (!value) return std::nullopt;
+  const auto it = std::find(names.begin(), names.end(), *value);
+  if (it != names.end()) return size_t(it - names.begin());
+  const std::string suggestion = didYouMean(*value, names);
+  o.error(key, suggestion.empty() ? fmt::format("unknown {} '{}' (expected one of {})", what, *value, quotedList(names))
+                                  : fmt::format("unknown {} '{}'{}", what, *value, suggestion));
+  return std::nullopt;
+}
+
 // "; did you mean 'x'?" or " (<listName>: a, b, c)" or " (<emptyText>)".
 std::string suggestionOrList(const std::string& name, const std::vector<std::string>& candidates,
                              const std::string& listName, const std::string& emptyText) {
@@ -337,34 +352,14 @@ class ShotReader {
 
   // "method": "randomWalk" | "diffusion" of a skin's "subsurface" (docs/shot-format.md, "Skin").
   void readSubsurfaceMethod(ObjectReader& o, SubsurfaceParams& subsurface) {
-    const auto method = o.string("method");
-    if (!method) return;
-    const auto it = std::find(kSubsurfaceMethods.begin(), kSubsurfaceMethods.end(), *method);
-    if (it == kSubsurfaceMethods.end()) {
-      const std::string suggestion = didYouMean(*method, kSubsurfaceMethods);
-      o.error("method", suggestion.empty() ? fmt::format("unknown subsurface method '{}' (expected one of {})", *method,
-                                                         quotedList(kSubsurfaceMethods))
-                                           : fmt::format("unknown subsurface method '{}'{}", *method, suggestion));
-      return;
-    }
     static constexpr SubsurfaceMethod methods[] = {SubsurfaceMethod::RandomWalk, SubsurfaceMethod::Diffusion};
-    subsurface.method = methods[it - kSubsurfaceMethods.begin()];
+    if (const auto i = readChoice(o, "method", kSubsurfaceMethods, "subsurface method")) subsurface.method = methods[*i];
   }
 
   // "sampler": "sobol" | "independent" (docs/shot-format.md, "Sampling").
   void readSampler(ObjectReader& o, RenderSettings& s) {
-    const auto kind = o.string("sampler");
-    if (!kind) return;
-    const auto it = std::find(kSamplerKinds.begin(), kSamplerKinds.end(), *kind);
-    if (it == kSamplerKinds.end()) {
-      const std::string suggestion = didYouMean(*kind, kSamplerKinds);
-      o.error("sampler", suggestion.empty()
-                             ? fmt::format("unknown sampler '{}' (expected one of {})", *kind, quotedList(kSamplerKinds))
-                             : fmt::format("unknown sampler '{}'{}", *kind, suggestion));
-      return;
-    }
     static constexpr SamplerKind kinds[] = {SamplerKind::Sobol, SamplerKind::Independent};
-    s.sampler = kinds[it - kSamplerKinds.begin()];
+    if (const auto i = readChoice(o, "sampler", kSamplerKinds, "sampler")) s.sampler = kinds[*i];
   }
 
   // "filter": {"type": "blackman-harris" | "gaussian" | "mitchell" | "box", "width": full width in
@@ -387,22 +382,14 @@ class ShotReader {
   // "caustics": "mnee" | "straight" | "off" (docs/shot-format.md, "Caustics"). The older
   // "transparentShadows": false means "off"; with another explicit mode it is a contradiction.
   void readCaustics(ObjectReader& o, RenderSettings& s) {
-    const auto mode = o.string("caustics");
-    if (!mode) return;
-    const auto it = std::find(kCausticsModes.begin(), kCausticsModes.end(), *mode);
-    if (it == kCausticsModes.end()) {
-      const std::string suggestion = didYouMean(*mode, kCausticsModes);
-      o.error("caustics", suggestion.empty() ? fmt::format("unknown caustics mode '{}' (expected one of {})", *mode,
-                                                           quotedList(kCausticsModes))
-                                             : fmt::format("unknown caustics mode '{}'{}", *mode, suggestion));
-      return;
-    }
     static constexpr Caustics modes[] = {Caustics::Mnee, Caustics::Straight, Caustics::Off};
-    s.caustics = modes[it - kCausticsModes.begin()];
+    const auto i = readChoice(o, "caustics", kCausticsModes, "caustics mode");
+    if (!i) return;
+    s.caustics = modes[*i];
     if (!s.transparentShadows && s.caustics != Caustics::Off)
       o.error("caustics", fmt::format("'{}' contradicts \"transparentShadows\": false (which means \"off\"); give "
                                       "only \"caustics\"",
-                                      *mode));
+                                      kCausticsModes[*i]));
   }
 
   // ---- materials ---------------------------------------------------------------------------

@@ -158,10 +158,11 @@ TEST(Subsurface, WetSlabMixesTheWalkAndTheWetLayerByCoverage) {
   EXPECT_NEAR(e.mean, expected, 5.0 * e.standardError + 0.01 * expected);
 }
 
-TEST(Subsurface, OneAndTwoThreadsGiveBitwiseEqualFilms) {
+// A subsurface sphere under an area light from above, for the determinism tests.
+Frame litSubsurfaceSphere(SubsurfaceMethod method) {
   Frame frame;
   SkinParams skin;
-  skin.subsurface = SubsurfaceParams{Color(0.05f, 0.03f, 0.02f)};
+  skin.subsurface = SubsurfaceParams{Color(0.05f, 0.03f, 0.02f), method};
   frame.materials.push_back(Material{"skin", skin, Color::Zero()});
   frame.spheres.push_back(Sphere{Vec3::Zero(), 0.5f, 0});
   AreaLight light;
@@ -173,7 +174,11 @@ TEST(Subsurface, OneAndTwoThreadsGiveBitwiseEqualFilms) {
   frame.uniformBackground = Color(0.1f, 0.1f, 0.2f);
   frame.camera = lookAt(Vec3(0, 0.5f, 3), Vec3::Zero(), 25.0f);
   frame.settings = smallSettings(24, 8, 6);
-  test::expectThreadCountIndependent(frame);
+  return frame;
+}
+
+TEST(Subsurface, OneAndTwoThreadsGiveBitwiseEqualFilms) {
+  test::expectThreadCountIndependent(litSubsurfaceSphere(SubsurfaceMethod::RandomWalk));
 }
 
 // The diffusion-profile method (diffusion_profile.hpp, renderer/src/subsurface_probe.hpp).
@@ -278,21 +283,7 @@ TEST(SubsurfaceDiffusion, TinyMeanFreePathStaysFiniteAndKeepsTheAlbedo) {
 }
 
 TEST(SubsurfaceDiffusion, OneAndTwoThreadsGiveBitwiseEqualFilms) {
-  Frame frame;
-  SkinParams skin;
-  skin.subsurface = SubsurfaceParams{Color(0.05f, 0.03f, 0.02f), SubsurfaceMethod::Diffusion};
-  frame.materials.push_back(Material{"skin", skin, Color::Zero()});
-  frame.spheres.push_back(Sphere{Vec3::Zero(), 0.5f, 0});
-  AreaLight light;
-  light.center = Vec3(0, 2, 0);
-  light.edgeU = Vec3(1, 0, 0);
-  light.edgeV = Vec3(0, 0, 1);
-  light.radiance = Color::Constant(5.0f);
-  frame.lights.push_back(light);
-  frame.uniformBackground = Color(0.1f, 0.1f, 0.2f);
-  frame.camera = lookAt(Vec3(0, 0.5f, 3), Vec3::Zero(), 25.0f);
-  frame.settings = smallSettings(24, 8, 6);
-  test::expectThreadCountIndependent(frame);
+  test::expectThreadCountIndependent(litSubsurfaceSphere(SubsurfaceMethod::Diffusion));
 }
 
 }  // namespace
