@@ -145,6 +145,9 @@ int runBenchQuality(const BenchOptions& o) {
     frame.settings.width = o.width;
     frame.settings.height = o.height;
     frame.settings.threads = o.threads;
+    // The curve is the raw beauty's error: a shot's denoiser would only add its time (and its
+    // sample order) to the renders. The denoiser is measured by FLIP (docs/denoising.md).
+    frame.settings.denoise = false;
     if (o.adaptiveThreshold) {
       frame.settings.adaptive.enabled = *o.adaptiveThreshold > 0.0;
       if (frame.settings.adaptive.enabled) frame.settings.adaptive.threshold = float(*o.adaptiveThreshold);
