@@ -57,12 +57,11 @@ int findCandidates(const EmbreeScene& scene, uint32_t materialId, const Vec3& or
   return count;
 }
 
-}  // namespace
-
-float probeDensity(const DiffusionProfile& profile, const Vec3& entry, const Vec3& outwardNormal, const Vec3& exit,
-                   const Vec3& exitNormal) {
-  const std::array<Vec3, 3> axes = projectionAxes(outwardNormal);
-  const Color channels = channelProbabilities(profile);
+// The density (per unit area of the exit surface) with which a probe from `entry` reaches `exit`
+// (normal `exitNormal`) before the choice among candidates: the sum over the three axes and the
+// channels (probabilities `channels`), each radius measured in the plane normal to its axis.
+float probeDensity(const DiffusionProfile& profile, const std::array<Vec3, 3>& axes, const Color& channels,
+                   const Vec3& entry, const Vec3& exit, const Vec3& exitNormal) {
   const Vec3 offset = exit - entry;
   const float distanceSquared = offset.squaredNorm();
   float density = 0.0f;
@@ -77,6 +76,8 @@ float probeDensity(const DiffusionProfile& profile, const Vec3& entry, const Vec
   }
   return density;
 }
+
+}  // namespace
 
 std::optional<SubsurfaceExit> probeDiffusionExit(const EmbreeScene& scene, const DiffusionProfile& profile,
                                                  const ProbeSurface& surface, const std::vector<float>& dielectricIndex,
@@ -102,7 +103,7 @@ std::optional<SubsurfaceExit> probeDiffusionExit(const EmbreeScene& scene, const
   const Candidate& chosen = candidates[std::min(int(u.candidate * float(count)), count - 1)];
   const Vec3 ng = surface.entryOnWindingSide ? chosen.geometricNormal : Vec3(-chosen.geometricNormal);
   const Vec3 ns = chosen.shadingNormal.dot(ng) > 0.0f ? chosen.shadingNormal : Vec3(-chosen.shadingNormal);
-  const float density = probeDensity(profile, entry, outwardNormal, chosen.position, ng);
+  const float density = probeDensity(profile, axes, channels, entry, chosen.position, ng);
   if (!(density > 0.0f)) return std::nullopt;
   const float distance = (chosen.position - entry).norm();
   Color weight = profile.eval(std::max(distance, 1e-7f)) * (float(count) / density);

@@ -45,10 +45,4 @@ std::optional<SubsurfaceExit> probeDiffusionExit(const EmbreeScene& scene, const
                                                  const Vec3& entry, const Vec3& outwardNormal, float time,
                                                  const ProbeNumbers& u, uint64_t& rays);
 
-// The density (per unit area of the exit surface) with which probeDiffusionExit reaches `exit`
-// (normal `exitNormal`) from `entry` before the choice among candidates: the sum over the three
-// axes and the channels. Exposed for tests.
-float probeDensity(const DiffusionProfile& profile, const Vec3& entry, const Vec3& outwardNormal, const Vec3& exit,
-                   const Vec3& exitNormal);
-
 }  // namespace lacrima

@@ -158,22 +158,14 @@ TEST(Subsurface, WetSlabMixesTheWalkAndTheWetLayerByCoverage) {
   EXPECT_NEAR(e.mean, expected, 5.0 * e.standardError + 0.01 * expected);
 }
 
-// A subsurface sphere under an area light from above, for the determinism tests.
+// A subsurface sphere under the determinism scenes' light (test_scenes.hpp).
 Frame litSubsurfaceSphere(SubsurfaceMethod method) {
   Frame frame;
   SkinParams skin;
   skin.subsurface = SubsurfaceParams{Color(0.05f, 0.03f, 0.02f), method};
   frame.materials.push_back(Material{"skin", skin, Color::Zero()});
   frame.spheres.push_back(Sphere{Vec3::Zero(), 0.5f, 0});
-  AreaLight light;
-  light.center = Vec3(0, 2, 0);
-  light.edgeU = Vec3(1, 0, 0);
-  light.edgeV = Vec3(0, 0, 1);  // emits downwards
-  light.radiance = Color::Constant(5.0f);
-  frame.lights.push_back(light);
-  frame.uniformBackground = Color(0.1f, 0.1f, 0.2f);
-  frame.camera = lookAt(Vec3(0, 0.5f, 3), Vec3::Zero(), 25.0f);
-  frame.settings = smallSettings(24, 8, 6);
+  test::addTopLightAndView(frame);
   return frame;
 }
 
