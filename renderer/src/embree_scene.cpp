@@ -299,7 +299,7 @@ bool EmbreeScene::intersect(const Ray& ray, SurfaceHit& hit) const {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRayHit rayHit;
-  rayHit.ray = makeRay(ray.origin, ray.direction, std::numeric_limits<float>::infinity(), ray.time, ray.tnear);
+  rayHit.ray = makeRay(ray.origin, ray.direction, ray.tfar, ray.time, ray.tnear);
   rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rayHit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(scene_, &context, &rayHit);

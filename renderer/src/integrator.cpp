@@ -463,14 +463,20 @@ PathIntegrator::Below PathIntegrator::scatterBelowSurface(const SubsurfaceSkin& 
                                                           PixelSampler& sampler, PathCounters& counters) const {
   Below result;
   result.pSurface = 1.0f - dryFraction * (1.0f - surface.specularProbability(v.woLocal));
-  const float uChoice = sampler.get1D();
+  // The walk's independent stream is keyed by the dimension just past the choice's first.
+  const uint32_t walkStream = sampler.dimension() + 1;
+  // One stratified 4D block: the choice (and, rescaled, the probe's radius), then the probe's
+  // channel and axis, its angle and its candidate (the walk draws its own numbers).
+  const std::array<float, 4> uBelow = sampler.get4D();
+  const float uChoice = uBelow[0];
   result.goesBelow = uChoice >= result.pSurface;
   if (dryFraction <= 0.0f) return result;  // all wet: nothing enters the skin (pSurface is 1)
   // The choice's number, uniform again on [0, 1) within its branch: stratified for the probe's radius.
   const float uRadius = std::min(result.goesBelow ? (uChoice - result.pSurface) / (1.0f - result.pSurface)
                                                   : uChoice / result.pSurface,
                                  0.99999994f);
-  const auto exit = findSubsurfaceExit(below, v, uRadius, sampler, counters);
+  const ProbeNumbers probe{uBelow[1], uRadius, uBelow[2], uBelow[3]};
+  const auto exit = findSubsurfaceExit(below, v, probe, sampler.independentStream(walkStream), counters);
   if (!exit) return result;
   // Entry pays the Fresnel transmission of the base it replaces (skin.hpp, subsurface.hpp).
   const float entry = 1.0f - fresnelDielectric(v.woLocal.z(), skin.ior);
@@ -487,18 +493,14 @@ PathIntegrator::Below PathIntegrator::scatterBelowSurface(const SubsurfaceSkin& 
 }
 
 std::optional<SubsurfaceExit> PathIntegrator::findSubsurfaceExit(const SkinParams& below, const Vertex& v,
-                                                                  float uRadius, PixelSampler& sampler,
+                                                                  const ProbeNumbers& probe, PixelSampler walkStream,
                                                                   PathCounters& counters) const {
-  // The walk draws as many numbers as it takes steps, the probe a few: an independent stream.
-  PixelSampler stream = sampler.independentStream(sampler.dimension());
   if (below.subsurface->method == SubsurfaceMethod::RandomWalk)
     return walkBelowSurface(scene_, subsurfaceMedium(below, *below.subsurface), dielectricIndex_, v.position,
-                            v.geometricNormal, v.time, stream, counters.rays);
+                            v.geometricNormal, v.time, walkStream, counters.rays);
   const DiffusionProfile profile(below.albedo, below.subsurface->meanFreePath);
-  const std::array<float, 4> u = stream.get4D();
-  const ProbeNumbers numbers{u[0], u[1], uRadius, u[2], u[3]};
   return probeDiffusionExit(scene_, profile, {v.materialId, v.entering}, dielectricIndex_, v.position,
-                            v.geometricNormal, v.time, numbers, counters.rays);
+                            v.geometricNormal, v.time, probe, counters.rays);
 }
 
 }  // namespace lacrima

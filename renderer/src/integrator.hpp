@@ -10,6 +10,7 @@
 #include "embree_scene.hpp"
 #include "light_sampler.hpp"
 #include "surface_textures.hpp"
+#include "subsurface_probe.hpp"
 #include "subsurface_walk.hpp"
 #include "lacrima/geometry/sampler.hpp"
 #include "lacrima/materials/bsdf.hpp"
@@ -95,9 +96,11 @@ class PathIntegrator {
   // from the exit. below and surface: skin's own, or those of a textured hit (TexturedHit).
   Below scatterBelowSurface(const SubsurfaceSkin& skin, const SkinParams& below, const SkinBsdf& surface,
                             const Vertex& v, float dryFraction, PixelSampler& sampler, PathCounters& counters) const;
-  // Where light that entered at v leaves the skin `below`, by its method.
-  std::optional<SubsurfaceExit> findSubsurfaceExit(const SkinParams& below, const Vertex& v, float uRadius,
-                                                   PixelSampler& sampler, PathCounters& counters) const;
+  // Where light that entered at v leaves the skin `below`, by its method: the probe with the
+  // stratified numbers `probe`, the walk with as many numbers of `walkStream` (an independent
+  // stream) as it takes steps.
+  std::optional<SubsurfaceExit> findSubsurfaceExit(const SkinParams& below, const Vertex& v, const ProbeNumbers& probe,
+                                                   PixelSampler walkStream, PathCounters& counters) const;
 
   const Frame& frame_;
   const EmbreeScene& scene_;

@@ -2,6 +2,7 @@
 // subsurface_probe.hpp.
 #include "subsurface_probe.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -34,6 +35,15 @@ Color channelProbabilities(const DiffusionProfile& profile) {
 
 int pickAxis(float u) { return u < kAxisProbability[0] ? 0 : (u < kAxisProbability[0] + kAxisProbability[1] ? 1 : 2); }
 
+// u rescaled to [0, 1) within channel c's interval of the cumulative probabilities (pickChannel):
+// a second choice made from it is stratified within the first.
+float remainderWithin(const Color& probabilities, int channel, float u) {
+  float below = 0.0f;
+  for (int c = 0; c < channel; ++c) below += std::max(probabilities[c], 0.0f);
+  const float within = (u - below) / probabilities[channel];
+  return std::clamp(within, 0.0f, 0.99999994f);
+}
+
 struct Candidate {
   Vec3 position;
   Vec3 geometricNormal;  // the winding normal, as the hit gives it
@@ -45,10 +55,11 @@ int findCandidates(const EmbreeScene& scene, uint32_t materialId, const Vec3& or
                    float length, float time, std::array<Candidate, kMaxCandidates>& found, uint64_t& rays) {
   int count = 0;
   Ray ray{origin, direction, time};
+  ray.tfar = length;
   for (int crossing = 0; crossing < kMaxCrossings && count < kMaxCandidates; ++crossing) {
     SurfaceHit hit;
     ++rays;
-    if (!scene.intersect(ray, hit) || hit.rayDistance >= length) break;
+    if (!scene.intersect(ray, hit)) break;
     if (hit.lightIndex < 0 && hit.materialId == materialId)
       found[count++] = {hit.position, hit.geometricNormal, hit.shadingNormal};
     // On along the same line, just past this hit (a fixed line keeps the density exact).
@@ -84,10 +95,10 @@ std::optional<SubsurfaceExit> probeDiffusionExit(const EmbreeScene& scene, const
                                                  const Vec3& entry, const Vec3& outwardNormal, float time,
                                                  const ProbeNumbers& u, uint64_t& rays) {
   const std::array<Vec3, 3> axes = projectionAxes(outwardNormal);
-  const int axis = pickAxis(u.axis);
   const Color channels = channelProbabilities(profile);
   if ((channels <= 0.0f).all()) return std::nullopt;  // black skin: nothing leaves
-  const int channel = pickChannel(channels, u.channel);
+  const int channel = pickChannel(channels, u.channelAndAxis);
+  const int axis = pickAxis(remainderWithin(channels, channel, u.channelAndAxis));
   const float rMax = profile.maxRadius(channel);
   const float radius = profile.sampleRadius(channel, u.radius);
   const float angle = 2.0f * kPi * u.angle;

@@ -20,10 +20,13 @@
 
 namespace lacrima {
 
-// The numbers one probe draws, each in [0, 1).
+// The numbers one probe draws, each in [0, 1). The channel and the axis share one number (the
+// channel by its cumulative probability, the axis by what is left of the number within it), so
+// that a stratified number stratifies all nine pairs: a pixel's probes then take each channel
+// and each axis in close to their proportions, instead of a binomial share of them, whose
+// spread would be colour noise and, for the tangent probes that find nothing, grain.
 struct ProbeNumbers {
-  float axis = 0.0f;
-  float channel = 0.0f;
+  float channelAndAxis = 0.0f;
   float radius = 0.0f;
   float angle = 0.0f;
   float candidate = 0.0f;

@@ -1,5 +1,7 @@
 #pragma once
 // Camera rays and the matrices recorded in EXR headers.
+#include <limits>
+
 #include "lacrima/geometry/math.hpp"
 #include "lacrima/renderer/frame.hpp"
 
@@ -12,6 +14,9 @@ struct Ray {
   // Hits closer than this to the origin are ignored: a ray that goes on straight through a thin
   // sheet keeps its line and starts just past the sheet instead of at an offset origin.
   float tnear = 0.0f;
+  // Hits farther than this are ignored: a query that only cares about a segment (a subsurface
+  // probe's chord) lets Embree cull the rest.
+  float tfar = std::numeric_limits<float>::infinity();
 };
 
 // The camera's placement at shutter time t: translation interpolated linearly, rotation by
