@@ -8,6 +8,7 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -50,6 +51,57 @@ std::vector<float> boxMean(const std::vector<float>& values, int width, int rows
   return out;
 }
 
+// A pixel's brightness for the firefly test: the mean of its channels.
+float brightness(const float* rgb) { return (rgb[0] + rgb[1] + rgb[2]) / 3.0f; }
+
+// The 75th percentile of the brightness of the mean of the halves over the 5 x 5 pixels around
+// (x, y), the pixel itself left out (those inside the image).
+float neighbourhoodUpperQuartile(const std::vector<float>& meanBrightness, int width, int height, int x, int y) {
+  std::array<float, 24> values;
+  int count = 0;
+  for (int dy = -2; dy <= 2; ++dy)
+    for (int dx = -2; dx <= 2; ++dx) {
+      const int qx = x + dx, qy = y + dy;
+      if ((dx == 0 && dy == 0) || qx < 0 || qy < 0 || qx >= width || qy >= height) continue;
+      values[count++] = meanBrightness[size_t(qy) * width + qx];
+    }
+  if (count == 0) return std::numeric_limits<float>::infinity();  // a 1 x 1 image: nothing to compare
+  const int rank = (3 * count) / 4;
+  std::nth_element(values.begin(), values.begin() + rank, values.begin() + count);
+  return values[rank];
+}
+
+// Fireflies: a pixel of one half that a rare path (a caustic, a light found by a glossy bounce)
+// made far brighter than anything near it. Every window that holds it would average it in, and it
+// would come out as a bright square the size of the window. The test is the outlier test of
+// Cycles' non-local means denoiser (Blender 2.8, kernel_filter_detect_outliers: brighter than twice
+// the 75th percentile of its 5 x 5 neighbourhood; see DeCoro, Weyrich & Rusinkiewicz 2010 on
+// outlier rejection in Monte Carlo rendering), with the other half as a second witness: a pixel
+// is only an outlier when it is also more than twice as bright as the same pixel of the other
+// half, so a catchlight both halves see (a glint on a tear, one pixel wide) stays. An outlier is
+// scaled down to that bound (hue kept); the energy above it is lost, as in Cycles.
+void suppressFireflies(int width, int height, std::vector<float>& halfA, std::vector<float>& halfB) {
+  const size_t n = size_t(width) * height;
+  std::vector<float> meanBrightness(n);
+  for (size_t p = 0; p < n; ++p) meanBrightness[p] = 0.5f * (brightness(&halfA[3 * p]) + brightness(&halfB[3 * p]));
+  std::vector<float> bound(n);
+  tbb::parallel_for(tbb::blocked_range<int>(0, height), [&](const tbb::blocked_range<int>& rows) {
+    for (int y = rows.begin(); y != rows.end(); ++y)
+      for (int x = 0; x < width; ++x)
+        bound[size_t(y) * width + x] = 2.0f * neighbourhoodUpperQuartile(meanBrightness, width, height, x, y);
+  });
+  const auto scaleDown = [](float* rgb, float limit) {
+    const float value = brightness(rgb);
+    if (value > limit && value > 0.0f)
+      for (int c = 0; c < 3; ++c) rgb[c] *= limit / value;
+  };
+  for (size_t p = 0; p < n; ++p) {
+    const float a = brightness(&halfA[3 * p]), b = brightness(&halfB[3 * p]);
+    scaleDown(&halfA[3 * p], std::max(bound[p], 2.0f * b));
+    scaleDown(&halfB[3 * p], std::max(bound[p], 2.0f * a));
+  }
+}
+
 // The variance of one half buffer's estimate, per channel. Two independent estimates a and b of
 // the same mean have sample variance (a - b)^2 / 2: one degree of freedom, so averaged over a 5 x 5
 // box. Under stratified sampling it is the right measure (each half is stratified), where the
@@ -57,10 +109,11 @@ std::vector<float> boxMean(const std::vector<float>& values, int width, int rows
 // filter blur what it takes for noise. The box spreads a catchlight's or a firefly's large
 // difference onto its neighbours, though, which would then average the catchlight in: where the
 // samples' variance (given per pixel) is lower, it is taken instead.
-std::vector<float> halfBufferVariance(const DenoiseInput& in) {
-  std::vector<float> variance(in.halfA.size());
+std::vector<float> halfBufferVariance(const DenoiseInput& in, const std::vector<float>& halfA,
+                                      const std::vector<float>& halfB) {
+  std::vector<float> variance(halfA.size());
   for (size_t i = 0; i < variance.size(); ++i) {
-    const float d = in.halfA[i] - in.halfB[i];
+    const float d = halfA[i] - halfB[i];
     variance[i] = 0.5f * d * d;
   }
   variance = boxMean(variance, in.width, in.height, 3, 2);
@@ -212,12 +265,14 @@ void checkInput(const DenoiseInput& in) {
 
 std::vector<float> denoise(const DenoiseInput& in, const DenoiseSettings& settings) {
   checkInput(in);
-  const std::vector<float> variance = halfBufferVariance(in);
+  std::vector<float> halfA = in.halfA, halfB = in.halfB;
+  suppressFireflies(in.width, in.height, halfA, halfB);
+  const std::vector<float> variance = halfBufferVariance(in, halfA, halfB);
   const std::vector<float> features = regressionFeatures(in);
   // A with B's weights, B with A's; the same variance serves both (it is symmetric in a and b).
-  const HalfFilter filterA(in, in.halfA, in.halfB, variance, features, settings);
-  const HalfFilter filterB(in, in.halfB, in.halfA, variance, features, settings);
-  std::vector<float> a(in.halfA.size()), b(in.halfB.size());
+  const HalfFilter filterA(in, halfA, halfB, variance, features, settings);
+  const HalfFilter filterB(in, halfB, halfA, variance, features, settings);
+  std::vector<float> a(halfA.size()), b(halfB.size());
   const int bands = (in.height + kBandRows - 1) / kBandRows;
   tbb::parallel_for(tbb::blocked_range<int>(0, 2 * bands, 1), [&](const tbb::blocked_range<int>& range) {
     for (int i = range.begin(); i != range.end(); ++i) {

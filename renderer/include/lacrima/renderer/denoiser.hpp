@@ -21,7 +21,10 @@
 // filter), and the output is their mean. Each fitted value is kept within the range of the
 // values that carry weight in its window: a regression may extrapolate where a bright outlier
 // (a catchlight, a firefly) sits at the window's edge with a large feature difference, and would
-// draw a dark ring around it.
+// draw a dark ring around it. Before all this, fireflies are scaled down: a pixel of one half
+// more than twice as bright as the 75th percentile of its neighbourhood and as the same pixel of
+// the other half (denoiser.cpp, suppressFireflies); else every window holding one would lift a
+// square around it.
 #include <vector>
 
 namespace lacrima {
