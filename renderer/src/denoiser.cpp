@@ -84,21 +84,19 @@ void suppressFireflies(int width, int height, std::vector<float>& halfA, std::ve
   const size_t n = size_t(width) * height;
   std::vector<float> meanBrightness(n);
   for (size_t p = 0; p < n; ++p) meanBrightness[p] = 0.5f * (brightness(&halfA[3 * p]) + brightness(&halfB[3 * p]));
-  std::vector<float> bound(n);
-  tbb::parallel_for(tbb::blocked_range<int>(0, height), [&](const tbb::blocked_range<int>& rows) {
-    for (int y = rows.begin(); y != rows.end(); ++y)
-      for (int x = 0; x < width; ++x)
-        bound[size_t(y) * width + x] = 2.0f * neighbourhoodUpperQuartile(meanBrightness, width, height, x, y);
-  });
-  const auto scaleDown = [](float* rgb, float limit) {
-    const float value = brightness(rgb);
-    if (value > limit && value > 0.0f)
+  const auto scaleDown = [](float* rgb, float value, float limit) {
+    if (value > limit)
       for (int c = 0; c < 3; ++c) rgb[c] *= limit / value;
   };
   for (size_t p = 0; p < n; ++p) {
     const float a = brightness(&halfA[3 * p]), b = brightness(&halfB[3 * p]);
-    scaleDown(&halfA[3 * p], std::max(bound[p], 2.0f * b));
-    scaleDown(&halfB[3 * p], std::max(bound[p], 2.0f * a));
+    // Only a pixel more than twice the other half's can be an outlier: the neighbourhood's
+    // percentile is sought for those alone.
+    if (!(a > 2.0f * b) && !(b > 2.0f * a)) continue;
+    const int x = int(p % size_t(width)), y = int(p / size_t(width));
+    const float bound = 2.0f * neighbourhoodUpperQuartile(meanBrightness, width, height, x, y);
+    if (a > 2.0f * b) scaleDown(&halfA[3 * p], a, std::max(bound, 2.0f * b));
+    else scaleDown(&halfB[3 * p], b, std::max(bound, 2.0f * a));
   }
 }
 
