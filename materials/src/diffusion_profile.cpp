@@ -33,6 +33,18 @@ float maxRadiusInShapes() {
   return ratio;
 }
 
+// The CDFs at maxRadius, functions of maxRadius / d alone (see maxRadiusInShapes): computed once,
+// as every probe needs them many times (nine radiusPdf calls) and makes its profile per hit.
+struct CdfsAtMaxRadius {
+  float mixture, shortComponent, longComponent;
+};
+
+const CdfsAtMaxRadius& cdfsAtMaxRadius() {
+  static const CdfsAtMaxRadius cdfs{mixtureCdf(maxRadiusInShapes(), 1.0f), exponentialCdf(maxRadiusInShapes(), 1.0f),
+                                    exponentialCdf(maxRadiusInShapes(), 3.0f)};
+  return cdfs;
+}
+
 }  // namespace
 
 float burleyDiffuseTransmissionScaling(float albedo) {
@@ -63,20 +75,21 @@ float DiffusionProfile::radiusPdf(int channel, float r) const {
   const float d = shape_[channel];
   if (r < 0.0f || r >= maxRadius_[channel]) return 0.0f;
   const float untruncated = kShortWeight * std::exp(-r / d) / d + kLongWeight * std::exp(-r / (3.0f * d)) / (3.0f * d);
-  return untruncated / mixtureCdf(maxRadius_[channel], d);
+  return untruncated / cdfsAtMaxRadius().mixture;
 }
 
 float DiffusionProfile::sampleRadius(int channel, float u) const {
   // The truncated mixture is a mixture of the truncated components, each weighted by the share
   // of its energy inside maxRadius; each is inverted exactly.
   const float d = shape_[channel], rMax = maxRadius_[channel];
-  const float shortInside = kShortWeight * exponentialCdf(rMax, d);
-  const float longInside = kLongWeight * exponentialCdf(rMax, 3.0f * d);
+  const float shortInside = kShortWeight * cdfsAtMaxRadius().shortComponent;
+  const float longInside = kLongWeight * cdfsAtMaxRadius().longComponent;
   const float pShort = shortInside / (shortInside + longInside);
   const bool shortComponent = u < pShort;
   const float mean = shortComponent ? d : 3.0f * d;
   const float v = shortComponent ? u / pShort : (u - pShort) / (1.0f - pShort);
-  const float r = -mean * std::log1p(-std::min(v, 0.99999994f) * exponentialCdf(rMax, mean));
+  const float inside = shortComponent ? cdfsAtMaxRadius().shortComponent : cdfsAtMaxRadius().longComponent;
+  const float r = -mean * std::log1p(-std::min(v, 0.99999994f) * inside);
   return std::min(r, std::nextafter(rMax, 0.0f));
 }
 

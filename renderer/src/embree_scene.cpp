@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -11,6 +12,7 @@
 #include <string>
 
 #include "lacrima/geometry/shapes.hpp"
+#include "lacrima/materials/material.hpp"
 
 namespace lacrima {
 
@@ -75,17 +77,24 @@ EmbreeScene::EmbreeScene(const Frame& frame, int threads) : frame_(&frame), thre
   // each mesh's own BVH is still a full SAH build (see addMesh).
   rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_LOW);
   // Robust traversal: rays grazing shared edges of the face mesh must not slip through.
-  rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST);
+  // The context filter lets crossingsOf see every hit of one traversal; other queries pass none.
+  rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
+
+  dielectricScene_ = rtcNewScene(device_);
+  rtcSetSceneBuildQuality(dielectricScene_, RTC_BUILD_QUALITY_LOW);
+  rtcSetSceneFlags(dielectricScene_, RTC_SCENE_FLAG_ROBUST);
 
   for (uint32_t i = 0; i < frame.meshes.size(); ++i) {
     const MeshInstance& instance = frame.meshes[i];
     checkWetness(instance);
     meshGeometry_.push_back(addMesh(instance.mesh, Kind::Mesh, i, instance.moves() ? &instance.positionsAtClose : nullptr));
+    attachToDielectricScene(meshGeometry_.back(), instance.materialId);
   }
   for (uint32_t i = 0; i < frame.spheres.size(); ++i) {
     const Sphere& sphere = frame.spheres[i];
     sphereGeometry_.push_back(
         addSphere(sphere.center, sphere.radius, Kind::Sphere, i, sphere.centerAtClose ? &*sphere.centerAtClose : nullptr));
+    attachToDielectricScene(sphereGeometry_.back(), sphere.materialId);
   }
   lightMeshes_.resize(frame.lights.size());
   for (uint32_t i = 0; i < frame.lights.size(); ++i) {
@@ -98,9 +107,11 @@ EmbreeScene::EmbreeScene(const Frame& frame, int threads) : frame_(&frame), thre
     }
   }
   rtcCommitScene(scene_);
+  rtcCommitScene(dielectricScene_);
 }
 
 EmbreeScene::~EmbreeScene() {
+  if (dielectricScene_) rtcReleaseScene(dielectricScene_);
   if (scene_) rtcReleaseScene(scene_);
   if (device_) rtcReleaseDevice(device_);
 }
@@ -164,15 +175,33 @@ void EmbreeScene::recordGeometry(unsigned geometryId, const GeometryRecord& reco
   records_[geometryId] = record;
 }
 
+bool EmbreeScene::isDielectric(uint32_t materialId) const {
+  return materialId < frame_->materials.size() && dielectricMedium(frame_->materials[materialId].params).has_value();
+}
+
+void EmbreeScene::attachToDielectricScene(unsigned geometryId, uint32_t materialId) {
+  if (geometryId == kNoGeometry || !isDielectric(materialId)) return;
+  rtcAttachGeometryByID(dielectricScene_, records_[geometryId].geometry, geometryId);
+  records_[geometryId].dielectric = true;
+}
+
 bool EmbreeScene::canRefitTo(const Frame& frame, int threads) const {
   // Another thread count needs another Embree device.
   if (threads != threads_ || frame.meshes.size() != meshGeometry_.size() ||
       frame.spheres.size() != sphereGeometry_.size() || frame.lights.size() != lightGeometry_.size())
     return false;
+  // The dielectric scene holds the geometries of dielectric materials: those must stay so.
+  const auto keepsDielectric = [&](unsigned geometryId, uint32_t materialId) {
+    const bool dielectric = materialId < frame.materials.size() && dielectricMedium(frame.materials[materialId].params);
+    return geometryId == kNoGeometry || records_[geometryId].dielectric == dielectric;
+  };
   for (size_t i = 0; i < frame.meshes.size(); ++i)
-    if (!meshHasLayout(frame.meshes[i], meshGeometry_[i])) return false;
+    if (!meshHasLayout(frame.meshes[i], meshGeometry_[i]) || !keepsDielectric(meshGeometry_[i], frame.meshes[i].materialId))
+      return false;
   for (size_t i = 0; i < frame.spheres.size(); ++i)
-    if (!sphereHasLayout(frame.spheres[i].centerAtClose.has_value(), sphereGeometry_[i])) return false;
+    if (!sphereHasLayout(frame.spheres[i].centerAtClose.has_value(), sphereGeometry_[i]) ||
+        !keepsDielectric(sphereGeometry_[i], frame.spheres[i].materialId))
+      return false;
   for (size_t i = 0; i < frame.lights.size(); ++i) {
     const bool isRectangle = frame.lights[i].shape == AreaLight::Shape::Rectangle;
     if (isRectangle != (records_[lightGeometry_[i]].kind == Kind::RectLight)) return false;
@@ -234,6 +263,7 @@ SceneRefitTimes EmbreeScene::refitTo(const Frame& frame) {
   const auto uploaded = std::chrono::steady_clock::now();
   commitChangedGeometries();
   rtcCommitScene(scene_);
+  rtcCommitScene(dielectricScene_);
   const auto committed = std::chrono::steady_clock::now();
   return {std::chrono::duration<double>(uploaded - start).count(),
           std::chrono::duration<double>(committed - uploaded).count()};
@@ -265,9 +295,9 @@ void EmbreeScene::moveSphere(const Vec3& center, float radius, const Vec3* cente
   if (changed) changedGeometries_.push_back(geometryId);
 }
 
-void EmbreeScene::surfaceOfMesh(const MeshInstance& instance, float time, const RTCHit& rtcHit, SurfaceHit& hit) const {
+void EmbreeScene::surfaceOfMesh(const MeshInstance& instance, float time, const uint32_t* tri, float u, float v,
+                                SurfaceHit& hit) const {
   const TriangleMesh& mesh = instance.mesh;
-  const uint32_t* tri = &mesh.indices[3 * size_t(rtcHit.primID)];
   // Vertices at the ray's time, as Embree interpolated them (linear between the time steps).
   const auto positionAt = [&](uint32_t i) -> Vec3 {
     return instance.moves() ? Vec3((1.0f - time) * mesh.positions[i] + time * instance.positionsAtClose[i])
@@ -278,7 +308,7 @@ void EmbreeScene::surfaceOfMesh(const MeshInstance& instance, float time, const 
                                            : Vec3((1.0f - time) * mesh.normals[i] + time * instance.normalsAtClose[i]);
   };
   const Vec3 p0 = positionAt(tri[0]), p1 = positionAt(tri[1]), p2 = positionAt(tri[2]);
-  const float u = rtcHit.u, v = rtcHit.v, w = 1.0f - u - v;
+  const float w = 1.0f - u - v;
   // Barycentric position is more precise than origin + t * direction far from the origin.
   hit.position = w * p0 + u * p1 + v * p2;
   hit.geometricNormal = (p1 - p0).cross(p2 - p0).normalized();
@@ -304,27 +334,47 @@ bool EmbreeScene::intersect(const Ray& ray, SurfaceHit& hit) const {
   rayHit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(scene_, &context, &rayHit);
   if (rayHit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
+  hitAt(ray, {rayHit.ray.tfar, rayHit.hit.geomID, rayHit.hit.primID, Vec2(rayHit.hit.u, rayHit.hit.v)}, hit);
+  return true;
+}
 
-  const GeometryRecord& record = records_[rayHit.hit.geomID];
-  hit.distance = rayHit.ray.tfar;
-  hit.rayDistance = rayHit.ray.tfar;
+bool EmbreeScene::intersectDielectrics(const Ray& ray, SurfaceHit& hit) const {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRayHit rayHit;
+  rayHit.ray = makeRay(ray.origin, ray.direction, ray.tfar, ray.time, ray.tnear);
+  rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rayHit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(dielectricScene_, &context, &rayHit);
+  if (rayHit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
+  hitAt(ray, {rayHit.ray.tfar, rayHit.hit.geomID, rayHit.hit.primID, Vec2(rayHit.hit.u, rayHit.hit.v)}, hit);
+  return true;
+}
+
+void EmbreeScene::hitAt(const Ray& ray, const SurfaceCrossing& crossing, SurfaceHit& hit) const {
+  const GeometryRecord& record = records_[crossing.geometryId];
+  hit.distance = crossing.rayDistance;
+  hit.rayDistance = crossing.rayDistance;
   hit.lightIndex = -1;
   hit.meshIndex = -1;
-  hit.geometryId = rayHit.hit.geomID;
-  hit.primitiveId = rayHit.hit.primID;
-  hit.barycentric = Vec2(rayHit.hit.u, rayHit.hit.v);
+  hit.geometryId = crossing.geometryId;
+  hit.primitiveId = crossing.primitiveId;
+  hit.barycentric = crossing.barycentric;
+  const float u = crossing.barycentric.x(), v = crossing.barycentric.y();
   switch (record.kind) {
     case Kind::Mesh: {
       const MeshInstance& instance = frame_->meshes[record.index];
-      surfaceOfMesh(instance, ray.time, rayHit.hit, hit);
+      surfaceOfMesh(instance, ray.time, &instance.mesh.indices[3 * size_t(crossing.primitiveId)], u, v, hit);
       hit.meshIndex = int(record.index);
       hit.materialId = instance.materialId;
       break;
     }
-    case Kind::RectLight:
-      surfaceOfMesh(lightMeshes_[record.index], 0.0f, rayHit.hit, hit);
+    case Kind::RectLight: {
+      const TriangleMesh& mesh = lightMeshes_[record.index].mesh;
+      surfaceOfMesh(lightMeshes_[record.index], 0.0f, &mesh.indices[3 * size_t(crossing.primitiveId)], u, v, hit);
       hit.lightIndex = int(record.index);
       break;
+    }
     case Kind::Sphere:
     case Kind::SphereLight: {
       hit.wetness = 0.0f;
@@ -342,7 +392,71 @@ bool EmbreeScene::intersect(const Ray& ray, SurfaceHit& hit) const {
       break;
     }
   }
-  return true;
+}
+
+bool EmbreeScene::hasMaterial(unsigned geometryId, uint32_t materialId) const {
+  const GeometryRecord& record = records_[geometryId];
+  if (record.kind == Kind::Mesh) return frame_->meshes[record.index].materialId == materialId;
+  return record.kind == Kind::Sphere && frame_->spheres[record.index].materialId == materialId;
+}
+
+namespace {
+
+// An intersection context that carries what crossingsOf collects (Embree passes the context's
+// address to the filter; the RTCIntersectContext must come first).
+struct CrossingCollector {
+  RTCIntersectContext context;
+  const EmbreeScene* scene;
+  uint32_t materialId;
+  SurfaceCrossing* crossings;
+  int capacity;
+  int count;
+};
+
+bool nearerCrossing(const SurfaceCrossing& a, const SurfaceCrossing& b) {
+  if (a.rayDistance != b.rayDistance) return a.rayDistance < b.rayDistance;
+  return a.geometryId != b.geometryId ? a.geometryId < b.geometryId : a.primitiveId < b.primitiveId;
+}
+
+}  // namespace
+
+void EmbreeScene::recordCrossing(const RTCFilterFunctionNArguments* arguments) {
+  arguments->valid[0] = 0;  // reject every hit: the traversal goes on to the next
+  auto* collector = reinterpret_cast<CrossingCollector*>(const_cast<RTCIntersectContext*>(arguments->context));
+  const unsigned geometryId = RTCHitN_geomID(arguments->hit, arguments->N, 0);
+  if (!collector->scene->hasMaterial(geometryId, collector->materialId)) return;
+  const SurfaceCrossing crossing{RTCRayN_tfar(arguments->ray, arguments->N, 0), geometryId,
+                                 RTCHitN_primID(arguments->hit, arguments->N, 0),
+                                 Vec2(RTCHitN_u(arguments->hit, arguments->N, 0), RTCHitN_v(arguments->hit, arguments->N, 0))};
+  if (collector->count < collector->capacity) {
+    collector->crossings[collector->count++] = crossing;
+    return;
+  }
+  // Full: the crossing replaces the farthest kept one if it is nearer.
+  SurfaceCrossing* farthest = std::max_element(collector->crossings, collector->crossings + collector->count, nearerCrossing);
+  if (nearerCrossing(crossing, *farthest)) *farthest = crossing;
+}
+
+int EmbreeScene::crossingsOf(const Ray& ray, uint32_t materialId, SurfaceCrossing* crossings, int capacity) const {
+  constexpr int kCollected = 32;  // more than any probe chord crosses the skin; the nearest are kept
+  std::array<SurfaceCrossing, kCollected> collected;
+  CrossingCollector collector{{}, this, materialId, collected.data(), kCollected, 0};
+  rtcInitIntersectContext(&collector.context);
+  collector.context.filter = &EmbreeScene::recordCrossing;
+  RTCRayHit rayHit;
+  rayHit.ray = makeRay(ray.origin, ray.direction, ray.tfar, ray.time, ray.tnear);
+  rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rayHit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(scene_, &collector.context, &rayHit);
+  std::sort(collected.begin(), collected.begin() + collector.count, nearerCrossing);
+  int count = 0;
+  for (int i = 0; i < collector.count && count < capacity; ++i) {
+    // A crossing just past the previous one is that crossing again (a shared edge reports both
+    // triangles), as a ray restarted just past each hit would skip it.
+    if (count > 0 && collected[i].rayDistance < crossings[count - 1].rayDistance * (1.0f + 1e-5f)) continue;
+    crossings[count++] = collected[i];
+  }
+  return count;
 }
 
 SurfacePatch EmbreeScene::patchOf(const SurfaceHit& hit, float time) const {

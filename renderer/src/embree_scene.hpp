@@ -36,6 +36,14 @@ struct SurfaceHit {
   Vec3 dpdv = Vec3::Zero();
 };
 
+// Where a ray crosses a surface, as Embree reports it, before any hit set-up (crossingsOf).
+struct SurfaceCrossing {
+  float rayDistance = 0.0f;  // Embree's t from the ray's origin
+  unsigned geometryId = 0;
+  unsigned primitiveId = 0;
+  Vec2 barycentric = Vec2::Zero();
+};
+
 // What one refitTo spent: copying the changed vertices into Embree's buffers, then the commits
 // (each changed geometry's BVH, the top level).
 struct SceneRefitTimes {
@@ -63,6 +71,19 @@ class EmbreeScene {
   SceneRefitTimes refitTo(const Frame& frame);
 
   bool intersect(const Ray& ray, SurfaceHit& hit) const;
+  // Every crossing of a mesh or sphere of material `materialId` along the ray (tnear < t < tfar),
+  // found in one traversal (an intersection filter that records each hit and rejects it, so
+  // Embree goes on: Cycles' "local" intersection for subsurface does the same). Sorted by
+  // distance; crossings within a relative 1e-5 of the previous one are taken as the same
+  // crossing reported twice (a ray through a shared edge); the nearest `capacity` are kept.
+  // Returns how many were written to `crossings`.
+  int crossingsOf(const Ray& ray, uint32_t materialId, SurfaceCrossing* crossings, int capacity) const;
+  // The hit at a crossing that crossingsOf found along `ray`, as intersect would have set it up.
+  void hitAt(const Ray& ray, const SurfaceCrossing& crossing, SurfaceHit& hit) const;
+  // The nearest hit among the dielectric surfaces alone (meshes and spheres whose material is a
+  // dielectric medium: water, cornea), ignoring everything else. A second, small BVH holds them,
+  // so the query costs a fraction of intersect's for a ray that starts on the large skin mesh.
+  bool intersectDielectrics(const Ray& ray, SurfaceHit& hit) const;
   // True when anything blocks the segment origin + t * direction, 0 < t < maxDistance.
   // time: the shutter time of the path, as in Ray::time.
   bool occluded(const Vec3& origin, const Vec3& direction, float maxDistance, float time = 0.0f) const;
@@ -83,6 +104,7 @@ class EmbreeScene {
     unsigned timeSteps = 1;
     size_t vertexCount = 0;
     size_t triangleCount = 0;
+    bool dielectric = false;  // also in dielectricScene_
   };
   static constexpr unsigned kNoGeometry = RTC_INVALID_GEOMETRY_ID;  // a mesh without triangles
 
@@ -90,12 +112,17 @@ class EmbreeScene {
   unsigned addMesh(const TriangleMesh& mesh, Kind kind, uint32_t index, const std::vector<Vec3>* positionsAtClose);
   unsigned addSphere(const Vec3& center, float radius, Kind kind, uint32_t index, const Vec3* centerAtClose);
   void recordGeometry(unsigned geometryId, const GeometryRecord& record);
+  bool isDielectric(uint32_t materialId) const;
+  void attachToDielectricScene(unsigned geometryId, uint32_t materialId);
   bool meshHasLayout(const MeshInstance& instance, unsigned geometryId) const;
   bool sphereHasLayout(bool moves, unsigned geometryId) const;
   void moveMesh(const TriangleMesh& mesh, const std::vector<Vec3>* positionsAtClose, unsigned geometryId);
   void moveSphere(const Vec3& center, float radius, const Vec3* centerAtClose, unsigned geometryId);
   void commitChangedGeometries();
-  void surfaceOfMesh(const MeshInstance& instance, float time, const RTCHit& rtcHit, SurfaceHit& hit) const;
+  void surfaceOfMesh(const MeshInstance& instance, float time, const uint32_t* triangle, float u, float v,
+                     SurfaceHit& hit) const;
+  bool hasMaterial(unsigned geometryId, uint32_t materialId) const;
+  static void recordCrossing(const RTCFilterFunctionNArguments* arguments);
 
   const Frame* frame_;
   int threads_;
@@ -106,6 +133,7 @@ class EmbreeScene {
   std::vector<unsigned> changedGeometries_;  // moved by this refitTo, committed together at its end
   RTCDevice device_ = nullptr;
   RTCScene scene_ = nullptr;
+  RTCScene dielectricScene_ = nullptr;  // the dielectric geometries again, with the same ids
 };
 
 }  // namespace lacrima

@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <limits>
 
 namespace lacrima {
 
@@ -17,7 +16,6 @@ namespace {
 // probe sees edge-on (a crease, the side of the nose), with MIS.
 constexpr std::array<float, 3> kAxisProbability = {0.8f, 0.1f, 0.1f};
 constexpr int kMaxCandidates = 8;
-constexpr int kMaxCrossings = 16;  // surfaces of other materials crossed along one probe
 
 // The projection axes about the entry's normal: axes[0] the normal, then the two tangents.
 std::array<Vec3, 3> projectionAxes(const Vec3& normal) {
@@ -42,30 +40,6 @@ float remainderWithin(const Color& probabilities, int channel, float u) {
   for (int c = 0; c < channel; ++c) below += std::max(probabilities[c], 0.0f);
   const float within = (u - below) / probabilities[channel];
   return std::clamp(within, 0.0f, 0.99999994f);
-}
-
-struct Candidate {
-  Vec3 position;
-  Vec3 geometricNormal;  // the winding normal, as the hit gives it
-  Vec3 shadingNormal;
-};
-
-// The crossings of the skin material along origin + t direction, 0 < t < length, in order.
-int findCandidates(const EmbreeScene& scene, uint32_t materialId, const Vec3& origin, const Vec3& direction,
-                   float length, float time, std::array<Candidate, kMaxCandidates>& found, uint64_t& rays) {
-  int count = 0;
-  Ray ray{origin, direction, time};
-  ray.tfar = length;
-  for (int crossing = 0; crossing < kMaxCrossings && count < kMaxCandidates; ++crossing) {
-    SurfaceHit hit;
-    ++rays;
-    if (!scene.intersect(ray, hit)) break;
-    if (hit.lightIndex < 0 && hit.materialId == materialId)
-      found[count++] = {hit.position, hit.geometricNormal, hit.shadingNormal};
-    // On along the same line, just past this hit (a fixed line keeps the density exact).
-    ray.tnear = std::nextafter(hit.rayDistance * (1.0f + 1e-5f), std::numeric_limits<float>::infinity());
-  }
-  return count;
 }
 
 // The density (per unit area of the exit surface) with which a probe from `entry` reaches `exit`
@@ -107,11 +81,14 @@ std::optional<SubsurfaceExit> probeDiffusionExit(const EmbreeScene& scene, const
   const Vec3& across2 = axes[(axis + 2) % 3];
   const float halfChord = std::sqrt(std::max(rMax * rMax - radius * radius, 0.0f));
   const Vec3 onDisk = entry + radius * (std::cos(angle) * across1 + std::sin(angle) * across2);
-  std::array<Candidate, kMaxCandidates> candidates;
-  const int count = findCandidates(scene, surface.materialId, onDisk + halfChord * axes[axis], -axes[axis],
-                                   2.0f * halfChord, time, candidates, rays);
+  // Every skin crossing of the chord in one traversal; only the chosen one gets a hit set-up.
+  const Ray chord{onDisk + halfChord * axes[axis], -axes[axis], time, 0.0f, 2.0f * halfChord};
+  std::array<SurfaceCrossing, kMaxCandidates> candidates;
+  ++rays;
+  const int count = scene.crossingsOf(chord, surface.materialId, candidates.data(), kMaxCandidates);
   if (count == 0) return std::nullopt;
-  const Candidate& chosen = candidates[std::min(int(u.candidate * float(count)), count - 1)];
+  SurfaceHit chosen;
+  scene.hitAt(chord, candidates[std::min(int(u.candidate * float(count)), count - 1)], chosen);
   const Vec3 ng = surface.entryOnWindingSide ? chosen.geometricNormal : Vec3(-chosen.geometricNormal);
   const Vec3 ns = chosen.shadingNormal.dot(ng) > 0.0f ? chosen.shadingNormal : Vec3(-chosen.shadingNormal);
   const float density = probeDensity(profile, axes, channels, entry, chosen.position, ng);

@@ -46,7 +46,8 @@ int pickChannel(const Color& probabilities, float u);
 
 // The refractive index of what lies outside the skin at a surface point: the first surface along
 // the outward normal decides; a dielectric's surface seen from inside means the point is under it
-// (a drop on the skin), anything else means air (1). One ray query, counted in `rays`.
+// (a drop on the skin), anything else means air (1). One ray query against the dielectrics alone,
+// a second (occlusion up to the dielectric) only under one; counted in `rays`.
 float indexOutsideSkin(const EmbreeScene& scene, const std::vector<float>& dielectricIndex, const Vec3& position,
                        const Vec3& outwardNormal, float time, uint64_t& rays);
 
