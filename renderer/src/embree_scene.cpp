@@ -495,6 +495,14 @@ SurfacePatch EmbreeScene::patchOf(const SurfaceHit& hit, float time) const {
   return patch;
 }
 
+bool EmbreeScene::dielectricOnSegment(const Vec3& origin, const Vec3& direction, float maxDistance, float time) const {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRay ray = makeRay(origin, direction, maxDistance, time);
+  rtcOccluded1(dielectricScene_, &context, &ray);
+  return ray.tfar < 0.0f;  // Embree sets tfar to -inf on a hit
+}
+
 bool EmbreeScene::occluded(const Vec3& origin, const Vec3& direction, float maxDistance, float time) const {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);

@@ -84,6 +84,9 @@ class EmbreeScene {
   // dielectric medium: water, cornea), ignoring everything else. A second, small BVH holds them,
   // so the query costs a fraction of intersect's for a ray that starts on the large skin mesh.
   bool intersectDielectrics(const Ray& ray, SurfaceHit& hit) const;
+  // True when a dielectric surface lies on the segment origin + t * direction, 0 < t < maxDistance
+  // (the same small BVH, any hit, no hit set-up).
+  bool dielectricOnSegment(const Vec3& origin, const Vec3& direction, float maxDistance, float time) const;
   // True when anything blocks the segment origin + t * direction, 0 < t < maxDistance.
   // time: the shutter time of the path, as in Ray::time.
   bool occluded(const Vec3& origin, const Vec3& direction, float maxDistance, float time = 0.0f) const;

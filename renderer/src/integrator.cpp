@@ -229,6 +229,13 @@ Color PathIntegrator::sampleDirectLight(const Vertex& v, const MediumStack& medi
   const float maxDistance = std::isinf(light.distance) ? light.distance : light.distance * (1.0f - 1e-4f);
   ++counters.rays;
   const bool blocked = scene_.occluded(origin, light.direction, maxDistance, v.time);
+  // Blocked with no dielectric on the way: something opaque (or another light) is in front, and
+  // every caustics mode gives no light. The dielectrics' small BVH settles it without the full
+  // hit that MNEE's seed or the transparent shadow would trace to find that out.
+  if (blocked) {
+    ++counters.rays;
+    if (!scene_.dielectricOnSegment(origin, light.direction, maxDistance, v.time)) return Color::Zero();
+  }
   // MNEE seeds its chain with this straight shadow ray (so a sample whose straight direction
   // is below the surface, f = 0 above, finds no caustic either).
   if (blocked && frame_.settings.causticsMode() == Caustics::Mnee)
