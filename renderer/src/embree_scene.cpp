@@ -325,27 +325,20 @@ void EmbreeScene::surfaceOfMesh(const MeshInstance& instance, float time, const 
   if (hit.hasUv) uvOfTriangle(mesh, tri, {p0, p1, p2}, w, u, v, hit);
 }
 
-bool EmbreeScene::intersect(const Ray& ray, SurfaceHit& hit) const {
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
-  RTCRayHit rayHit;
-  rayHit.ray = makeRay(ray.origin, ray.direction, ray.tfar, ray.time, ray.tnear);
-  rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-  rayHit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-  rtcIntersect1(scene_, &context, &rayHit);
-  if (rayHit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
-  hitAt(ray, {rayHit.ray.tfar, rayHit.hit.geomID, rayHit.hit.primID, Vec2(rayHit.hit.u, rayHit.hit.v)}, hit);
-  return true;
-}
+bool EmbreeScene::intersect(const Ray& ray, SurfaceHit& hit) const { return nearestHit(scene_, ray, hit); }
 
 bool EmbreeScene::intersectDielectrics(const Ray& ray, SurfaceHit& hit) const {
+  return nearestHit(dielectricScene_, ray, hit);
+}
+
+bool EmbreeScene::nearestHit(RTCScene scene, const Ray& ray, SurfaceHit& hit) const {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRayHit rayHit;
   rayHit.ray = makeRay(ray.origin, ray.direction, ray.tfar, ray.time, ray.tnear);
   rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rayHit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-  rtcIntersect1(dielectricScene_, &context, &rayHit);
+  rtcIntersect1(scene, &context, &rayHit);
   if (rayHit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
   hitAt(ray, {rayHit.ray.tfar, rayHit.hit.geomID, rayHit.hit.primID, Vec2(rayHit.hit.u, rayHit.hit.v)}, hit);
   return true;
@@ -496,18 +489,18 @@ SurfacePatch EmbreeScene::patchOf(const SurfaceHit& hit, float time) const {
 }
 
 bool EmbreeScene::dielectricOnSegment(const Vec3& origin, const Vec3& direction, float maxDistance, float time) const {
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
-  RTCRay ray = makeRay(origin, direction, maxDistance, time);
-  rtcOccluded1(dielectricScene_, &context, &ray);
-  return ray.tfar < 0.0f;  // Embree sets tfar to -inf on a hit
+  return anyHit(dielectricScene_, origin, direction, maxDistance, time);
 }
 
 bool EmbreeScene::occluded(const Vec3& origin, const Vec3& direction, float maxDistance, float time) const {
+  return anyHit(scene_, origin, direction, maxDistance, time);
+}
+
+bool EmbreeScene::anyHit(RTCScene scene, const Vec3& origin, const Vec3& direction, float maxDistance, float time) {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRay ray = makeRay(origin, direction, maxDistance, time);
-  rtcOccluded1(scene_, &context, &ray);
+  rtcOccluded1(scene, &context, &ray);
   return ray.tfar < 0.0f;  // Embree sets tfar to -inf on a hit
 }
 

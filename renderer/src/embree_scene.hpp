@@ -125,6 +125,8 @@ class EmbreeScene {
   void surfaceOfMesh(const MeshInstance& instance, float time, const uint32_t* triangle, float u, float v,
                      SurfaceHit& hit) const;
   bool hasMaterial(unsigned geometryId, uint32_t materialId) const;
+  bool nearestHit(RTCScene scene, const Ray& ray, SurfaceHit& hit) const;
+  static bool anyHit(RTCScene scene, const Vec3& origin, const Vec3& direction, float maxDistance, float time);
   static void recordCrossing(const RTCFilterFunctionNArguments* arguments);
 
   const Frame* frame_;
