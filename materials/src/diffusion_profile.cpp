@@ -82,13 +82,14 @@ float DiffusionProfile::sampleRadius(int channel, float u) const {
   // The truncated mixture is a mixture of the truncated components, each weighted by the share
   // of its energy inside maxRadius; each is inverted exactly.
   const float d = shape_[channel], rMax = maxRadius_[channel];
-  const float shortInside = kShortWeight * cdfsAtMaxRadius().shortComponent;
-  const float longInside = kLongWeight * cdfsAtMaxRadius().longComponent;
+  const CdfsAtMaxRadius& cdfs = cdfsAtMaxRadius();
+  const float shortInside = kShortWeight * cdfs.shortComponent;
+  const float longInside = kLongWeight * cdfs.longComponent;
   const float pShort = shortInside / (shortInside + longInside);
   const bool shortComponent = u < pShort;
   const float mean = shortComponent ? d : 3.0f * d;
   const float v = shortComponent ? u / pShort : (u - pShort) / (1.0f - pShort);
-  const float inside = shortComponent ? cdfsAtMaxRadius().shortComponent : cdfsAtMaxRadius().longComponent;
+  const float inside = shortComponent ? cdfs.shortComponent : cdfs.longComponent;
   const float r = -mean * std::log1p(-std::min(v, 0.99999994f) * inside);
   return std::min(r, std::nextafter(rMax, 0.0f));
 }

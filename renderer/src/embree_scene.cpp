@@ -175,12 +175,12 @@ void EmbreeScene::recordGeometry(unsigned geometryId, const GeometryRecord& reco
   records_[geometryId] = record;
 }
 
-bool EmbreeScene::isDielectric(uint32_t materialId) const {
-  return materialId < frame_->materials.size() && dielectricMedium(frame_->materials[materialId].params).has_value();
+bool EmbreeScene::isDielectric(const Frame& frame, uint32_t materialId) {
+  return materialId < frame.materials.size() && dielectricMedium(frame.materials[materialId].params).has_value();
 }
 
 void EmbreeScene::attachToDielectricScene(unsigned geometryId, uint32_t materialId) {
-  if (geometryId == kNoGeometry || !isDielectric(materialId)) return;
+  if (geometryId == kNoGeometry || !isDielectric(*frame_, materialId)) return;
   rtcAttachGeometryByID(dielectricScene_, records_[geometryId].geometry, geometryId);
   records_[geometryId].dielectric = true;
 }
@@ -192,8 +192,7 @@ bool EmbreeScene::canRefitTo(const Frame& frame, int threads) const {
     return false;
   // The dielectric scene holds the geometries of dielectric materials: those must stay so.
   const auto keepsDielectric = [&](unsigned geometryId, uint32_t materialId) {
-    const bool dielectric = materialId < frame.materials.size() && dielectricMedium(frame.materials[materialId].params);
-    return geometryId == kNoGeometry || records_[geometryId].dielectric == dielectric;
+    return geometryId == kNoGeometry || records_[geometryId].dielectric == isDielectric(frame, materialId);
   };
   for (size_t i = 0; i < frame.meshes.size(); ++i)
     if (!meshHasLayout(frame.meshes[i], meshGeometry_[i]) || !keepsDielectric(meshGeometry_[i], frame.meshes[i].materialId))

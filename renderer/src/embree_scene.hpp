@@ -115,7 +115,7 @@ class EmbreeScene {
   unsigned addMesh(const TriangleMesh& mesh, Kind kind, uint32_t index, const std::vector<Vec3>* positionsAtClose);
   unsigned addSphere(const Vec3& center, float radius, Kind kind, uint32_t index, const Vec3* centerAtClose);
   void recordGeometry(unsigned geometryId, const GeometryRecord& record);
-  bool isDielectric(uint32_t materialId) const;
+  static bool isDielectric(const Frame& frame, uint32_t materialId);
   void attachToDielectricScene(unsigned geometryId, uint32_t materialId);
   bool meshHasLayout(const MeshInstance& instance, unsigned geometryId) const;
   bool sphereHasLayout(bool moves, unsigned geometryId) const;
