@@ -75,7 +75,9 @@ TEST(Sobol, EachOfTheFourDimensionsIsStratifiedAlone) {
     for (int k = 0; k < 32; ++k) {
       const uint32_t v = kSobolDirections.v[dimension][k];
       EXPECT_EQ((v >> (31 - k)) & 1u, 1u) << dimension << " " << k;
-      if (k < 31) EXPECT_EQ(v & ((1u << (31 - k)) - 1u), 0u) << dimension << " " << k;
+      if (k < 31) {
+        EXPECT_EQ(v & ((1u << (31 - k)) - 1u), 0u) << dimension << " " << k;
+      }
     }
     for (int m : {3, 8}) {
       std::vector<int> count(size_t(1) << m, 0);

@@ -67,8 +67,9 @@ TEST_P(FlipConformance, MatchesNvidiasImplementation) {
   EXPECT_NEAR(flip.at("mean").get<double>(), expected.at("mean_flip").get<double>(), kMeanTolerance);
   EXPECT_NEAR(flip.at("max").get<double>(), expected.at("max_flip").get<double>(), kMaxTolerance);
   // Identical images have no largest error, so no pixel to compare.
-  if (expected.at("max_flip").get<double>() > 0.0)
+  if (expected.at("max_flip").get<double>() > 0.0) {
     EXPECT_EQ(flip.at("maxPixel"), expected.at("max_pixel")) << "the largest error is at another pixel";
+  }
 
   const bool hdr = expected.at("kind") == "hdr";
   EXPECT_EQ(flip.at("hdr").get<bool>(), hdr);
