@@ -121,10 +121,6 @@ float LightSampler::pdfAreaLight(int index, const Vec3& point, const Vec3& light
   return selectPdf_ * distance2 / (absCos * rectangleArea(light));
 }
 
-float LightSampler::pdfEnvironment(const Vec3& direction) const {
-  return environment_ ? selectPdf_ * environment_->pdf(direction) : 0.0f;
-}
-
 Color LightSampler::emitted(int index, const Vec3& towardsViewer) const {
   const AreaLight& light = lights_[index];
   // The emitting side is defined by the light's edges, not by the triangle winding.

@@ -28,7 +28,6 @@ class LightSampler {
   // Density of sampling direction towards area light `index` hit at `lightPoint` (normal
   // `lightNormal`) from `point`.
   float pdfAreaLight(int index, const Vec3& point, const Vec3& lightPoint, const Vec3& lightNormal) const;
-  float pdfEnvironment(const Vec3& direction) const;
   // True when next-event estimation samples the background (an environment map, not a uniform colour).
   bool environmentIsSampled() const { return environment_ != nullptr; }
 
@@ -36,7 +35,7 @@ class LightSampler {
   Color emitted(int index, const Vec3& towardsViewer) const;
   // Background radiance for rays that escape.
   Color background(const Vec3& direction) const;
-  // background(direction) and pdfEnvironment(direction) in one lookup of the map.
+  // background(direction) and the density of sampling that direction, in one lookup of the map.
   struct Background {
     Color radiance;
     float pdf = 0.0f;
