@@ -62,6 +62,44 @@ float probeDensity(const DiffusionProfile& profile, const std::array<Vec3, 3>& a
   return density;
 }
 
+// The crossing a probe takes among the `count` its chord found, and the probability it had.
+struct CandidateChoice {
+  int index = 0;
+  float probability = 1.0f;
+};
+
+// Each crossing is taken with probability proportional to the profile at its distance from the
+// entry (summed over the channels): a chord through a lid or the side of the nose also crosses
+// the far side, which the profile gives next to nothing, and a uniform choice (King et al. 2013)
+// would spend half its probes there and double the weight of the others. Any choice with known,
+// non-zero probabilities is unbiased (the weight divides by it); this one makes the weights of a
+// chord's crossings nearly equal.
+CandidateChoice chooseCandidate(const DiffusionProfile& profile, const Ray& chord, const Vec3& entry,
+                                const SurfaceCrossing* candidates, int count, float u) {
+  if (count == 1) return {};
+  std::array<float, kMaxCandidates> importance{};
+  float total = 0.0f;
+  for (int i = 0; i < count; ++i) {
+    const Vec3 crossing = chord.origin + candidates[i].rayDistance * chord.direction;
+    importance[i] = profile.eval(std::max((crossing - entry).norm(), 1e-7f)).sum();
+    total += importance[i];
+  }
+  if (!(total > 0.0f)) {  // every crossing beyond every channel's reach: rounding at the sphere's edge
+    const int index = std::min(int(u * float(count)), count - 1);
+    return {index, 1.0f / float(count)};
+  }
+  const float target = u * total;
+  float below = 0.0f;
+  int chosen = 0;
+  for (int i = 0; i < count; ++i) {
+    if (importance[i] <= 0.0f) continue;  // never taken: its probability would be 0
+    chosen = i;
+    below += importance[i];
+    if (target < below) break;
+  }
+  return {chosen, importance[chosen] / total};
+}
+
 }  // namespace
 
 std::optional<SubsurfaceExit> probeDiffusionExit(const EmbreeScene& scene, const DiffusionProfile& profile,
@@ -87,14 +125,15 @@ std::optional<SubsurfaceExit> probeDiffusionExit(const EmbreeScene& scene, const
   ++rays;
   const int count = scene.crossingsOf(chord, surface.materialId, candidates.data(), kMaxCandidates);
   if (count == 0) return std::nullopt;
+  const CandidateChoice choice = chooseCandidate(profile, chord, entry, candidates.data(), count, u.candidate);
   SurfaceHit chosen;
-  scene.hitAt(chord, candidates[std::min(int(u.candidate * float(count)), count - 1)], chosen);
+  scene.hitAt(chord, candidates[choice.index], chosen);
   const Vec3 ng = surface.entryOnWindingSide ? chosen.geometricNormal : Vec3(-chosen.geometricNormal);
   const Vec3 ns = chosen.shadingNormal.dot(ng) > 0.0f ? chosen.shadingNormal : Vec3(-chosen.shadingNormal);
   const float density = probeDensity(profile, axes, channels, entry, chosen.position, ng);
   if (!(density > 0.0f)) return std::nullopt;
   const float distance = (chosen.position - entry).norm();
-  Color weight = profile.eval(std::max(distance, 1e-7f)) * (float(count) / density);
+  Color weight = profile.eval(std::max(distance, 1e-7f)) / (choice.probability * density);
   // Radiance scales with the square of the index of the medium it is in (subsurface_walk.hpp).
   const float ratio = indexOutsideSkin(scene, dielectricIndex, entry, outwardNormal, time, rays) /
                       indexOutsideSkin(scene, dielectricIndex, chosen.position, ng, time, rays);

@@ -7,8 +7,9 @@
 // albedo), sample a radius from that channel's profile
 // and an angle, and shoot a ray along the axis through the disk at that radius, inside the
 // sphere of the channel's maximum radius. Every crossing of the same skin material is a
-// candidate; one is chosen uniformly. Its weight is R(|p_exit - p_entry|) times the number of
-// candidates over the combined density of all axes and channels (one-sample MIS), so a point
+// candidate; one is chosen in proportion to the profile at its distance (subsurface_probe.cpp).
+// Its weight is R(|p_exit - p_entry|) over that choice's probability and the combined density
+// of all axes and channels (one-sample MIS), so a point
 // that one axis samples badly (a surface seen edge-on) is covered by the others.
 #include <cstdint>
 #include <optional>

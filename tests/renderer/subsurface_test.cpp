@@ -8,6 +8,7 @@
 #include <cstring>
 
 #include "lacrima/geometry/shapes.hpp"
+#include "lacrima/materials/diffusion_profile.hpp"
 #include "lacrima/materials/subsurface.hpp"
 #include "lacrima/materials/wet_skin.hpp"
 #include "lacrima/renderer/render.hpp"
@@ -242,6 +243,37 @@ TEST(SubsurfaceDiffusion, SlabMatchesTheRandomWalk) {
     std::printf("[subsurface diffusion] slab channel %d: walk %.4f +- %.4f, diffusion %.4f +- %.4f\n", c, w.mean,
                 w.standardError, p.mean, p.standardError);
     EXPECT_NEAR(p.mean, w.mean, 5.0 * error + 0.01 * walk.albedo[c]) << "channel " << c;
+  }
+}
+
+// A slab thinner than the profile's reach under a uniform sky: the normal probes' chords cross
+// both faces, and the probe takes one of the two crossings (subsurface_probe.cpp). With any
+// choice whose probability the weight divides by, the camera sees the profile's integral over
+// both faces: A from the top, and from the bottom face at depth h, with rho = sqrt(r^2 + h^2),
+//   integral R(rho) 2 pi r dr = A / (4 * 0.99) [(e^(-h/d) - e^(-rMax/d)) + 3 (e^(-h/3d) - e^(-rMax/3d))]
+// (R of diffusion_profile.hpp, cut at rMax and scaled by 1 / 0.99). Every exit sees the sky.
+TEST(SubsurfaceDiffusion, ThinSlabReturnsTheProfileOverBothFaces) {
+  const Color albedo(0.8f, 0.6f, 0.4f), meanFreePath(0.013f, 0.0095f, 0.0067f);
+  const float thickness = 0.02f;
+  Frame frame;
+  frame.materials.push_back(Material{"skin", withDiffusion(indexMatchedSubsurfaceSkin(albedo, meanFreePath)), Color::Zero()});
+  // Opposite windings: the bottom face's normal points out of the slab as the top's does.
+  frame.meshes.push_back(MeshInstance{makeRectangle(Vec3::Zero(), Vec3(100, 0, 0), Vec3(0, 0, 100)), 0});
+  frame.meshes.push_back(MeshInstance{makeRectangle(Vec3(0, -thickness, 0), Vec3(0, 0, 100), Vec3(100, 0, 0)), 0});
+  frame.uniformBackground = Color::Ones();
+  frame.camera = lookAt(Vec3(0, 2, 1), Vec3::Zero(), 10.0f);
+  frame.settings = smallSettings(24, 64, 10);
+  const Film film = renderFrame(frame);
+  const DiffusionProfile profile(albedo, meanFreePath);
+  for (int c = 0; c < 3; ++c) {
+    const double d = profile.shape()[c], rMax = profile.maxRadius(c), h = thickness;
+    const double bottom = albedo[c] / (4.0 * 0.99) *
+                          ((std::exp(-h / d) - std::exp(-rMax / d)) + 3.0 * (std::exp(-h / (3 * d)) - std::exp(-rMax / (3 * d))));
+    const double expected = albedo[c] + bottom;
+    const test::MeanEstimate e = test::channelMean(film, c);
+    std::printf("[subsurface diffusion] thin slab channel %d: rendered %.4f +- %.4f, expected %.4f (bottom face %.4f)\n",
+                c, e.mean, e.standardError, expected, bottom);
+    EXPECT_NEAR(e.mean, expected, 5.0 * e.standardError + 0.01 * expected) << "channel " << c;
   }
 }
 
