@@ -45,6 +45,11 @@ float remainderWithin(const Color& probabilities, int channel, float u) {
 // The density (per unit area of the exit surface) with which a probe from `entry` reaches `exit`
 // (normal `exitNormal`) before the choice among candidates: the sum over the three axes and the
 // channels (probabilities `channels`), each radius measured in the plane normal to its axis.
+// A channel's chords stay inside the sphere of its maximum radius about the entry, so a channel
+// whose sphere does not hold the exit adds nothing, whatever its radius in the disk: a point on
+// curved skin may lie inside a channel's disk radius yet beyond its chord's end. pbrt-v3's
+// SeparableBSSRDF::Pdf_Sp counts such terms; they overstate the density of the wide (red)
+// profile's far points, whose weight then comes out low: a furnace sphere returned 0.989 in red.
 float probeDensity(const DiffusionProfile& profile, const std::array<Vec3, 3>& axes, const Color& channels,
                    const Vec3& entry, const Vec3& exit, const Vec3& exitNormal) {
   const Vec3 offset = exit - entry;
@@ -55,9 +60,11 @@ float probeDensity(const DiffusionProfile& profile, const std::array<Vec3, 3>& a
     // The radius in the plane normal to the axis; floored so a point on the axis stays finite.
     const float radius = std::sqrt(std::max(distanceSquared - along * along, 1e-14f));
     const float cosine = std::abs(exitNormal.dot(axes[a]));
-    for (int c = 0; c < 3; ++c)
-      density += kAxisProbability[a] * channels[c] * profile.radiusPdf(c, radius) * cosine /
-                 (2.0f * kPi * radius);
+    for (int c = 0; c < 3; ++c) {
+      const float reach = profile.maxRadius(c);
+      if (distanceSquared >= reach * reach) continue;  // beyond every chord of channel c
+      density += kAxisProbability[a] * channels[c] * profile.radiusPdf(c, radius) * cosine / (2.0f * kPi * radius);
+    }
   }
   return density;
 }

@@ -278,8 +278,10 @@ TEST(SubsurfaceDiffusion, ThinSlabReturnsTheProfileOverBothFaces) {
 }
 
 // Without absorption (A = 1) a sphere much larger than the profile returns the environment: the
-// probe's density stays a density on a curved surface (axes and channels combined). Floor 1.5 %:
-// the profile is a flat-surface model.
+// probe's density stays a density on a curved surface (axes and channels combined). On a sphere
+// the area within a distance d of a point is pi d^2, as on a plane (Archimedes), so the
+// flat-surface profile integrates to 1 there too. Floor 0.3 %: a density that counted channels
+// whose chords cannot reach the exit (pbrt-v3's Pdf_Sp) read 0.989 in red and fails.
 TEST(SubsurfaceDiffusion, FurnaceSphereReturnsTheEnvironment) {
   Frame frame;
   frame.materials.push_back(Material{
@@ -287,12 +289,12 @@ TEST(SubsurfaceDiffusion, FurnaceSphereReturnsTheEnvironment) {
   frame.spheres.push_back(Sphere{Vec3::Zero(), 0.5f, 0});
   frame.uniformBackground = Color::Ones();
   frame.camera = lookAt(Vec3(0, 0, 3), Vec3::Zero(), 15.0f);
-  frame.settings = smallSettings(32, 64, 10);
+  frame.settings = smallSettings(32, 256, 10);
   const Film film = renderFrame(frame);
   for (int c = 0; c < 3; ++c) {
     const test::MeanEstimate e = test::channelMean(film, c);
     std::printf("[subsurface diffusion] furnace channel %d: %.4f +- %.4f (exact 1)\n", c, e.mean, e.standardError);
-    EXPECT_NEAR(e.mean, 1.0, 5.0 * e.standardError + 0.015) << "channel " << c;
+    EXPECT_NEAR(e.mean, 1.0, 5.0 * e.standardError + 0.003) << "channel " << c;
   }
 }
 
