@@ -54,17 +54,18 @@ float probeDensity(const DiffusionProfile& profile, const std::array<Vec3, 3>& a
                    const Vec3& entry, const Vec3& exit, const Vec3& exitNormal) {
   const Vec3 offset = exit - entry;
   const float distanceSquared = offset.squaredNorm();
+  Color reaching = channels;  // the channels' probabilities, 0 for those whose chords end short of exit
+  for (int c = 0; c < 3; ++c)
+    if (distanceSquared >= profile.maxRadius(c) * profile.maxRadius(c)) reaching[c] = 0.0f;
   float density = 0.0f;
   for (int a = 0; a < 3; ++a) {
     const float along = offset.dot(axes[a]);
     // The radius in the plane normal to the axis; floored so a point on the axis stays finite.
     const float radius = std::sqrt(std::max(distanceSquared - along * along, 1e-14f));
     const float cosine = std::abs(exitNormal.dot(axes[a]));
-    for (int c = 0; c < 3; ++c) {
-      const float reach = profile.maxRadius(c);
-      if (distanceSquared >= reach * reach) continue;  // beyond every chord of channel c
-      density += kAxisProbability[a] * channels[c] * profile.radiusPdf(c, radius) * cosine / (2.0f * kPi * radius);
-    }
+    for (int c = 0; c < 3; ++c)
+      if (reaching[c] > 0.0f)
+        density += kAxisProbability[a] * reaching[c] * profile.radiusPdf(c, radius) * cosine / (2.0f * kPi * radius);
   }
   return density;
 }
