@@ -44,6 +44,8 @@ void validatePath(std::vector<LiquidPathSample>& path, size_t regionCount) {
       throw InputError(fmt::format("tear liquid: path sample {} needs a finite position and a non-zero normal", i));
     sample.normal.normalize();
     requireFinite(sample.arcLength, "path arc length");
+    if (!(std::isfinite(sample.pinning) && sample.pinning > 0.0))
+      throw InputError(fmt::format("tear liquid: path sample {} needs a finite pinning factor > 0, got {}", i, sample.pinning));
     if (sample.contactAngleRegion < -1 || sample.contactAngleRegion >= int(regionCount))
       throw InputError(fmt::format("tear liquid: path sample {} names contact angle region {}, there are {}", i,
                                    sample.contactAngleRegion, regionCount));
@@ -265,30 +267,34 @@ bool TearLiquidSimulation::slides(double volume, double tilt, double wetness) co
 }
 
 bool TearLiquidSimulation::slidesAt(double s, double volume, double tilt, double wetness) const {
-  return slidesWith(anglesAt(s), volume, tilt, wetness);
+  return slidesWith(anglesAt(s), volume, tilt, wetness, pinningAt(s));
 }
 
-bool TearLiquidSimulation::slidesWith(size_t angles, double volume, double tilt, double wetness) const {
+bool TearLiquidSimulation::slidesWith(size_t angles, double volume, double tilt, double wetness, double pinning) const {
   const SlidingModel& model = sliding_[angles];
-  if (wetness <= 0.0) return dropSlides(model, volume, tilt);  // exactly the SlidingModel criterion when dry
+  // Exactly the SlidingModel criterion on dry skin of the contact angles' own hysteresis.
+  if (wetness <= 0.0 && pinning == 1.0) return dropSlides(model, volume, tilt);
   const double drive = model.fluid.density * volume * model.fluid.gravity * std::sin(tilt);
-  return drive > 0.0 && drive >= retentionScale(wetness) * retentionForce(model, volume);
+  return drive > 0.0 && drive >= pinning * retentionScale(wetness) * retentionForce(model, volume);
 }
+
+double TearLiquidSimulation::pinningAt(double s) const { return input_.path[pieceAt(s)].pinning; }
 
 double TearLiquidSimulation::terminalSpeed(double volume, double tilt, double wetness) const {
   return terminalSpeedWith(0, volume, tilt, wetness);
 }
 
 double TearLiquidSimulation::terminalSpeedAt(double s, double volume, double tilt, double wetness) const {
-  return terminalSpeedWith(anglesAt(s), volume, tilt, wetness);
+  return terminalSpeedWith(anglesAt(s), volume, tilt, wetness, pinningAt(s));
 }
 
-double TearLiquidSimulation::terminalSpeedWith(size_t angles, double volume, double tilt, double wetness) const {
+double TearLiquidSimulation::terminalSpeedWith(size_t angles, double volume, double tilt, double wetness,
+                                               double pinning) const {
   // de Gennes 1985 wedge dissipation: F_drive - F_retention = 3 mu v ln(L/a) w / theta_mean.
   const TearLiquidParams& p = input_.params;
   const SlidingModel& model = sliding_[angles];
   const double drive = model.fluid.density * volume * model.fluid.gravity * std::sin(tilt);
-  const double excess = drive - retentionScale(wetness) * retentionForce(model, volume);
+  const double excess = drive - pinning * retentionScale(wetness) * retentionForce(model, volume);
   const double thetaMean = 0.5 * (model.hysteresis.advancing + model.hysteresis.receding);
   const double width = slidingBaseWidth(model, volume);
   return std::max(0.0, thetaMean * excess / (3.0 * p.viscosity * p.contactLineLogRatio * width));
@@ -343,13 +349,14 @@ void TearLiquidSimulation::moveBead(Bead& bead, int id) {
   const double tilt = tiltAt(bead.arcLength);
   const double wetness = wetnessAhead(bead, id);
   const size_t angles = anglesAt(bead.arcLength);
-  if (!slidesWith(angles, bead.volume, tilt, wetness)) {
+  const double pinning = pinningAt(bead.arcLength);
+  if (!slidesWith(angles, bead.volume, tilt, wetness, pinning)) {
     bead.phase = bead.arcLength == 0.0 ? BeadPhase::Welling : BeadPhase::Pinned;
     bead.speed = 0.0;
     return;
   }
   bead.phase = BeadPhase::Sliding;
-  const double target = std::max(terminalSpeedWith(angles, bead.volume, tilt, wetness), p.minSlideSpeed);
+  const double target = std::max(terminalSpeedWith(angles, bead.volume, tilt, wetness, pinning), p.minSlideSpeed);
   bead.speed = target + (bead.speed - target) * std::exp(-p.timeStep / p.speedRelaxationTime);
   const double wanted = bead.arcLength + bead.speed * p.timeStep;
   const double reached = nextDripSite(bead.arcLength, wanted);

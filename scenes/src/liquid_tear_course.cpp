@@ -42,15 +42,31 @@ void assignContactAngleRegions(std::vector<LiquidPathSample>& samples, const Tri
   }
 }
 
+void assignPinning(std::vector<LiquidPathSample>& samples, const FlowPath& path, const TriangleMesh& skin,
+                   const std::vector<float>& pinningPerVertex) {
+  if (pinningPerVertex.empty()) return;
+  if (pinningPerVertex.size() != skin.vertexCount() || samples.size() != path.points.size())
+    throw InputError(fmt::format("liquid tear: {} pinning factors for a skin of {} vertices, {} samples for a path of {} points",
+                                 pinningPerVertex.size(), skin.vertexCount(), samples.size(), path.points.size()));
+  for (size_t i = 0; i < samples.size(); ++i) {
+    const SurfacePoint& point = path.points[i];
+    const Vec3 w = point.barycentric;
+    double factor = 0.0;
+    for (int k = 0; k < 3; ++k) factor += double(w[k]) * pinningPerVertex[skin.indices[3 * size_t(point.triangle) + k]];
+    samples[i].pinning = factor;
+  }
+}
+
 LiquidTearCourses::LiquidTearCourses(std::shared_ptr<const LiquidTearSurface> surface, const SurfacePoint& start,
                                      const Vec3& gravity, float maxLength, int firstFrame,
-                                     std::vector<LiquidCourseRegion> regions)
+                                     std::vector<LiquidCourseRegion> regions, std::vector<float> pinning)
     : surface_(std::move(surface)),
       start_(start),
       gravity_(gravity),
       maxLength_(maxLength),
       firstFrame_(firstFrame),
-      regions_(std::move(regions)) {
+      regions_(std::move(regions)),
+      pinning_(std::move(pinning)) {
   const LiquidTearSkin first = surface_->at(firstFrame);
   adjacency_ = buildTriangleAdjacency(first.skin, findCoincidentVertices(first.skin));
   courses_.push_back(trace(firstFrame, first, nullptr));
@@ -69,6 +85,7 @@ std::shared_ptr<const LiquidTearCourse> LiquidTearCourses::trace(int frame, cons
   if (!carriesLiquid(*course)) return course;
   course->samples = liquidPathFromFlowPath(course->path, surface.skin);
   assignContactAngleRegions(course->samples, surface.skin, regions_);
+  assignPinning(course->samples, course->path, surface.skin, pinning_);
   if (previous && carriesLiquid(*previous))
     course->fromPrevious = std::make_shared<FlowPathTransfer>(previous->path, course->path, surface.skin);
   return course;

@@ -11,6 +11,7 @@
 #include "lacrima/geometry/error.hpp"
 #include "lacrima/geometry/meniscus_swelling.hpp"
 #include "liquid_tear_film.hpp"
+#include "liquid_tear_pinning.hpp"
 #include "lacrima/geometry/surface_point.hpp"
 #include "surface_anchor.hpp"
 
@@ -153,6 +154,7 @@ void resolveTear(const Shot& shot, ShotLiquidTear& tear, std::vector<LiquidTearP
   const SurfacePoint sourceOnSkin{tear.sourcePoint.triangle, tear.sourcePoint.barycentric};
   resolveMeniscus(asset, pose, surfacePosition(skin, sourceOnSkin), tear);
   tear.filmEdgeVariation = filmEdgeVariation(skin);
+  if (tear.pinningFactor > 1.0) tear.pinning = skinPinning(skin, tear.pinningFactor, tear.pinningPatchSize);
   const size_t primitive = tear.sourcePoint.primitive;
   const std::vector<Vec3>* carried =
       primitive < tear.smoothedSkins.size() && tear.smoothedSkins[primitive] ? tear.smoothedSkins[primitive].get() : nullptr;
@@ -161,7 +163,7 @@ void resolveTear(const Shot& shot, ShotLiquidTear& tear, std::vector<LiquidTearP
   std::vector<LiquidCourseRegion> regions;
   for (const ShotContactAngleRegion& region : tear.contactAngleRegions)
     regions.push_back({SurfacePoint{region.centerPoint.triangle, region.centerPoint.barycentric}, region.radius});
-  tear.courses = liquidTearCourses(shot, tear, tear.sourcePoint, carried, std::move(regions));
+  tear.courses = liquidTearCourses(shot, tear, tear.sourcePoint, carried, std::move(regions), tear.pinning);
   const std::shared_ptr<const LiquidTearCourse> first = tear.courses->at(tear.courses->firstFrame());
   if (first->path.points.size() < 2 || first->path.length() < kMinLiquidPathLength) {
     problems.push_back({childPointer(tear.pointer, "source"),
@@ -194,11 +196,12 @@ std::shared_ptr<const LiquidTearSurface> posedTearSurface(const ShotAsset& asset
 
 std::shared_ptr<const LiquidTearCourses> liquidTearCourses(const Shot& shot, const ShotLiquidTear& tear,
                                                            const ShotSurfacePoint& source, const std::vector<Vec3>* carried,
-                                                           std::vector<LiquidCourseRegion> regions) {
+                                                           std::vector<LiquidCourseRegion> regions,
+                                                           std::vector<float> pinning) {
   return std::make_shared<const LiquidTearCourses>(
       posedTearSurface(shot.assets[tear.asset], source.primitive, shot.frameStart, carried),
       SurfacePoint{source.triangle, source.barycentric}, tear.gravity, tear.maxLength,
-      liquidTearCourseFrame(shot, tear, 0.0), std::move(regions));
+      liquidTearCourseFrame(shot, tear, 0.0), std::move(regions), std::move(pinning));
 }
 
 TriangleMesh liquidPathSmoothedSkin(const TriangleMesh& skin, const std::vector<Vec3>* carried) {

@@ -56,10 +56,12 @@ std::shared_ptr<const LiquidTearSurface> posedTearSurface(const ShotAsset& asset
                                                           const std::vector<Vec3>* carried);
 // The tear's courses from the simulation's first step on, from `source` over the asset as it is now
 // (posedTearSurface with the shot's first frame as reference; `carried` as above), with the
-// contact-angle `regions` on the source's primitive (none: every sample has the tear's angles).
+// contact-angle `regions` on the source's primitive (none: every sample has the tear's angles) and
+// the skin's `pinning` per vertex of that primitive (none: 1 everywhere).
 std::shared_ptr<const LiquidTearCourses> liquidTearCourses(const Shot& shot, const ShotLiquidTear& tear,
                                                            const ShotSurfacePoint& source, const std::vector<Vec3>* carried,
-                                                           std::vector<LiquidCourseRegion> regions = {});
+                                                           std::vector<LiquidCourseRegion> regions = {},
+                                                           std::vector<float> pinning = {});
 
 // For every liquid tear: the source resolved on the first frame's skin, its courses set up (the
 // course the simulation starts on traced and checked, the first frame's one kept as tear.path)

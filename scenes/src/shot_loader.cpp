@@ -1232,7 +1232,8 @@ class ShotReader {
     ObjectReader o(c_, v, pointer,
                    {"type", "asset", "part", "source", "material", "gravity", "maxLength", "rate", "wellStart",
                     "wellEnd", "overflowVolume", "spillVolume", "contactAngles", "filmThickness", "dryingTime",
-                    "hangingContactRadius", "overhangAngle", "viscosity", "trailRefinement", "contactAngleRegions"});
+                    "hangingContactRadius", "overhangAngle", "viscosity", "trailRefinement", "contactAngleRegions",
+                    "pinning"});
     if (!o.ok()) return;
     const size_t before = c_.errorCount();
     ShotLiquidTear tear;
@@ -1268,6 +1269,7 @@ class ShotReader {
     if (auto x = o.number("overhangAngle", Range::open(0, 180))) p.overhangCosine = std::cos(*x * std::numbers::pi / 180.0);
     if (auto x = o.number("viscosity", Range::above(0))) p.viscosity = *x;
     if (auto x = o.integer("trailRefinement", Range::closed(0, 3))) tear.trailRefinementLevels = int(*x);
+    readPinning(o, tear);
     readMaterialMember(o, tear.material, tear.materialId);
     if (c_.errorCount() == before && asset) shot_.liquidTears.push_back(tear);
   }
@@ -1286,6 +1288,17 @@ class ShotReader {
     if (end && *end < (start ? *start : first))
       o.error("wellEnd", fmt::format("welling must end at or after it starts: wellEnd {} < {} {}", *end,
                                      start ? "wellStart" : "the shot's first frame", start ? *start : first));
+  }
+
+  // "pinning": {"factor": >= 1, "patchSize": m > 0 (default 4 mm)}: skin that holds the contact
+  // line up to `factor` times harder in some patches and as much softer in others.
+  void readPinning(ObjectReader& o, ShotLiquidTear& tear) {
+    const Json* v = o.find("pinning");
+    if (!v) return;
+    ObjectReader r(c_, *v, o.at("pinning"), {"factor", "patchSize"});
+    if (!r.ok()) return;
+    if (auto x = r.number("factor", Range::atLeast(1), true)) tear.pinningFactor = *x;
+    if (auto x = r.number("patchSize", Range::above(0))) tear.pinningPatchSize = *x;
   }
 
   // "contactAngles": [advancing, receding] in degrees, 0 < receding <= advancing < 180.

@@ -58,6 +58,16 @@
 //   sharply at a piece boundary (modelling choice: no blend across a region's border); a bead
 //   entering a region of larger hysteresis can pin there, one of smaller hysteresis can set off.
 //
+// * Pinning: skin is not a uniform surface; its contact-angle hysteresis varies from place to
+//   place (sebum, vellus hair, furrows, pores), so a bead slides on, slows, stops where the skin
+//   holds harder and waits until it has grown (another bead merges into it) or the slope steepens.
+//   Each path piece carries a factor on the retention force (LiquidPathSample::pinning, 1 by
+//   default); the sliding criterion and the terminal speed use the factor of the piece under the
+//   bead's centre, as they use its contact angles (modelling choice: the factor scales the
+//   Furmidge / ElSherbini & Jacobi retention force as a local change of cos theta_R - cos theta_A
+//   would; Joanny & de Gennes 1984, J. Chem. Phys. 81:552, for contact lines pinned by a
+//   heterogeneous surface).
+//
 // * Re-routing (reroute): when the surface moves, the caller traces the path again and moves the
 //   liquid onto the new course by an arc-length map (FlowPathTransfer: each bead and each trail
 //   cell's film to the nearest point of the new course of the material point it sat on); volumes
@@ -90,6 +100,10 @@ struct LiquidPathSample {
   // The contact angles of the piece from this sample to the next: an index into
   // TearLiquidParams::contactAngleRegions, or -1 for TearLiquidParams::contactAngles.
   int contactAngleRegion = -1;
+  // How strongly the skin of the piece from this sample to the next pins a contact line: a factor
+  // (finite, > 0) on the retention force there (1: the contact angles' hysteresis alone; > 1 a
+  // patch that holds beads harder, < 1 one that lets them go sooner). See "Pinning" above.
+  double pinning = 1.0;
 };
 
 // The samples of a traced flow path on `mesh` (the mesh it was traced on), each with the
@@ -267,7 +281,7 @@ class TearLiquidSimulation {
 
   // Terminal sliding speed (m/s, >= 0, before the minSlideSpeed floor) of a bead of this volume
   // at this tilt with this wetness in [0, 1], at params.contactAngles (the *At forms: at the
-  // contact angles of arc length s).
+  // contact angles and pinning of arc length s).
   double terminalSpeed(double volume, double tilt, double wetness) const;
   bool slides(double volume, double tilt, double wetness) const;
   double terminalSpeedAt(double arcLength, double volume, double tilt, double wetness) const;
@@ -291,9 +305,10 @@ class TearLiquidSimulation {
   double baseRadius(double volume, double arcLength) const;
   // Index into sliding_ / widthPerCubeRoot_ of the piece at arc length s (0: params.contactAngles).
   size_t anglesAt(double arcLength) const;
-  double terminalSpeedWith(size_t angles, double volume, double tilt, double wetness) const;
-  bool slidesWith(size_t angles, double volume, double tilt, double wetness) const;
+  double terminalSpeedWith(size_t angles, double volume, double tilt, double wetness, double pinning = 1.0) const;
+  bool slidesWith(size_t angles, double volume, double tilt, double wetness, double pinning = 1.0) const;
   double retentionScale(double wetness) const;
+  double pinningAt(double arcLength) const;
   double wetnessAhead(const Bead& bead, int id) const;
   bool isDripSite(double arcLength) const;
   // The skin at arcLength faces down (n . g_hat > overhangCosine): a hanging bead can let go there.

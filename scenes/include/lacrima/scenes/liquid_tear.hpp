@@ -48,13 +48,19 @@ struct LiquidCourseRegion {
 void assignContactAngleRegions(std::vector<LiquidPathSample>& samples, const TriangleMesh& skin,
                                const std::vector<LiquidCourseRegion>& regions);
 
+// Sets each sample's pinning factor: `pinningPerVertex` (one factor per vertex of the skin the path
+// runs over) interpolated at the path's point for that sample (the start of its piece). Leaves the
+// factors at 1 when `pinningPerVertex` is empty.
+void assignPinning(std::vector<LiquidPathSample>& samples, const FlowPath& path, const TriangleMesh& skin,
+                   const std::vector<float>& pinningPerVertex);
+
 // The flow path as traced at one integer frame's pose.
 struct LiquidTearCourse {
   int frame = 0;                          // the frame whose pose it was traced on
   FlowPath path;                          // positions and arc lengths on that frame's real skin
   float smoothedLength = 0.0f;            // its length on the smoothed skin it was traced on
   // The simulation's path (liquidPathFromFlowPath), its contact-angle regions assigned on this
-  // frame's skin (assignContactAngleRegions).
+  // frame's skin (assignContactAngleRegions) and the skin's pinning under it (assignPinning).
   std::vector<LiquidPathSample> samples;
   // From the course before it (traced at an earlier frame) to this one, measured on this frame's
   // skin; null for the first course.
@@ -73,10 +79,12 @@ struct LiquidTearCourse {
 class LiquidTearCourses {
  public:
   // `start`: the source on the surface's triangles; gravity and maxLength as in ShotLiquidTear;
-  // `regions`: the tear's contact-angle regions, in order. Traces the first course (InputError
-  // from the surface or the walk propagate).
+  // `regions`: the tear's contact-angle regions, in order; `pinning`: the skin's pinning factor
+  // per vertex of the surface's skin (ShotLiquidTear::pinning; empty: 1 everywhere). Traces the
+  // first course (InputError from the surface or the walk propagate).
   LiquidTearCourses(std::shared_ptr<const LiquidTearSurface> surface, const SurfacePoint& start, const Vec3& gravity,
-                    float maxLength, int firstFrame, std::vector<LiquidCourseRegion> regions = {});
+                    float maxLength, int firstFrame, std::vector<LiquidCourseRegion> regions = {},
+                    std::vector<float> pinning = {});
 
   int firstFrame() const { return firstFrame_; }
   const LiquidTearSurface& surface() const { return *surface_; }
@@ -95,6 +103,7 @@ class LiquidTearCourses {
   float maxLength_;
   int firstFrame_;
   std::vector<LiquidCourseRegion> regions_;
+  std::vector<float> pinning_;
   TriangleAdjacency adjacency_;  // the topology's, built once
   mutable std::mutex mutex_;
   mutable std::vector<std::shared_ptr<const LiquidTearCourse>> courses_;  // frame firstFrame_ + i

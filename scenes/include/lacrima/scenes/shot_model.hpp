@@ -281,6 +281,14 @@ struct ShotLiquidTear {
   // Per vertex of the source's primitive: where the wet trail's edge lies beyond or short of the
   // film's half width (filmEdgeVariation in scenes/src/liquid_tear_film.hpp); set by loadShot.
   std::vector<float> filmEdgeVariation;
+  // "pinning": {"factor", "patchSize"}: the skin holds a contact line up to pinningFactor times
+  // harder (and down to 1 / pinningFactor as hard) than the contact angles alone, in patches about
+  // pinningPatchSize metres across (LiquidPathSample::pinning); 1: uniform skin.
+  double pinningFactor = 1.0;
+  double pinningPatchSize = 0.004;
+  // Per vertex of the source's primitive, the factor there (liquid_tear_pinning.hpp); set by
+  // loadShot when pinningFactor > 1, else empty.
+  std::vector<float> pinning;
   // The flow path's courses as the face moves, one per integer frame from the simulation's start
   // (liquid_tear.hpp); set by loadShot. `path` and `input.path` are its course at frameStart.
   std::shared_ptr<const LiquidTearCourses> courses;
