@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <vector>
 
 #include "lacrima/scenes/liquid_tear.hpp"
 #include "shot_test_support.hpp"
@@ -73,6 +74,48 @@ TEST_F(DefaultShotStory, TheHangingDropLetsGoOnCameraAndFallsClearOfTheSkin) {
   }
   std::printf("[ story ] closest skin vertex to the falling drop: %.3f of the drop's size\n", closest);
   EXPECT_GT(closest, 1.05);
+}
+
+TEST_F(DefaultShotStory, BeadsStopOnTheCheekAndTakeSecondsFromTheLidToTheJawLine) {
+  // Issue 16: a tear takes 1-4 s from the lower lid to the jaw line (~8 cm down), with visible
+  // stops. Per bead: the time from its overflow until its liquid (the bead, or the bead it merged
+  // into) is 8 cm down the path; and the longest it stood still between 1 and 8 cm.
+  constexpr double kJawLine = 0.08, kStep = 0.25;  // metres; frames
+  LiquidTearRun run(*shot_, tear());
+  std::vector<double> born, arrived, stillSince, longestStill;
+  for (double f = tear().simulationStartFrame; f <= shot_->frameEnd; f += kStep) {
+    run.advanceTo(f);
+    const std::vector<Bead>& beads = run.simulation().beads();
+    const double t = run.simulation().time();
+    for (size_t i = born.size(); i < beads.size(); ++i) {
+      born.push_back(beads[i].birthTime);
+      arrived.push_back(-1.0);
+      stillSince.push_back(-1.0);
+      longestStill.push_back(0.0);
+    }
+    for (size_t i = 0; i < beads.size(); ++i) {
+      size_t carrier = i;
+      while (beads[carrier].phase == BeadPhase::Merged) carrier = size_t(beads[carrier].mergedInto);
+      const Bead& b = beads[carrier];
+      if (arrived[i] < 0.0 && (b.arcLength >= kJawLine || b.phase == BeadPhase::Hanging || b.phase == BeadPhase::Detached))
+        arrived[i] = t;
+      const bool stoppedOnTheCheek = carrier == i && b.phase == BeadPhase::Pinned && b.arcLength > 0.01 && b.arcLength < kJawLine;
+      if (!stoppedOnTheCheek) stillSince[i] = -1.0;
+      if (stoppedOnTheCheek && stillSince[i] < 0.0) stillSince[i] = t;
+      if (stoppedOnTheCheek) longestStill[i] = std::max(longestStill[i], t - stillSince[i]);
+    }
+  }
+  double slowest = 0.0, longestStop = 0.0;
+  for (size_t i = 0; i < born.size(); ++i) {
+    if (arrived[i] < 0.0) continue;
+    std::printf("[ story ] bead %zu: overflow at %.2f s, 8 cm down %.2f s later, stood still up to %.2f s on the way\n", i,
+                born[i], arrived[i] - born[i], longestStill[i]);
+    slowest = std::max(slowest, arrived[i] - born[i]);
+    longestStop = std::max(longestStop, longestStill[i]);
+  }
+  EXPECT_GE(slowest, 1.0);
+  EXPECT_LE(slowest, 4.0);
+  EXPECT_GE(longestStop, 0.5);  // a stop a viewer sees: 12 frames or more
 }
 
 }  // namespace
