@@ -76,7 +76,8 @@ void validateParams(const TearLiquidParams& p, double pathLength) {
   if (!(p.wetRetentionFactor > 0.0 && p.wetRetentionFactor <= 1.0))
     throw InputError(fmt::format("tear liquid: wet retention factor must be in (0, 1], got {}", p.wetRetentionFactor));
   requirePositive(p.filmThickness, "film thickness");
-  requirePositive(p.filmDryingTime, "film drying time");
+  requireNonNegative(p.filmDryingTime, "film drying time");
+  validateEvaporationAir(p.air);
   requirePositive(p.trailCellLength, "trail cell length");
   if (!(p.overhangCosine >= -1.0 && p.overhangCosine <= 1.0))
     throw InputError(fmt::format("tear liquid: overhang cosine must be in [-1, 1], got {}", p.overhangCosine));
@@ -144,6 +145,7 @@ TearLiquidSimulation::TearLiquidSimulation(TearLiquidInput input) : input_(std::
   if (!input_.gravityDirection.allFinite() || !(input_.gravityDirection.norm() > 0.0))
     throw InputError("tear liquid: gravity direction must be finite and non-zero");
   gHat_ = input_.gravityDirection.normalized();
+  evaporationPerLength_ = filmEvaporationSpeed(p.air, 1.0, p.fluid.density);  // speed x width at w = 1 m
   sliding_.push_back(SlidingModel{p.fluid, p.contactAngles, p.retentionFactor});
   for (const ContactAngleHysteresis& angles : p.contactAngleRegions)
     sliding_.push_back(SlidingModel{p.fluid, angles, p.retentionFactor});
@@ -487,12 +489,17 @@ double TearLiquidSimulation::detachAmplitude(const Bead& bead) const {
 }
 
 void TearLiquidSimulation::dryFilm() {
-  const double keep = std::exp(-input_.params.timeStep / input_.params.filmDryingTime);
+  const TearLiquidParams& p = input_.params;
+  const bool exponential = p.filmDryingTime > 0.0;
+  const double keep = exponential ? std::exp(-p.timeStep / p.filmDryingTime) : 1.0;
   for (size_t cell = 0; cell < cellVolume_.size(); ++cell) {
-    const double kept = cellVolume_[cell] * keep;
+    if (!(cellVolume_[cell] > 0.0)) continue;
+    // Evaporation: the same volume per length whatever the width (film_evaporation.hpp).
+    const double kept = exponential ? cellVolume_[cell] * keep
+                                    : std::max(0.0, cellVolume_[cell] - evaporationPerLength_ * cellLength(cell) * p.timeStep);
     dried_ += cellVolume_[cell] - kept;
+    cellOwnVolume_[cell] *= kept / cellVolume_[cell];
     cellVolume_[cell] = kept;
-    cellOwnVolume_[cell] *= keep;
   }
 }
 

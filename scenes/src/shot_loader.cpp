@@ -1233,7 +1233,7 @@ class ShotReader {
                    {"type", "asset", "part", "source", "material", "gravity", "maxLength", "rate", "wellStart",
                     "wellEnd", "overflowVolume", "spillVolume", "contactAngles", "filmThickness", "dryingTime",
                     "hangingContactRadius", "overhangAngle", "viscosity", "trailRefinement", "contactAngleRegions",
-                    "pinning"});
+                    "pinning", "skinTemperature", "airTemperature", "humidity"});
     if (!o.ok()) return;
     const size_t before = c_.errorCount();
     ShotLiquidTear tear;
@@ -1264,6 +1264,10 @@ class ShotReader {
     if (asset) readContactAngleRegions(o, *asset, tear);
     if (auto x = o.number("filmThickness", Range::above(0))) p.filmThickness = *x;
     if (auto x = o.number("dryingTime", Range::above(0))) p.filmDryingTime = *x;
+    // The film's evaporation (film_evaporation.hpp): degrees C and relative humidity.
+    if (auto x = o.number("skinTemperature", Range::closed(-20, 50))) p.air.skinTemperature = *x;
+    if (auto x = o.number("airTemperature", Range::closed(-20, 50))) p.air.airTemperature = *x;
+    if (auto x = o.number("humidity", Range::closed(0, 1))) p.air.relativeHumidity = *x;
     if (auto x = o.number("hangingContactRadius", Range::atLeast(0))) p.hangingContactRadius = *x;
     // A drip site: the skin's normal within this angle of gravity (degrees; TearLiquidParams::overhangCosine).
     if (auto x = o.number("overhangAngle", Range::open(0, 180))) p.overhangCosine = std::cos(*x * std::numbers::pi / 180.0);

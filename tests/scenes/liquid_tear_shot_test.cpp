@@ -350,7 +350,8 @@ TEST(LiquidTearShot, FilmThicknessAlongThePathIsAvailable) {
 TEST(LiquidTearShot, KeysAreConvertedToSIUnits) {
   const Shot shot = loadTearShot("liquid_keys.json",
                                  tearWith(R"("spillVolume": 8)", R"("spillVolume": 8, "wellStart": 13, "wellEnd": 49,
-       "contactAngles": [100, 70], "filmThickness": 1e-5, "dryingTime": 12, "viscosity": 0.002, "gravity": [0, -2, 0])"));
+       "contactAngles": [100, 70], "filmThickness": 1e-5, "dryingTime": 12, "viscosity": 0.002, "gravity": [0, -2, 0],
+       "skinTemperature": 34, "airTemperature": 18, "humidity": 0.3)"));
   const ShotLiquidTear& tear = shot.liquidTears[0];
   EXPECT_DOUBLE_EQ(tear.params.source.rate, 10e-9);
   EXPECT_DOUBLE_EQ(tear.params.source.overflowVolume, 10e-9);
@@ -362,6 +363,9 @@ TEST(LiquidTearShot, KeysAreConvertedToSIUnits) {
   EXPECT_DOUBLE_EQ(tear.params.filmThickness, 1e-5);
   EXPECT_DOUBLE_EQ(tear.params.filmDryingTime, 12.0);
   EXPECT_DOUBLE_EQ(tear.params.viscosity, 0.002);
+  EXPECT_DOUBLE_EQ(tear.params.air.skinTemperature, 34.0);
+  EXPECT_DOUBLE_EQ(tear.params.air.airTemperature, 18.0);
+  EXPECT_DOUBLE_EQ(tear.params.air.relativeHumidity, 0.3);
   EXPECT_EQ(tear.gravity, Vec3(0, -2, 0));
   EXPECT_FLOAT_EQ(tear.maxLength, 0.12f);
   EXPECT_EQ(tear.simulationStartFrame, 1.0);
@@ -398,6 +402,10 @@ TEST(LiquidTearShot, BadKeysGiveExactMessages) {
          "/tears/0/wellEnd: welling must end at or after it starts: wellEnd 10 < wellStart 20");
   expect("lq_gravity.json", R"("spillVolume": 8)", R"("spillVolume": 8, "gravity": [0, 0, 0])",
          "/tears/0/gravity: the gravity direction must not be zero");
+  expect("lq_humidity.json", R"("spillVolume": 8)", R"("spillVolume": 8, "humidity": 1.2)",
+         "/tears/0/humidity: expected a number in [0, 1], found 1.2");
+  expect("lq_air.json", R"("spillVolume": 8)", R"("spillVolume": 8, "airTemperature": 80)",
+         "/tears/0/airTemperature: expected a number in [-20, 50], found 80");
   expect("lq_film.json", R"("spillVolume": 8)", R"("spillVolume": 8, "filmThickness": 0)",
          "/tears/0/filmThickness: expected a number > 0, found 0");
   expect("lq_typo.json", R"("spillVolume": 8)", R"("spillVolume": 8, "viscosty": 0.002)",
