@@ -24,8 +24,9 @@ void validate(const LiquidBeadPlacement& p, const LiquidBeadResolution& r) {
                                  p.halfLength, p.halfWidth, p.height));
   if (!(p.contactAngle > 0.0f && p.contactAngle < float(std::numbers::pi)))
     throw InputError(fmt::format("liquid bead: contact angle {} is not in (0, pi)", p.contactAngle));
-  if (!(p.baseOffset >= 0.0f) || !std::isfinite(p.baseOffset))
-    throw InputError(fmt::format("liquid bead: baseOffset {} must be finite and >= 0", p.baseOffset));
+  if (!std::isfinite(p.baseOffset) || !(p.baseOffset > -p.height))
+    throw InputError(fmt::format("liquid bead: baseOffset {} must be finite and above -height ({})", p.baseOffset,
+                                 -p.height));
   if (r.domeRings < 2 || r.baseRings < 1 || r.segments < 3)
     throw InputError(fmt::format("liquid bead: resolution {} dome rings, {} base rings, {} segments is too coarse",
                                  r.domeRings, r.baseRings, r.segments));

@@ -8,8 +8,13 @@
 
 namespace lacrima::shotfile {
 
-// Gap between the skin and a bead's flat side: keeps the water off the skin it rides on.
-inline constexpr float kLiquidBeadBaseOffset = 2e-5f;  // metres
+// Where a bead's flat side lies: 20 um under the skin, so the skin under the bead is inside the
+// water, as it is on a face (the bead wets the skin it rides on; a base above the skin would leave
+// an air gap, and light reaching the base at more than the critical angle, 48.4 degrees, would be
+// totally reflected there: with a 20 um gap, the skin under the cheek bead of
+// tools/peers/shots/tear_on_cheek.json got a tenth of the key light it gets in contact, in lacrima's
+// brute-force path tracing and in Cycles alike; docs/peers.md).
+inline constexpr float kLiquidBeadBaseOffset = -2e-5f;  // metres along the skin normal
 // A falling drop whose mode-2 envelope |eps0| exp(-t / tau) is below this is drawn as an exact
 // sphere: its axes then differ by under 1.5% (about 20 um on a 1.5 mm drop, below a pixel).
 inline constexpr double kVisibleDropAmplitude = 0.01;

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "geometry/height_field_mesh.hpp"
@@ -72,6 +73,32 @@ TEST(LiquidBeadMesh, FollowsCurvedSkinWithoutDippingIntoIt) {
   }
 }
 
+// A negative offset sinks the base under the skin, so the skin under the bead is inside the water
+// (the renderer then sees water in contact with skin, not an air gap under the bead).
+TEST(LiquidBeadMesh, ANegativeOffsetSinksTheBaseJustUnderCurvedSkin) {
+  for (float curvature : {-60.0f, 60.0f}) {
+    auto height = [curvature](float x, float y) { return 0.5f * curvature * (x * x + y * y); };
+    const TriangleMesh skin = heightFieldMesh(60, 0.01f, height);
+    LiquidBeadPlacement p = placement(80.0f);
+    p.baseOffset = -2e-5f;
+    const TriangleMesh bead = makeLiquidBeadMesh(skin, p);
+    EXPECT_EQ(findClosedMeshDefect(bead), "");
+    EXPECT_GT(signedVolume(bead), 0.0);
+    int under = 0;
+    for (const Vec3& v : bead.positions) {
+      const float aboveSkin = v.z() - height(v.x(), v.y());
+      // Chords sag by at most 1.7e-6 m (as above): no vertex deeper than the offset, and the
+      // base's vertices (the flat side) all under the skin.
+      EXPECT_GE(aboveSkin, p.baseOffset - 2e-6f) << curvature << " " << v.transpose();
+      if (aboveSkin < 0.0f) {
+        EXPECT_NEAR(aboveSkin, p.baseOffset, 2e-6f) << curvature << " " << v.transpose();
+        ++under;
+      }
+    }
+    EXPECT_GT(under, int(bead.positions.size()) / 4) << curvature;  // the base rings and the rim
+  }
+}
+
 TEST(LiquidBeadMesh, RejectsBadPlacements) {
   const TriangleMesh skin = heightFieldMesh(2, 0.01f, [](float, float) { return 0.0f; });
   LiquidBeadPlacement p = placement(80.0f);
@@ -81,6 +108,11 @@ TEST(LiquidBeadMesh, RejectsBadPlacements) {
   p.along = Vec3::UnitZ();
   EXPECT_THROW(makeLiquidBeadMesh(skin, p), InputError);
   p = placement(180.0f);
+  EXPECT_THROW(makeLiquidBeadMesh(skin, p), InputError);
+  p = placement(80.0f);
+  p.baseOffset = -p.height;  // the whole bead under the skin
+  EXPECT_THROW(makeLiquidBeadMesh(skin, p), InputError);
+  p.baseOffset = std::numeric_limits<float>::quiet_NaN();
   EXPECT_THROW(makeLiquidBeadMesh(skin, p), InputError);
 }
 

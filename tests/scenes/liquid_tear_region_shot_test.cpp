@@ -48,7 +48,7 @@ uint32_t ringVertex(int ring, int segment) { return uint32_t(1 + (ring - 1) * kS
 
 // The angle (radians) the dome makes with the skin at the contact line across the bead (segments
 // at phi = 90 and 270 degrees, averaged): the chord from the contact line to the dome ring above,
-// its rise the difference of the two vertices' heights over the skin and its run the distance
+// its rise the difference of the two vertices' signed heights over the skin and its run the distance
 // between their feet on the skin (so the skin's own curvature under the bead drops out).
 double rimAngle(const TriangleMesh& bead, const TriangleMesh& skin) {
   double sum = 0.0;
@@ -56,7 +56,11 @@ double rimAngle(const TriangleMesh& bead, const TriangleMesh& skin) {
     const Vec3 rim = bead.positions[ringVertex(kDomeRings, segment)];
     const Vec3 above = bead.positions[ringVertex(kDomeRings - 1, segment)];
     const SurfacePoint rimFoot = closestSurfacePoint(skin, rim), aboveFoot = closestSurfacePoint(skin, above);
-    const double rise = (above - surfacePosition(skin, aboveFoot)).norm() - (rim - surfacePosition(skin, rimFoot)).norm();
+    // Signed heights: the rim lies just under the skin (the bead wets it, liquid_tear_frame.hpp).
+    const auto heightOver = [&skin](const Vec3& p, const SurfacePoint& foot) {
+      return double((p - surfacePosition(skin, foot)).dot(triangleNormal(skin, foot.triangle)));
+    };
+    const double rise = heightOver(above, aboveFoot) - heightOver(rim, rimFoot);
     const double run = (surfacePosition(skin, aboveFoot) - surfacePosition(skin, rimFoot)).norm();
     sum += std::atan2(rise, run);
   }

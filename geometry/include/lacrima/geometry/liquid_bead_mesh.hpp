@@ -1,7 +1,8 @@
 #pragma once
 // The water mesh of a bead sitting on the skin (issue 5, "Shape": a spherical-cap cross-section,
 // elongated by gravity; see BeadShape in sessile_drop.hpp): a closed, outward-oriented cap draped
-// over the skin so that its flat side follows the skin at a small offset and never dips into it.
+// over the skin so that its flat side follows the skin at a small offset: above it, or (negative)
+// just under it, so the skin under the bead lies inside the water as wetted skin does.
 //
 // Construction: the unit spherical cap of contact angle theta (base radius 1, sphere radius
 // rho = 1 / sin(theta); a point at polar angle psi from the apex has radius rho sin(psi) and height
@@ -26,7 +27,7 @@ struct LiquidBeadPlacement {
   float halfWidth = 0.0f;           // footprint semi-axis across, > 0
   float height = 0.0f;              // > 0
   float contactAngle = 1.5f;        // radians, in (0, pi)
-  float baseOffset = 2e-5f;         // metres between the skin and the base, >= 0
+  float baseOffset = 2e-5f;         // metres from the skin to the base along the normal, > -height
 };
 
 // Dome rings (apex excluded) and base rings (centre excluded) of the mesh, and segments around.
