@@ -29,7 +29,7 @@ and a built lacrima (BUILD_DIR=path/to/build, default ./build; or LACRIMA=path/t
 
 example:
   tools/peers/compare_with_cycles.sh tools/peers/shots/tear_on_cheek.json --spp 1024 \
-      --region 150 140 120 120
+      --region 140 150 80 70
 EOF
 }
 
