@@ -63,13 +63,7 @@ name="$(basename "$shot" .json)"
 out="${out:-peer-out/$name}"
 mkdir -p "$out"
 if [ -z "$frame" ]; then
-  frame="$(python3 - "$shot" <<'PY'
-import json, re, sys
-text = open(sys.argv[1], encoding="utf-8").read()
-text = re.sub(r'"(?:\\.|[^"\\])*"|//[^\n]*|/\*.*?\*/', lambda m: m.group(0) if m.group(0)[0] == '"' else "", text, flags=re.S)
-print(json.loads(text).get("frames", {}).get("start", 1))
-PY
-)"
+  frame="$(python3 "$here/tools/peers/shot_json.py" frame-start "$shot")" || exit 2
 fi
 size_args=()
 [ -n "$width" ] && size_args+=(--width "$width")

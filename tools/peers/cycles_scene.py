@@ -25,7 +25,6 @@
 #  - no clamping, no glossy filter, no denoising, no adaptive sampling, and no shadow caustics
 #    unless --mnee: an unbiased estimate, the reference to judge lacrima's caustics by.
 import argparse
-import json
 import math
 import os
 import re
@@ -33,6 +32,10 @@ import sys
 
 import bpy
 import numpy
+from mathutils import Matrix, Vector
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import shot_json  # noqa: E402  (next to this script; Blender does not put it on the path)
 
 numpy.bool = bool  # Blender 3.4's glTF importer still uses the alias numpy 1.24 removed
 
@@ -42,16 +45,9 @@ def fail(message):
     sys.exit(2)
 
 
-def strip_json_comments(text):
-    """lacrima's shot files allow // and /* */ comments; drop them outside strings."""
-    pattern = re.compile(r'"(?:\\.|[^"\\])*"|//[^\n]*|/\*.*?\*/', re.S)
-    return pattern.sub(lambda m: m.group(0) if m.group(0).startswith('"') else "", text)
-
-
 def load_shot(path):
     try:
-        with open(path, encoding="utf-8") as f:
-            return json.loads(strip_json_comments(f.read()))
+        return shot_json.load_shot(path)
     except (OSError, ValueError) as error:
         fail(f"{path}: cannot read the shot: {error}")
 
@@ -59,6 +55,13 @@ def load_shot(path):
 def to_blender(p):
     """lacrima/glTF (+Y up) to Blender (+Z up), the glTF importer's own conversion."""
     return (p[0], -p[2], p[1])
+
+
+def place(obj, origin, x_axis, y_axis, z_axis):
+    """Puts obj at origin with its local axes along the given lacrima directions (orthonormal)."""
+    columns = [to_blender(x_axis), to_blender(y_axis), to_blender(z_axis)]
+    rotation = Matrix([[columns[c][r] for c in range(3)] for r in range(3)])
+    obj.matrix_world = Matrix.Translation(Vector(to_blender(origin))) @ rotation.to_4x4()
 
 
 def static_vector(shot_path, where, value):
@@ -153,11 +156,7 @@ def set_up_camera(shot, shot_path):
     # Blender's camera looks down its local -Z with +Y up, as lacrima's does.
     forward = normalized([a - b for a, b in zip(look_at, position)])
     right = normalized(cross(forward, up))
-    true_up = cross(right, forward)
-    from mathutils import Matrix, Vector
-    columns = [to_blender(right), to_blender(true_up), to_blender([-c for c in forward])]
-    rotation = Matrix([[columns[c][r] for c in range(3)] for r in range(3)])
-    obj.matrix_world = Matrix.Translation(Vector(to_blender(position))) @ rotation.to_4x4()
+    place(obj, position, right, cross(right, forward), [-c for c in forward])
     bpy.context.scene.camera = obj
 
 
@@ -271,7 +270,6 @@ def add_area_light(index, center, u, v, normal, area, radiance):
     "power" P the radiance P / (4 A), not P / (pi A): measured here against an emissive mesh of known
     radiance (mesh emission strength is radiance), the area light of power pi A L was pi / 4 of it
     (0.7853, on the lit sphere and the floor of shots/sphere_in_studio.json). So P = 4 A L."""
-    from mathutils import Matrix, Vector
     data = bpy.data.lights.new(f"light {index}", "AREA")
     data.shape = "RECTANGLE"
     data.size = math.sqrt(dot(u, u))
@@ -284,10 +282,7 @@ def add_area_light(index, center, u, v, normal, area, radiance):
     bpy.context.scene.collection.objects.link(obj)
     x_axis = normalized(u)
     z_axis = [-c for c in normal]  # the light shines down its local -Z
-    y_axis = cross(z_axis, x_axis)
-    columns = [to_blender(x_axis), to_blender(y_axis), to_blender(z_axis)]
-    rotation = Matrix([[columns[c][r] for c in range(3)] for r in range(3)])
-    obj.matrix_world = Matrix.Translation(Vector(to_blender(center))) @ rotation.to_4x4()
+    place(obj, center, x_axis, cross(z_axis, x_axis), z_axis)
 
 
 def add_sphere_light(index, light, shot_path):
