@@ -85,6 +85,22 @@ void validateParams(const TearLiquidParams& p, double pathLength) {
   requirePositive(p.minBeadVolume, "minimum bead volume");
   requirePositive(p.timeStep, "time step");
   validateSource(p.source);
+  requireNonNegative(p.rivulet.formFlowRate, "rivulet form flow rate");
+  requireNonNegative(p.rivulet.breakFlowRate, "rivulet break flow rate");
+  if (p.rivulet.breakFlowRate > p.rivulet.formFlowRate)
+    throw InputError(fmt::format("tear liquid: the rivulet's break flow rate {} must not exceed its form flow rate {}",
+                                 p.rivulet.breakFlowRate, p.rivulet.formFlowRate));
+  if (p.rivulet.formFlowRate > 0.0) {
+    // The lubrication rivulet (rivulet.hpp) needs an edge angle below 90 degrees.
+    auto checkReceding = [](const ContactAngleHysteresis& angles, const char* where) {
+      if (!(angles.receding < 0.5 * kPiD))
+        throw InputError(fmt::format("tear liquid: a rivulet needs receding contact angles below 90 degrees; {} has {} "
+                                     "degrees",
+                                     where, angles.receding * 180.0 / kPiD));
+    };
+    checkReceding(p.contactAngles, "contactAngles");
+    for (const ContactAngleHysteresis& angles : p.contactAngleRegions) checkReceding(angles, "a contact angle region");
+  }
   for (const InitialBead& bead : p.initialBeads) {
     requirePositive(bead.volume, "initial bead volume");
     if (!(bead.arcLength >= 0.0 && bead.arcLength <= pathLength))
@@ -98,10 +114,7 @@ long long stepsFor(double t, double dt) {
   return (long long)std::floor(t / dt + 1e-9);
 }
 
-bool isLive(const Bead& bead) {
-  return bead.phase == BeadPhase::Welling || bead.phase == BeadPhase::Pinned || bead.phase == BeadPhase::Sliding ||
-         bead.phase == BeadPhase::Hanging;
-}
+bool isLive(const Bead& bead) { return isLiveBeadPhase(bead.phase); }
 
 double equivalentRadius(double volume) { return std::cbrt(3.0 * volume / (4.0 * kPiD)); }
 
@@ -116,6 +129,7 @@ const char* beadPhaseName(BeadPhase phase) {
     case BeadPhase::Detached: return "detached";
     case BeadPhase::Merged: return "merged";
     case BeadPhase::Dried: return "dried";
+    case BeadPhase::InRivulet: return "in rivulet";
   }
   return "unknown";
 }
@@ -129,6 +143,11 @@ std::vector<LiquidPathSample> liquidPathFromFlowPath(const FlowPath& path, const
     samples[i].normal = triangleNormal(mesh, path.points[i].triangle).cast<double>().normalized();
   }
   return samples;
+}
+
+bool isLiveBeadPhase(BeadPhase phase) {
+  return phase == BeadPhase::Welling || phase == BeadPhase::Pinned || phase == BeadPhase::Sliding ||
+         phase == BeadPhase::Hanging;
 }
 
 double VolumeBudget::relativeImbalance() const {
@@ -156,6 +175,9 @@ TearLiquidSimulation::TearLiquidSimulation(TearLiquidInput input) : input_(std::
   cellWidth_.assign(cellVolume_.size(), 0.0);
   cellDepositor_.assign(cellVolume_.size(), -1);
   cellOwnVolume_.assign(cellVolume_.size(), 0.0);
+  rivuletVolume_.assign(cellVolume_.size(), 0.0);
+  rivuletPeakFlux_.assign(cellVolume_.size(), 0.0);
+  breakFlowRate_ = p.rivulet.breakFlowRate > 0.0 ? p.rivulet.breakFlowRate : 0.5 * p.rivulet.formFlowRate;
   meniscus_ = p.source.initialVolume;
   sourced_ = meniscus_;
   for (const InitialBead& initial : p.initialBeads) {
@@ -313,6 +335,12 @@ void TearLiquidSimulation::advanceTo(double t) {
 
 void TearLiquidSimulation::step() {
   well();
+  if (input_.params.rivulet.formFlowRate > 0.0) {
+    flowRivulet();
+    wetUnderRivulet();
+    joinRivulet();
+    breakRivulet();
+  }
   for (size_t id = 0; id < beads_.size(); ++id) {
     Bead& bead = beads_[id];
     if (bead.phase == BeadPhase::Hanging || !isLive(bead)) continue;
@@ -333,6 +361,12 @@ void TearLiquidSimulation::well() {
   const double added = source.rate * overlap;
   meniscus_ += added;
   sourced_ += added;
+  // Welling fast enough, the overflow runs on as a rivulet from the lid margin (the path's start).
+  if (wellsAsRivulet() && meniscus_ > source.overflowVolume) {
+    rivuletVolume_[0] += meniscus_ - source.overflowVolume;
+    meniscus_ = source.overflowVolume;
+    return;
+  }
   // The meniscus overflows over the lid margin: a bead of spillVolume leaves (merges with a bead
   // still sitting at the lid through coalesce()).
   while (meniscus_ >= source.overflowVolume) {
@@ -534,6 +568,7 @@ void TearLiquidSimulation::rerouteFilm(const std::function<double(double)>& imag
   const size_t count = std::max<size_t>(size_t(std::ceil(newLength / cellSize)), 1);
   const auto newCell = [&](double s) { return std::min(size_t(std::max(s, 0.0) / cellSize), count - 1); };
   std::vector<double> volume(count, 0.0), width(count, 0.0), own(count, 0.0), largest(count, 0.0);
+  std::vector<double> rivulet(count, 0.0), peakFlux(count, 0.0);
   std::vector<int> depositor(count, -1);
   // Each old cell's share of each new cell its image [lo, hi] overlaps (all of it in one cell for an
   // image of zero length, e.g. beyond the new course's end), in proportion to the overlap.
@@ -543,7 +578,7 @@ void TearLiquidSimulation::rerouteFilm(const std::function<double(double)>& imag
   };
   std::vector<Share> shares;
   for (size_t cell = 0; cell < cellVolume_.size(); ++cell) {
-    if (!(cellVolume_[cell] > 0.0)) continue;
+    if (!(cellVolume_[cell] > 0.0) && !(rivuletVolume_[cell] > 0.0)) continue;
     const double begin = double(cell) * cellSize;
     const double a = image(begin), b = image(begin + cellLength(cell));
     const double lo = std::min(a, b), hi = std::max(a, b);
@@ -567,6 +602,8 @@ void TearLiquidSimulation::rerouteFilm(const std::function<double(double)>& imag
   // need to tell a bead's own film from others').
   for (const Share& share : shares) {
     const double added = share.fraction * cellVolume_[share.from];
+    rivulet[share.to] += share.fraction * rivuletVolume_[share.from];
+    peakFlux[share.to] = std::max(peakFlux[share.to], rivuletPeakFlux_[share.from]);
     volume[share.to] += added;
     width[share.to] = std::max(width[share.to], cellWidth_[share.from]);
     if (added > largest[share.to]) {
@@ -581,6 +618,8 @@ void TearLiquidSimulation::rerouteFilm(const std::function<double(double)>& imag
   cellWidth_ = std::move(width);
   cellDepositor_ = std::move(depositor);
   cellOwnVolume_ = std::move(own);
+  rivuletVolume_ = std::move(rivulet);
+  rivuletPeakFlux_ = std::move(peakFlux);
 }
 
 // ---- Output ---------------------------------------------------------------------------------------
@@ -591,6 +630,7 @@ VolumeBudget TearLiquidSimulation::budget() const {
   budget.meniscus = meniscus_;
   for (const Bead& bead : beads_) budget.beads += bead.volume;
   budget.film = std::accumulate(cellVolume_.begin(), cellVolume_.end(), 0.0);
+  budget.rivulet = std::accumulate(rivuletVolume_.begin(), rivuletVolume_.end(), 0.0);
   budget.detached = detached_;
   budget.dried = dried_;
   return budget;
@@ -635,6 +675,7 @@ TearLiquidState TearLiquidSimulation::state(double t) const {
     view.axes = modeTwoSpheroid(view.radius, view.amplitude);
     state.drops.push_back(view);
   }
+  rivuletViews(state);
   for (const LiquidPathSample& sample : input_.path) state.sampleFilmThickness.push_back(filmThicknessAt(sample.arcLength));
   return state;
 }

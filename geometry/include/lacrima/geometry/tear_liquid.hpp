@@ -54,6 +54,20 @@
 //   skin: the drop leaves prolate (k ~ 1.5-2). Under a ceiling the drawn cap is flat against the
 //   skin and the drop leaves oblate; a real pendant drop would be prolate (the cap model does not
 //   draw a pendant drop's neck).
+// * Rivulets (rivulet.hpp; TearLiquidParams::rivulet): while the source wells at formFlowRate or
+//   faster, the overflowing meniscus runs down the path as one continuous rivulet instead of
+//   spilling beads. Its liquid lives in the trail cells as a cross-section area A per cell and moves
+//   as the kinematic wave A_t + Q(A)_s = 0 with Duffy & Moffatt 1995's small-width flux
+//   Q = k A^2 at the cell's slope and receding contact angle (the rivulet's edges are laid by its
+//   front and recede as it narrows; modelling choice), solved by first-order upwind finite volumes
+//   with sub-steps that keep the Courant number 2 k A dt / cell at most 1/2 (monotone, and exactly
+//   conservative: a cell never gives more than it holds). The rivulet wets the skin it covers (the
+//   film is topped up to filmThickness across its width, from its own liquid), swallows the beads
+//   it reaches, and feeds the bead hanging at the first drip site, which lets go by Tate's law as
+//   before. When the flow drops (the source stops or slows), the rivulet drains and thins from the
+//   top; a stretch that once carried breakFlowRate and now carries less breaks up into beads (a
+//   modelling choice for the break-up criterion) spaced by rivuletBreakupSpacing at the width it
+//   ran at, each bead at the volume-weighted centre of its stretch; they stick or slide as any bead.
 // * A bead whose volume falls below minBeadVolume has run out: its rest joins the film (Dried).
 // * Contact angles per skin region (issue 5: skin 55-110 degrees, per region): each path piece
 //   has the contact angles of its start sample (LiquidPathSample::contactAngleRegion, an index
@@ -93,6 +107,7 @@
 #include "lacrima/geometry/film_evaporation.hpp"
 #include "lacrima/geometry/math.hpp"
 #include "lacrima/geometry/mesh.hpp"
+#include "lacrima/geometry/rivulet.hpp"
 #include "lacrima/geometry/sessile_drop.hpp"
 #include "lacrima/geometry/surface_flow.hpp"
 
@@ -154,6 +169,12 @@ struct TearLiquidParams {
   double timeStep = 1e-3;              // s
   WellingSource source;
   std::vector<InitialBead> initialBeads;
+  // Rivulets (see "Rivulets" above), in m^3/s. formFlowRate 0: the tear never runs as a rivulet.
+  // breakFlowRate in (0, formFlowRate], or 0 for half of formFlowRate.
+  struct Rivulet {
+    double formFlowRate = 0.0;
+    double breakFlowRate = 0.0;
+  } rivulet;
 };
 
 struct TearLiquidInput {
@@ -170,8 +191,11 @@ enum class BeadPhase {
   Detached,  // fell as a FallingDrop (volume 0)
   Merged,    // coalesced into the bead ahead, mergedInto (volume 0)
   Dried,     // ran out below minBeadVolume; its rest joined the film (volume 0)
+  InRivulet, // reached by a rivulet, which took its liquid (volume 0)
 };
 const char* beadPhaseName(BeadPhase phase);
+// Welling, Pinned, Sliding or Hanging: a bead that holds liquid.
+bool isLiveBeadPhase(BeadPhase phase);
 
 // A bead; beads keep their index (id) for life. Detached, Merged and Dried beads have volume 0
 // (their liquid is a drop, another bead, or film).
@@ -219,11 +243,30 @@ struct DropView {
   SpheroidAxes axes;             // modeTwoSpheroid(radius, amplitude): a^2 c = radius^3
 };
 
+// A point along a rivulet: its cross-section there (a parabola of this half-width and middle depth,
+// rivulet.hpp) at a trail cell's centre.
+struct RivuletStation {
+  double arcLength = 0.0;
+  Vec3d position = Vec3d::Zero();  // on the path
+  Vec3d normal = Vec3d::UnitZ();
+  double halfWidth = 0.0;  // m
+  double height = 0.0;     // m
+};
+
+// One unbroken stretch of rivulet from arc length `begin` to `end` (trail cell edges), with a
+// station at each of its cells' centres (every cell of the stretch holds liquid).
+struct RivuletView {
+  double begin = 0.0, end = 0.0;
+  double volume = 0.0;  // m^3
+  std::vector<RivuletStation> stations;
+};
+
 struct TearLiquidState {
   double time = 0.0;
   double meniscusVolume = 0.0;
   std::vector<BeadView> beads;             // live beads only (volume > 0)
   std::vector<DropView> drops;
+  std::vector<RivuletView> rivulets;       // from the source down
   std::vector<double> sampleFilmThickness;  // per path sample, m
 };
 
@@ -233,9 +276,10 @@ struct VolumeBudget {
   double meniscus = 0.0;
   double beads = 0.0;
   double film = 0.0;
+  double rivulet = 0.0;
   double detached = 0.0;
   double dried = 0.0;
-  double accounted() const { return meniscus + beads + film + detached + dried; }
+  double accounted() const { return meniscus + beads + film + rivulet + detached + dried; }
   // |accounted - source| / source (0 for no source).
   double relativeImbalance() const;
 };
@@ -266,6 +310,12 @@ class TearLiquidSimulation {
   const std::vector<Bead>& beads() const { return beads_; }
   const std::vector<FallingDrop>& drops() const { return drops_; }
   const std::vector<double>& cellFilmVolume() const { return cellVolume_; }
+  // The rivulet's liquid per trail cell (m^3); all 0 without a rivulet.
+  const std::vector<double>& cellRivuletVolume() const { return rivuletVolume_; }
+  // Whether the source now overflows as a rivulet: welling at rivulet.formFlowRate or faster.
+  bool wellsAsRivulet() const;
+  // The rivulet's flow law (rivulet.hpp) at arc length s: its slope and receding contact angle.
+  RivuletFlow rivuletFlowAt(double arcLength) const;
   VolumeBudget budget() const;
 
   // Film thickness (m) at arc length s; 0 off the path.
@@ -301,6 +351,16 @@ class TearLiquidSimulation {
 
  private:
   void well();
+  // Rivulets (tear_liquid_rivulet.cpp), in the order step() runs them.
+  void flowRivulet();
+  void wetUnderRivulet();
+  void joinRivulet();
+  void breakRivulet();
+  size_t rivuletCellEnd() const;  // cells [0, end) carry a rivulet: those starting before the first drip site
+  double dripSiteOfRivulet() const;
+  void feedDripSite(double volume);
+  void breakStretch(size_t first, size_t last, double halfWidth);
+  void rivuletViews(TearLiquidState& state) const;
   void moveBead(Bead& bead, int id);
   void depositTrail(Bead& bead, int id, double distance);
   void runOut(Bead& bead, int id);
@@ -348,6 +408,9 @@ class TearLiquidSimulation {
   std::vector<double> cellWidth_;   // widest bead base that wetted the cell
   std::vector<int> cellDepositor_;  // bead that last laid film there (-1: none)
   std::vector<double> cellOwnVolume_;  // the part of the film that bead laid
+  std::vector<double> rivuletVolume_;  // rivulet liquid per trail cell
+  std::vector<double> rivuletPeakFlux_;  // the largest flux the cell's rivulet has carried (0: none now)
+  double breakFlowRate_ = 0.0;
 };
 
 // The number of steps of `timeStep` a simulation takes to reach t (advanceTo(t) takes this many).
