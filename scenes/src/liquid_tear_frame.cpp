@@ -6,6 +6,7 @@
 
 #include "lacrima/geometry/drop_oscillation.hpp"
 #include "lacrima/geometry/liquid_bead_mesh.hpp"
+#include "lacrima/geometry/liquid_rivulet_mesh.hpp"
 #include "lacrima/geometry/meniscus_swelling.hpp"
 #include "lacrima/scenes/liquid_tear.hpp"
 #include "liquid_tear_film.hpp"
@@ -64,6 +65,34 @@ TriangleMesh beadMesh(const ShotLiquidTear& tear, const FlowPath& course, const 
   placement.contactAngle = float(bead.contactAngle);  // the local mean angle, as BeadView's shape
   placement.baseOffset = kLiquidBeadBaseOffset;
   return makeLiquidBeadMesh(skin, placement);
+}
+
+// A stretch of rivulet on this skin: a station at each cell centre, on the course's point there.
+TriangleMesh rivuletMesh(const ShotLiquidTear& tear, const FlowPath& course, const RivuletView& rivulet,
+                         const TriangleMesh& skin) {
+  std::vector<LiquidRivuletStation> stations;
+  for (const RivuletStation& from : rivulet.stations) {
+    size_t piece = 0;
+    const SurfacePoint at = liquidTearPathPoint(course, from.arcLength, &piece);
+    const SurfacePoint pieceEnd{course.points[piece].triangle, course.arrival[piece + 1]};
+    LiquidRivuletStation station;
+    station.contact = surfacePosition(skin, at);
+    station.normal = skinNormal(skin, at);
+    station.along = surfacePosition(skin, pieceEnd) - surfacePosition(skin, course.points[piece]);
+    if (std::abs(station.along.normalized().dot(station.normal)) > 0.999f) station.along = tear.gravity;
+    station.halfWidth = float(from.halfWidth);
+    station.height = float(from.height);
+    stations.push_back(station);
+  }
+  return makeLiquidRivuletMesh(stations, kLiquidBeadBaseOffset);
+}
+
+// The stretch of `rivulets` that starts where `rivulet` does and has as many stations (the same
+// mesh layout at shutter close), if any.
+const RivuletView* sameLayout(const std::vector<RivuletView>& rivulets, const RivuletView& rivulet) {
+  for (const RivuletView& other : rivulets)
+    if (other.begin == rivulet.begin && other.stations.size() == rivulet.stations.size()) return &other;
+  return nullptr;
 }
 
 // A falling drop as drawn: an oscillating spheroid mesh (drop_oscillation.hpp).
@@ -135,6 +164,19 @@ void addLiquidTear(const ShotLiquidTear& tear, const LiquidTearShutter& run, con
     MeshInstance instance(beadMesh(tear, openCourse->path, bead, skinOpen), tear.materialId);
     if (const BeadView* later = blurred ? findById(close.beads, bead.id, &BeadView::id) : nullptr) {
       TriangleMesh atClose = beadMesh(tear, closeCourse->path, *later, skinClose);
+      if (atClose.positions != instance.mesh.positions) {
+        instance.positionsAtClose = std::move(atClose.positions);
+        instance.normalsAtClose = std::move(atClose.normals);
+      }
+    }
+    frame.meshes.push_back(std::move(instance));
+  }
+  // A rivulet is blurred where its stretch keeps its cells over the shutter (it swells or thins
+  // there); one whose front moves on to new cells is drawn as at shutter open.
+  for (const RivuletView& rivulet : open.rivulets) {
+    MeshInstance instance(rivuletMesh(tear, openCourse->path, rivulet, skinOpen), tear.materialId);
+    if (const RivuletView* later = blurred ? sameLayout(close.rivulets, rivulet) : nullptr) {
+      TriangleMesh atClose = rivuletMesh(tear, closeCourse->path, *later, skinClose);
       if (atClose.positions != instance.mesh.positions) {
         instance.positionsAtClose = std::move(atClose.positions);
         instance.normalsAtClose = std::move(atClose.normals);

@@ -1233,7 +1233,7 @@ class ShotReader {
                    {"type", "asset", "part", "source", "material", "gravity", "maxLength", "rate", "wellStart",
                     "wellEnd", "overflowVolume", "spillVolume", "contactAngles", "filmThickness", "dryingTime",
                     "hangingContactRadius", "overhangAngle", "viscosity", "trailRefinement", "contactAngleRegions",
-                    "pinning", "skinTemperature", "airTemperature", "humidity"});
+                    "pinning", "skinTemperature", "airTemperature", "humidity", "rivulet"});
     if (!o.ok()) return;
     const size_t before = c_.errorCount();
     ShotLiquidTear tear;
@@ -1274,6 +1274,7 @@ class ShotReader {
     if (auto x = o.number("viscosity", Range::above(0))) p.viscosity = *x;
     if (auto x = o.integer("trailRefinement", Range::closed(0, 3))) tear.trailRefinementLevels = int(*x);
     readPinning(o, tear);
+    readRivulet(o, tear.params);
     readMaterialMember(o, tear.material, tear.materialId);
     if (c_.errorCount() == before && asset) shot_.liquidTears.push_back(tear);
   }
@@ -1303,6 +1304,29 @@ class ShotReader {
     if (!r.ok()) return;
     if (auto x = r.number("factor", Range::atLeast(1), true)) tear.pinningFactor = *x;
     if (auto x = r.number("patchSize", Range::above(0))) tear.pinningPatchSize = *x;
+  }
+
+  // "rivulet": {"formFlowRate": uL/s > 0, "breakFlowRate": uL/s in (0, formFlowRate] (default half
+  // of it)}: welling at formFlowRate or faster runs down as a rivulet (TearLiquidParams::rivulet).
+  void readRivulet(ObjectReader& o, TearLiquidParams& p) {
+    const Json* v = o.find("rivulet");
+    if (!v) return;
+    ObjectReader r(c_, *v, o.at("rivulet"), {"formFlowRate", "breakFlowRate"});
+    if (!r.ok()) return;
+    const auto form = r.number("formFlowRate", Range::above(0), true);
+    const auto breaking = r.number("breakFlowRate", Range::above(0));
+    if (!form) return;
+    if (breaking && *breaking > *form) {
+      r.error("breakFlowRate", fmt::format("the rivulet breaks at {} uL/s, above the {} uL/s it forms at; it must not "
+                                           "exceed formFlowRate",
+                                           *breaking, *form));
+      return;
+    }
+    if (!(p.contactAngles.receding < 0.5 * std::numbers::pi))
+      o.error("contactAngles", fmt::format("a rivulet needs a receding contact angle below 90 degrees, got {} degrees",
+                                           p.contactAngles.receding * 180.0 / std::numbers::pi));
+    p.rivulet.formFlowRate = *form * kMicrolitre;
+    if (breaking) p.rivulet.breakFlowRate = *breaking * kMicrolitre;
   }
 
   // "contactAngles": [advancing, receding] in degrees, 0 < receding <= advancing < 180.
