@@ -109,7 +109,15 @@ TriangleMesh makeLiquidBeadMesh(const TriangleMesh& skin, const LiquidBeadPlacem
     ringStart.push_back(uint32_t(mesh.positions.size()));
     for (int k = 0; k < segments; ++k) addVertex(rho * std::sin(psi), phiOf(k), z);
   }
-  // Base: rings inwards from the contact line, then the centre (all at z = 0: on the skin).
+  // Base: the contact line again, then rings inwards and the centre (all at z = 0: on the skin).
+  // The surface turns sharply at the contact line (by the contact angle), so the base has its own
+  // copy of that ring, bitwise at the same places (the mesh is closed once coincident vertices are
+  // welded, as the renderer's openness check does), and the dome's and the base's normals there
+  // are each their own side's: shared vertices would average them into a rim of normals tilted
+  // halfway between the two, and water refracts by its shading normal.
+  const uint32_t contactRing = ringStart.back();
+  ringStart.push_back(uint32_t(mesh.positions.size()));
+  for (int k = 0; k < segments; ++k) mesh.positions.push_back(mesh.positions[contactRing + uint32_t(k)]);
   for (int j = resolution.baseRings - 1; j >= 1; --j) {
     ringStart.push_back(uint32_t(mesh.positions.size()));
     for (int k = 0; k < segments; ++k) addVertex(double(j) / double(resolution.baseRings), phiOf(k), 0.0);
@@ -119,10 +127,13 @@ TriangleMesh makeLiquidBeadMesh(const TriangleMesh& skin, const LiquidBeadPlacem
   auto at = [&](size_t ring, int k) { return ringStart[ring] + uint32_t(k % segments); };
   // Seen from outside (+n above the dome), increasing phi runs counter-clockwise about n.
   for (int k = 0; k < segments; ++k) mesh.indices.insert(mesh.indices.end(), {apex, at(0, k), at(0, k + 1)});
-  for (size_t r = 0; r + 1 < ringStart.size(); ++r)
+  const size_t contactRingIndex = size_t(resolution.domeRings) - 1;  // its copy follows it: no strip between them
+  for (size_t r = 0; r + 1 < ringStart.size(); ++r) {
+    if (r == contactRingIndex) continue;
     for (int k = 0; k < segments; ++k)
       mesh.indices.insert(mesh.indices.end(), {at(r, k), at(r + 1, k), at(r + 1, k + 1), at(r, k), at(r + 1, k + 1),
                                                at(r, k + 1)});
+  }
   const size_t last = ringStart.size() - 1;
   for (int k = 0; k < segments; ++k) mesh.indices.insert(mesh.indices.end(), {baseCentre, at(last, k + 1), at(last, k)});
   computeSmoothNormals(mesh, false);

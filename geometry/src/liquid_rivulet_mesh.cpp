@@ -46,15 +46,22 @@ Frame3 frameOf(const LiquidRivuletStation& s) {
   return f;
 }
 
-// The cross-section as (y, z) per ring vertex, counter-clockwise about t: over the top from +1 to
-// -1 (the parabola), then back along the base (its inner points), all for a unit half-width and height.
-std::vector<Vec2> unitSection(const LiquidRivuletResolution& r) {
-  std::vector<Vec2> section;
+// The cross-section for a unit half-width and height, counter-clockwise about t: the water's top
+// (the parabola, over from y = +1 to -1) and its base (back from -1 to +1). The edges are in both:
+// the surface turns sharply there (by the contact angle plus 90 degrees), so each side keeps its
+// own vertices and normals, and the two meet edge to edge (closed once coincident vertices are
+// welded, as the renderer's openness check does).
+struct Section {
+  std::vector<Vec2> top, base;
+};
+
+Section unitSection(const LiquidRivuletResolution& r) {
+  Section section;
   for (int k = 0; k <= r.across; ++k) {
     const float y = 1.0f - 2.0f * float(k) / float(r.across);
-    section.emplace_back(y, 1.0f - y * y);
+    section.top.emplace_back(y, 1.0f - y * y);
   }
-  for (int k = 1; k < r.baseAcross; ++k) section.emplace_back(-1.0f + 2.0f * float(k) / float(r.baseAcross), 0.0f);
+  for (int k = 0; k <= r.baseAcross; ++k) section.base.emplace_back(-1.0f + 2.0f * float(k) / float(r.baseAcross), 0.0f);
   return section;
 }
 
@@ -63,52 +70,55 @@ std::vector<Vec2> unitSection(const LiquidRivuletResolution& r) {
 TriangleMesh makeLiquidRivuletMesh(const std::vector<LiquidRivuletStation>& stations, float baseOffset,
                                    const LiquidRivuletResolution& resolution) {
   validate(stations, baseOffset, resolution);
-  const std::vector<Vec2> section = unitSection(resolution);
-  const uint32_t ringSize = uint32_t(section.size());
+  const Section section = unitSection(resolution);
   TriangleMesh mesh;
   mesh.name = "liquid rivulet";
-  // A ring at `station`, moved by `offset` along its t and scaled by `scale` across and up.
-  auto addRing = [&](const LiquidRivuletStation& station, float offset, float scale) {
-    const Frame3 f = frameOf(station);
-    const uint32_t first = uint32_t(mesh.positions.size());
-    for (const Vec2& p : section) {
+  // The sweep of one side of the section (top or base) as rings down the rivulet, closed at both
+  // ends by a tip: the ends' rings shrink as an ellipsoid's, cos(phi) across and up at sin(phi)
+  // half-widths beyond the end station.
+  auto sweep = [&](const std::vector<Vec2>& side) {
+    auto addVertex = [&](const LiquidRivuletStation& station, float offset, float scale, const Vec2& p) {
+      const Frame3 f = frameOf(station);
       const float y = scale * station.halfWidth * p.x();
       const float z = baseOffset + scale * station.height * p.y();
       mesh.positions.push_back(station.contact + offset * f.t + y * f.w + z * f.n);
+      return uint32_t(mesh.positions.size() - 1);
+    };
+    auto addRing = [&](const LiquidRivuletStation& station, float offset, float scale) {
+      const uint32_t first = uint32_t(mesh.positions.size());
+      for (const Vec2& p : side) addVertex(station, offset, scale, p);
+      return first;
+    };
+    const LiquidRivuletStation& head = stations.front();
+    const LiquidRivuletStation& tail = stations.back();
+    const int caps = resolution.capRings;
+    const float half = 0.5f * float(std::numbers::pi);
+    std::vector<uint32_t> rings;
+    const uint32_t startTip = addVertex(head, -head.halfWidth, 0.0f, Vec2::Zero());
+    for (int j = caps; j >= 1; --j) {
+      const float phi = half * float(j) / float(caps + 1);
+      rings.push_back(addRing(head, -head.halfWidth * std::sin(phi), std::cos(phi)));
     }
-    return first;
+    for (const LiquidRivuletStation& station : stations) rings.push_back(addRing(station, 0.0f, 1.0f));
+    for (int j = 1; j <= caps; ++j) {
+      const float phi = half * float(j) / float(caps + 1);
+      rings.push_back(addRing(tail, tail.halfWidth * std::sin(phi), std::cos(phi)));
+    }
+    const uint32_t endTip = addVertex(tail, tail.halfWidth, 0.0f, Vec2::Zero());
+    const uint32_t segments = uint32_t(side.size() - 1);
+    for (uint32_t k = 0; k < segments; ++k)
+      mesh.indices.insert(mesh.indices.end(), {startTip, rings[0] + k + 1, rings[0] + k});
+    for (size_t r = 0; r + 1 < rings.size(); ++r)
+      for (uint32_t k = 0; k < segments; ++k) {
+        const uint32_t a = rings[r] + k, b = rings[r + 1] + k;
+        mesh.indices.insert(mesh.indices.end(), {a, a + 1, b + 1, a, b + 1, b});
+      }
+    for (uint32_t k = 0; k < segments; ++k)
+      mesh.indices.insert(mesh.indices.end(), {endTip, rings.back() + k, rings.back() + k + 1});
   };
-  auto addPoint = [&](const LiquidRivuletStation& station, float offset) {
-    const Frame3 f = frameOf(station);
-    mesh.positions.push_back(station.contact + offset * f.t + baseOffset * f.n);
-    return uint32_t(mesh.positions.size() - 1);
-  };
-  // Rings in order down the rivulet: the start cap's (from its tip), the stations', the end cap's.
-  std::vector<uint32_t> rings;
-  const int caps = resolution.capRings;
-  const float half = 0.5f * float(std::numbers::pi);
-  const LiquidRivuletStation& head = stations.front();
-  const LiquidRivuletStation& tail = stations.back();
-  const uint32_t startTip = addPoint(head, -head.halfWidth);
-  for (int j = caps; j >= 1; --j) {
-    const float phi = half * float(j) / float(caps + 1);
-    rings.push_back(addRing(head, -head.halfWidth * std::sin(phi), std::cos(phi)));
-  }
-  for (const LiquidRivuletStation& station : stations) rings.push_back(addRing(station, 0.0f, 1.0f));
-  for (int j = 1; j <= caps; ++j) {
-    const float phi = half * float(j) / float(caps + 1);
-    rings.push_back(addRing(tail, tail.halfWidth * std::sin(phi), std::cos(phi)));
-  }
-  const uint32_t endTip = addPoint(tail, tail.halfWidth);
-
-  auto at = [&](size_t ring, uint32_t k) { return rings[ring] + k % ringSize; };
-  for (uint32_t k = 0; k < ringSize; ++k) mesh.indices.insert(mesh.indices.end(), {startTip, at(0, k + 1), at(0, k)});
-  for (size_t r = 0; r + 1 < rings.size(); ++r)
-    for (uint32_t k = 0; k < ringSize; ++k)
-      mesh.indices.insert(mesh.indices.end(),
-                          {at(r, k), at(r, k + 1), at(r + 1, k + 1), at(r, k), at(r + 1, k + 1), at(r + 1, k)});
-  const size_t last = rings.size() - 1;
-  for (uint32_t k = 0; k < ringSize; ++k) mesh.indices.insert(mesh.indices.end(), {endTip, at(last, k), at(last, k + 1)});
+  sweep(section.top);
+  sweep(section.base);
+  // Per side: the top's normals from the top's triangles only, the base's from the base's.
   computeSmoothNormals(mesh, false);
   return mesh;
 }

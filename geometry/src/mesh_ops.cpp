@@ -108,6 +108,15 @@ std::string findClosedMeshDefect(const TriangleMesh& mesh) {
   return {};
 }
 
+std::string findWeldedClosedMeshDefect(const TriangleMesh& mesh) {
+  TriangleMesh welded;
+  welded.positions = mesh.positions;
+  welded.indices = mesh.indices;
+  const std::vector<uint32_t> representative = findCoincidentVertices(mesh);
+  for (uint32_t& index : welded.indices) index = representative[index];
+  return findClosedMeshDefect(welded);
+}
+
 size_t countBoundaryEdges(const TriangleMesh& mesh) {
   const std::vector<uint32_t> welded = findCoincidentVertices(mesh);
   std::unordered_map<uint64_t, int> triangles;  // per undirected welded edge

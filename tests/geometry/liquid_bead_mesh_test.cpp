@@ -42,7 +42,7 @@ TEST(LiquidBeadMesh, IsClosedOutwardAndHasTheCapVolumeOnAFlatSkin) {
     const TriangleMesh bead = makeLiquidBeadMesh(skin, p, {24, 3, 64});
     EXPECT_EQ(bead.name, "liquid bead");
     EXPECT_EQ(findMeshDefect(bead), "");
-    EXPECT_EQ(findClosedMeshDefect(bead), "");
+    EXPECT_EQ(findWeldedClosedMeshDefect(bead), "");
     EXPECT_NEAR(signedVolume(bead), capVolume(p), 0.01 * capVolume(p)) << angle;
     float lowest = 1.0f, highest = -1.0f;
     for (const Vec3& v : bead.positions) {
@@ -57,13 +57,38 @@ TEST(LiquidBeadMesh, IsClosedOutwardAndHasTheCapVolumeOnAFlatSkin) {
   }
 }
 
+// The contact line is a sharp edge: its base copy's normals point into the skin, its dome copy's
+// lean out by about the contact angle (shared vertices would average the two, and water refracts
+// by its shading normal).
+TEST(LiquidBeadMesh, DomeAndBaseKeepTheirOwnNormalsAlongTheContactLine) {
+  const TriangleMesh skin = heightFieldMesh(20, 0.01f, [](float, float) { return 0.0f; });
+  LiquidBeadPlacement p = placement(80.0f);
+  p.halfLength = p.halfWidth = 0.002f;  // round, so the rim's angle is the contact angle all round
+  p.height = 0.002f * (1.0f - std::cos(p.contactAngle)) / std::sin(p.contactAngle);
+  const TriangleMesh bead = makeLiquidBeadMesh(skin, p, {48, 3, 64});
+  int dome = 0, base = 0;
+  for (size_t v = 0; v < bead.positions.size(); ++v) {
+    if (std::abs(bead.positions[v].z() - p.baseOffset) > 1e-9f || bead.positions[v].head<2>().norm() < 0.0019f) continue;
+    const Vec3& n = bead.normals[v];
+    if (n.z() < -0.999f) {
+      ++base;
+    } else {
+      ++dome;
+      // The smooth normal averages the last ring of faces: within that ring's angle (80 / 48 degrees) and a bit.
+      EXPECT_NEAR(std::acos(n.z()) * 180.0f / float(std::numbers::pi), 80.0f, 2.5f);
+    }
+  }
+  EXPECT_EQ(dome, 64);
+  EXPECT_EQ(base, 64);
+}
+
 TEST(LiquidBeadMesh, FollowsCurvedSkinWithoutDippingIntoIt) {
   for (float curvature : {-60.0f, 60.0f}) {  // 1/m: convex (cheek) and concave (a fold)
     auto height = [curvature](float x, float y) { return 0.5f * curvature * (x * x + y * y); };
     const TriangleMesh skin = heightFieldMesh(60, 0.01f, height);
     const LiquidBeadPlacement p = placement(80.0f);
     const TriangleMesh bead = makeLiquidBeadMesh(skin, p);
-    EXPECT_EQ(findClosedMeshDefect(bead), "");
+    EXPECT_EQ(findWeldedClosedMeshDefect(bead), "");
     EXPECT_GT(signedVolume(bead), 0.0);
     for (const Vec3& v : bead.positions) {
       // The skin's triangles are chords of the analytic surface: they sag below it by at most
@@ -82,7 +107,7 @@ TEST(LiquidBeadMesh, ANegativeOffsetSinksTheBaseJustUnderCurvedSkin) {
     LiquidBeadPlacement p = placement(80.0f);
     p.baseOffset = -2e-5f;
     const TriangleMesh bead = makeLiquidBeadMesh(skin, p);
-    EXPECT_EQ(findClosedMeshDefect(bead), "");
+    EXPECT_EQ(findWeldedClosedMeshDefect(bead), "");
     EXPECT_GT(signedVolume(bead), 0.0);
     int under = 0;
     for (const Vec3& v : bead.positions) {

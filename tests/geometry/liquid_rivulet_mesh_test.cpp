@@ -24,12 +24,38 @@ TEST(LiquidRivuletMesh, IsClosedOutwardAndHoldsTheSectionAlongItsLengthPlusTwoRo
   const float a = 2.2e-4f, h = 2.4e-4f, spacing = 5e-4f;
   for (int count : {1, 2, 40}) {
     const TriangleMesh mesh = makeLiquidRivuletMesh(straightStations(count, spacing, a, h), 0.0f, {64, 4, 16});
-    EXPECT_EQ(findClosedMeshDefect(mesh), "") << count;
+    EXPECT_EQ(findWeldedClosedMeshDefect(mesh), "") << count;
+    EXPECT_EQ(countBoundaryEdges(mesh), 0u) << count;
     // Section (4/3) a h; each end an ellipsoidal quarter of it: (2/3) a of full section.
     const double section = 4.0 / 3.0 * a * h;
     const double expected = section * (double(count - 1) * spacing + 2.0 * (2.0 / 3.0) * a);
     EXPECT_NEAR(signedVolume(mesh) / expected, 1.0, 0.01) << count;
   }
+}
+
+// The crease along the edges stays sharp: the top's normals there tilt by the parabola's edge
+// angle, atan(2 height / halfWidth), from the skin's normal; the base's point into the skin.
+TEST(LiquidRivuletMesh, TopAndBaseKeepTheirOwnNormalsAtTheEdges) {
+  const float a = 3e-4f, h = 2e-4f;
+  const TriangleMesh mesh = makeLiquidRivuletMesh(straightStations(9, 5e-4f, a, h), 0.0f, {24, 4, 4});
+  const float edgeTilt = std::atan(2.0f * h / a);
+  int topEdges = 0, baseEdges = 0;
+  for (size_t v = 0; v < mesh.positions.size(); ++v) {
+    const Vec3& p = mesh.positions[v];
+    if (std::abs(std::abs(p.x()) - a) > 1e-9f || p.y() < -4e-3f + 1e-6f || p.y() > -1e-6f) continue;  // mid stations' edges
+    const Vec3& n = mesh.normals[v];
+    if (n.z() < 0.0f) {
+      EXPECT_NEAR(n.z(), -1.0f, 1e-5f);
+      ++baseEdges;
+    } else {
+      // The smooth normal averages the faces around it: within the angle of one segment of the edge's.
+      EXPECT_NEAR(std::acos(n.z()), edgeTilt, 0.12f);
+      EXPECT_GT(n.x() * p.x(), 0.0f);  // leaning outwards
+      ++topEdges;
+    }
+  }
+  EXPECT_EQ(topEdges, 2 * 7);
+  EXPECT_EQ(baseEdges, 2 * 7);
 }
 
 TEST(LiquidRivuletMesh, TheBaseLiesBaseOffsetAlongTheNormalAndTheTopAtTheHeight) {
@@ -58,7 +84,7 @@ TEST(LiquidRivuletMesh, FollowsTheStationsRoundABend) {
     stations.push_back({radius * normal, normal, along, 2e-4f, 2e-4f});
   }
   const TriangleMesh mesh = makeLiquidRivuletMesh(stations, -2e-5f);
-  EXPECT_EQ(findClosedMeshDefect(mesh), "");
+  EXPECT_EQ(findWeldedClosedMeshDefect(mesh), "");
   EXPECT_GT(signedVolume(mesh), 0.0);
   for (const Vec3& p : mesh.positions) {
     const float fromAxis = std::hypot(p.y(), p.z());

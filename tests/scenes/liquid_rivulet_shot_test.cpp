@@ -43,7 +43,7 @@ TEST(LiquidRivuletShot, ARivuletRunsDownTheCheekAsAClosedMeshJustUnderTheSkinItW
   ASSERT_EQ(rivulets.size(), 1u);
   const TriangleMesh& mesh = rivulets[0]->mesh;
   EXPECT_EQ(findMeshDefect(mesh), "");
-  EXPECT_EQ(findClosedMeshDefect(mesh), "");
+  EXPECT_EQ(findWeldedClosedMeshDefect(mesh), "");
   EXPECT_EQ(rivulets[0]->materialId, uint32_t(shot.findMaterial("water")));
   // The drawn water holds the simulated rivulet's volume (a ruled sweep between cell centres, its
   // rounded ends, the 20 um under the skin and the bends of the cheek: within 15 %).

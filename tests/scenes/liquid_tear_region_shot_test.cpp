@@ -118,7 +118,8 @@ TEST(LiquidTearRegionShot, BeadMeshesInTheRegionAreDrawnAtItsContactAngle) {
     const auto beads = beadsOf(frame);
     ASSERT_EQ(state.beads.size(), 1u);
     ASSERT_EQ(beads.size(), 1u);
-    ASSERT_EQ(beads[0]->mesh.positions.size(), size_t(1 + (kDomeRings + 2) * kSegments + 1));
+    // Apex, dome rings, the contact ring's copy for the base, two inner base rings, base centre.
+    ASSERT_EQ(beads[0]->mesh.positions.size(), size_t(1 + (kDomeRings + 3) * kSegments + 1));
     const ContactAngleHysteresis& angles =
         shot == &oily ? shot->liquidTears[0].params.contactAngleRegions[0] : shot->liquidTears[0].params.contactAngles;
     EXPECT_EQ(state.beads[0].contactAngle, 0.5 * (angles.advancing + angles.receding));

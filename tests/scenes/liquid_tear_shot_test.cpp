@@ -156,7 +156,7 @@ TEST(LiquidTearShot, BeadMeshesAreClosedOutwardAndWetTheSkinTheyLieOn) {
     ASSERT_FALSE(beads.empty()) << f;
     for (const MeshInstance* bead : beads) {
       EXPECT_EQ(findMeshDefect(bead->mesh), "") << f;
-      EXPECT_EQ(findClosedMeshDefect(bead->mesh), "") << f;
+      EXPECT_EQ(findWeldedClosedMeshDefect(bead->mesh), "") << f;
       EXPECT_GT(signedVolume(bead->mesh), 0.0) << f;
       EXPECT_EQ(bead->materialId, uint32_t(shot.findMaterial("water")));
       float lowest = std::numeric_limits<float>::infinity();

@@ -37,7 +37,9 @@ struct LiquidBeadResolution {
   int segments = 32;
 };
 
-// The bead's mesh (counter-clockwise from outside, closed, smooth per-vertex normals) on `skin`.
+// The bead's mesh (counter-clockwise from outside, smooth per-vertex normals) on `skin`; closed
+// once coincident vertices are welded: the dome and the base each have their own vertices along
+// the contact line, so each side keeps its own normals at that sharp edge.
 // Throws InputError for invalid placement values or resolution (domeRings >= 2, baseRings >= 1,
 // segments >= 3) or `along` parallel to the normal.
 TriangleMesh makeLiquidBeadMesh(const TriangleMesh& skin, const LiquidBeadPlacement& placement,

@@ -71,6 +71,10 @@ std::string findMeshDefect(const TriangleMesh& mesh);
 // Returns "" when that holds, otherwise a description of the first offending edge.
 // Expects a mesh without findMeshDefect problems.
 std::string findClosedMeshDefect(const TriangleMesh& mesh);
+// The same check on the mesh with coincident vertices merged (findCoincidentVertices): for meshes
+// that keep separate vertices on either side of a sharp edge for their normals (liquid beads and
+// rivulets along their contact lines), closed as the renderer's openness check sees them.
+std::string findWeldedClosedMeshDefect(const TriangleMesh& mesh);
 
 // The edges that belong to exactly one triangle, orientation ignored, with vertices welded by
 // position (findCoincidentVertices) so that a closed surface split at UV seams counts as closed.
