@@ -63,6 +63,14 @@ void validateSource(const WellingSource& source) {
   requireNonNegative(source.initialVolume, "initial meniscus volume");
   requirePositive(source.overflowVolume, "overflow volume");
   requirePositive(source.spillVolume, "spill volume");
+  for (size_t i = 0; i < source.rateKeys.size(); ++i) {
+    const auto& [time, rate] = source.rateKeys[i];
+    requireFinite(time, "welling rate key time");
+    requireNonNegative(rate, "welling rate key rate");
+    if (i > 0 && !(time > source.rateKeys[i - 1].first))
+      throw InputError(fmt::format("tear liquid: welling rate key times must increase strictly, key {} has {} s after {} s",
+                                   i, time, source.rateKeys[i - 1].first));
+  }
   if (source.spillVolume > source.overflowVolume)
     throw InputError(fmt::format("tear liquid: spill volume {} must not exceed the overflow volume {}", source.spillVolume,
                                  source.overflowVolume));
@@ -357,8 +365,7 @@ void TearLiquidSimulation::well() {
   const WellingSource& source = input_.params.source;
   const double t0 = time();
   const double t1 = t0 + input_.params.timeStep;
-  const double overlap = std::max(0.0, std::min(t1, source.end) - std::max(t0, source.start));
-  const double added = source.rate * overlap;
+  const double added = source.volumeBetween(t0, t1);
   meniscus_ += added;
   sourced_ += added;
   // Welling fast enough, the overflow runs on as a rivulet from the lid margin (the path's start).

@@ -16,9 +16,7 @@ constexpr double kMinDrawnHalfWidth = 1e-5;  // m
 
 bool TearLiquidSimulation::wellsAsRivulet() const {
   const TearLiquidParams& p = input_.params;
-  const double t = time();
-  return p.rivulet.formFlowRate > 0.0 && p.source.rate >= p.rivulet.formFlowRate && t >= p.source.start &&
-         t < p.source.end;
+  return p.rivulet.formFlowRate > 0.0 && p.source.rateAt(time()) >= p.rivulet.formFlowRate;
 }
 
 RivuletFlow TearLiquidSimulation::rivuletFlowAt(double s) const {

@@ -1250,8 +1250,8 @@ class ShotReader {
     TearLiquidParams& p = tear.params;
     WellingSource& source = p.source;
     if (auto x = o.number("maxLength", Range::above(0))) tear.maxLength = float(*x);
-    if (auto x = o.number("rate", Range::atLeast(0))) source.rate = *x * kMicrolitre;
     readWellingTimes(o, tear);
+    readWellingRate(o, tear);
     if (auto x = o.number("overflowVolume", Range::above(0))) source.overflowVolume = *x * kMicrolitre;
     if (auto x = o.number("spillVolume", Range::above(0))) {
       if (*x * kMicrolitre > source.overflowVolume)
@@ -1293,6 +1293,33 @@ class ShotReader {
     if (end && *end < (start ? *start : first))
       o.error("wellEnd", fmt::format("welling must end at or after it starts: wellEnd {} < {} {}", *end,
                                      start ? "wellStart" : "the shot's first frame", start ? *start : first));
+  }
+
+  // "rate": uL/s >= 0, or keys {"keys": [[frame, uL/s], ...], "interpolation": ...} for crying that
+  // swells and eases. The simulation integrates the rate exactly over straight pieces: "linear"
+  // keys are handed to it as they are, other interpolations as a polyline of kRateKeysPerFrame
+  // points a frame between the first and the last key.
+  void readWellingRate(ObjectReader& o, ShotLiquidTear& tear) {
+    const Json* v = o.find("rate");
+    if (!v) return;
+    const auto rate = readAnimatedNumber(c_, *v, o.at("rate"), Range::atLeast(0));
+    if (!rate) return;
+    WellingSource& source = tear.params.source;
+    source.rate = double(rate->constant) * kMicrolitre;
+    if (!rate->animated()) return;
+    constexpr int kRateKeysPerFrame = 8;
+    const std::vector<ScalarKey>& keys = rate->curve->keys();
+    auto seconds = [&](double frame) { return (frame - tear.simulationStartFrame) / shot_.fps; };
+    if (rate->curve->interpolation() == Interpolation::Linear || keys.size() == 1) {
+      for (const ScalarKey& key : keys) source.rateKeys.emplace_back(seconds(key.time), double(key.value) * kMicrolitre);
+      return;
+    }
+    const double first = keys.front().time, last = keys.back().time;
+    const int pieces = std::max(1, int(std::ceil((last - first) * kRateKeysPerFrame)));
+    for (int i = 0; i <= pieces; ++i) {
+      const double frame = first + (last - first) * double(i) / double(pieces);
+      source.rateKeys.emplace_back(seconds(frame), double(rate->at(frame)) * kMicrolitre);
+    }
   }
 
   // "pinning": {"factor": >= 1, "patchSize": m > 0 (default 4 mm)}: skin that holds the contact

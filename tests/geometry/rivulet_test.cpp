@@ -228,6 +228,61 @@ TEST(RivuletSimulation, BelowTheFormingRateTheTearSpillsBeadsExactlyAsWithoutRiv
   EXPECT_EQ(a.cellFilmVolume(), b.cellFilmVolume());
 }
 
+TEST(WellingSource, AKeyedRateIsIntegratedExactlyBetweenItsKeys) {
+  WellingSource source;
+  source.rateKeys = {{1.0, 0.0}, {2.0, 10.0 * kUl}, {3.0, 10.0 * kUl}, {4.0, 0.0}};
+  EXPECT_EQ(source.rateAt(0.5), 0.0);
+  EXPECT_NEAR(source.rateAt(1.5), 5.0 * kUl, 1e-18);
+  EXPECT_NEAR(source.rateAt(3.75), 2.5 * kUl, 1e-18);
+  EXPECT_NEAR(source.volumeBetween(0.0, 5.0), 20.0 * kUl, 1e-18);
+  EXPECT_NEAR(source.volumeBetween(1.5, 2.5), (0.5 * (5.0 + 10.0) * 0.5 + 10.0 * 0.5) * kUl, 1e-18);
+  double sum = 0.0;  // step by step as the simulation wells: the same total
+  for (int i = 0; i < 5000; ++i) sum += source.volumeBetween(i * 1e-3, (i + 1) * 1e-3);
+  EXPECT_NEAR(sum, 20.0 * kUl, 1e-15);
+  source.start = 1.5;  // the window still applies
+  source.end = 3.5;
+  EXPECT_EQ(source.rateAt(1.4), 0.0);
+  EXPECT_EQ(source.rateAt(3.5), 0.0);
+  EXPECT_NEAR(source.volumeBetween(0.0, 5.0), (0.5 * (5.0 + 10.0) * 0.5 + 10.0 + 0.5 * (10.0 + 5.0) * 0.5) * kUl, 1e-18);
+}
+
+// Crying eases: the rate falls from 10 uL/s to nothing over two seconds. The rivulet narrows as it
+// carries less (Q ~ a^4), the meniscus goes back to spilling beads once the rate is under the
+// forming rate, and the stream breaks up into beads.
+TEST(RivuletSimulation, AsTheCryingEasesTheRivuletNarrowsAndBreaksIntoBeads) {
+  TearLiquidInput input = cryingInput(0.0, 1e30);
+  input.params.source.rateKeys = {{2.5, 10.0 * kUl}, {4.5, 0.0}};
+  TearLiquidSimulation simulation(input);
+  auto halfWidthAt = [&](double s) {
+    const TearLiquidState state = simulation.state(simulation.time());
+    for (const RivuletView& rivulet : state.rivulets)
+      for (const RivuletStation& station : rivulet.stations)
+        if (std::abs(station.arcLength - s) < 3e-4) return station.halfWidth;
+    return 0.0;
+  };
+  simulation.advanceTo(2.5);
+  const double full = halfWidthAt(0.03);
+  EXPECT_NEAR(full / rivuletHalfWidthForFlux(simulation.rivuletFlowAt(0.03), 10.0 * kUl), 1.0, 0.02);
+  simulation.advanceTo(3.3);  // about 6 uL/s welling; the cell 3 cm down carries what left the lid ~0.3 s before
+  const double easing = halfWidthAt(0.03);
+  EXPECT_LT(easing, 0.97 * full);
+  EXPECT_GT(easing, 0.8 * full);
+  double worst = 0.0;
+  bool spilledBeads = false;
+  while (simulation.time() < 8.0) {
+    simulation.step();
+    worst = std::max(worst, simulation.budget().relativeImbalance());
+    // The meniscus stays full while it feeds the rivulet; a spill empties it.
+    if (simulation.time() > 3.69 && simulation.time() < 4.5)
+      spilledBeads |= simulation.meniscusVolume() < input.params.source.overflowVolume - 1.0 * kUl;
+  }
+  std::printf("[ rivulet ] easing: half-width %.3f mm at 10 uL/s, %.3f mm 0.8 s later\n", full * 1e3, easing * 1e3);
+  EXPECT_TRUE(spilledBeads);  // under 4 uL/s (from 3.7 s) the full meniscus spills a bead again
+  EXPECT_TRUE(simulation.state(simulation.time()).rivulets.empty());
+  EXPECT_EQ(simulation.budget().rivulet, 0.0);
+  EXPECT_LT(worst, 1e-6);
+}
+
 TEST(RivuletSimulation, RejectsBadRivuletParameters) {
   TearLiquidInput input = cryingInput(6.0 * kUl, 1e30);
   input.params.rivulet.breakFlowRate = 5.0 * kUl;
@@ -243,6 +298,10 @@ TEST(RivuletSimulation, RejectsBadRivuletParameters) {
   }
   input.params.rivulet.formFlowRate = 0.0;  // without rivulets any angle goes
   EXPECT_NO_THROW(TearLiquidSimulation{input});
+  input.params.source.rateKeys = {{1.0, 1.0 * kUl}, {1.0, 2.0 * kUl}};
+  EXPECT_THROW(TearLiquidSimulation{input}, InputError);
+  input.params.source.rateKeys = {{1.0, -1.0 * kUl}};
+  EXPECT_THROW(TearLiquidSimulation{input}, InputError);
 }
 
 }  // namespace

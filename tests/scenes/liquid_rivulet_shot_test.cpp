@@ -67,6 +67,30 @@ TEST(LiquidRivuletShot, ARivuletRunsDownTheCheekAsAClosedMeshJustUnderTheSkinItW
   EXPECT_NEAR(wettest, float(shot.liquidTears[0].params.filmThickness), 1e-7f);
 }
 
+// A keyed rate ("rate": {"keys": ...}) reaches the simulation in seconds from its start and m^3/s:
+// linear keys as they are, other interpolations as a polyline of 8 points a frame.
+TEST(LiquidRivuletShot, AKeyedRateReachesTheSimulationInSIUnits) {
+  const std::string linear = test::replaced(kTear, R"("rate": 10)", R"("wellStart": -23, "rate": {"keys": [[1, 10], [25, 2]], "interpolation": "linear"})");
+  const Shot a = loadShot(writeShot("rivulet_rate_linear.json", ictFaceShot(linear, "", "", kFrames)));
+  const WellingSource& source = a.liquidTears[0].params.source;
+  ASSERT_EQ(source.rateKeys.size(), 2u);
+  EXPECT_NEAR(source.rateKeys[0].first, 1.0, 1e-12);  // frame 1 is 1 s after the simulation's start, frame -23
+  EXPECT_NEAR(source.rateKeys[0].second, 10.0 * kMicrolitre, 1e-18);
+  EXPECT_NEAR(source.rateKeys[1].first, 2.0, 1e-12);
+  EXPECT_NEAR(source.rateKeys[1].second, 2.0 * kMicrolitre, 1e-18);
+  EXPECT_NEAR(source.rateAt(1.5), 6.0 * kMicrolitre, 1e-18);
+  const std::string smooth = test::replaced(kTear, R"("rate": 10)", R"("rate": {"keys": [[1, 10], [25, 2]]})");
+  const Shot b = loadShot(writeShot("rivulet_rate_smooth.json", ictFaceShot(smooth, "", "", kFrames)));
+  const WellingSource& polyline = b.liquidTears[0].params.source;
+  ASSERT_EQ(polyline.rateKeys.size(), size_t(24 * 8 + 1));
+  EXPECT_NEAR(polyline.rateKeys.front().second, 10.0 * kMicrolitre, 1e-15);
+  EXPECT_NEAR(polyline.rateKeys.back().first, 1.0, 1e-9);
+  EXPECT_NEAR(polyline.rateKeys.back().second, 2.0 * kMicrolitre, 1e-15);
+  EXPECT_EQ(b.liquidTears[0].input.params.source.rateKeys, polyline.rateKeys);  // what the simulation runs on
+  // The whole simulation keeps its volume with a keyed rate.
+  EXPECT_LT(tearLiquidVolumeBudget(b.liquidTears[0].input, 2.0).relativeImbalance(), 1e-6);
+}
+
 TEST(LiquidRivuletShot, BadRivuletKeysGiveExactMessages) {
   auto expect = [](const std::string& name, const std::string& to, const std::string& message) {
     expectSingleError(name, ictFaceShot(test::replaced(kTear, R"("rivulet": {"formFlowRate": 4})", to), "", "", kFrames),
@@ -81,6 +105,10 @@ TEST(LiquidRivuletShot, BadRivuletKeysGiveExactMessages) {
          "/tears/0/rivulet/formFlowRate: expected a number > 0, found 0");
   expect("rv_angle.json", R"("contactAngles": [110, 95], "rivulet": {"formFlowRate": 4})",
          "/tears/0/contactAngles: a rivulet needs a receding contact angle below 90 degrees, got 95 degrees");
+  expectSingleError("rv_rate.json",
+                    ictFaceShot(test::replaced(kTear, R"("rate": 10)", R"("rate": {"keys": [[1, 10], [25, -2]]})"), "", "",
+                                kFrames),
+                    "/tears/0/rate/keys/1/1: expected a number >= 0, found -2");
   expect("rv_typo.json", R"("rivulet": {"formFlowRate": 4, "brakeFlowRate": 1})",
          "/tears/0/rivulet/brakeFlowRate: unknown key 'brakeFlowRate'; did you mean 'breakFlowRate'?");
 }

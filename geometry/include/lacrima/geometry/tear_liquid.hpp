@@ -100,6 +100,7 @@
 // n = 2 shape mode; the film is uniform across the width of the widest bead that wetted each cell.
 #include <cstdint>
 #include <functional>
+#include <utility>
 #include <numbers>
 #include <vector>
 
@@ -140,6 +141,15 @@ struct WellingSource {
   double initialVolume = 0.0;                  // m^3 in the meniscus at t = 0
   double overflowVolume = 8.0 * kMicrolitre;   // the meniscus overflows when it holds this much
   double spillVolume = 6.0 * kMicrolitre;      // what leaves as a bead at each overflow (<= overflowVolume)
+  // A rate that changes over time (a sob, crying that eases): keys (time s, rate m^3/s), straight
+  // lines between them, held before the first and after the last; times strictly increasing,
+  // rates finite and >= 0. Empty: `rate` throughout. Welling still only happens in [start, end).
+  std::vector<std::pair<double, double>> rateKeys;
+
+  // The rate at time t (0 outside [start, end)).
+  double rateAt(double t) const;
+  // The volume welled over [t0, t1]: the exact integral of rateAt (trapezoids between the keys).
+  double volumeBetween(double t0, double t1) const;
 };
 
 // A bead already on the path at t = 0 (counted as source volume).
