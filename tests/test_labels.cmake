@@ -9,7 +9,7 @@
 #   render       renders images: the renderer's tests and the image regressions
 #   unit         all the others: deterministic checks of one part
 set(_cluster "^FarmCluster\\.")
-set(_slow "^(DefaultShotStory|FarmCluster|RenderMemory)\\.|^LiquidTearCourse\\.OnTheDefaultShot|^SequenceInterrupt\\.Killed")
+set(_slow "^(DefaultShotStory|CryingRivuletStory|FarmCluster|RenderMemory)\\.|^LiquidTearCourse\\.OnTheDefaultShot|^SequenceInterrupt\\.Killed")
 set(_statistical
     "^(AllBsdfs/BsdfChi2|BsdfEnergy|VndfChi2|Chi2SelfTest|Chi2Family|SubsurfaceAlbedo|DiffusionProfile|SubsurfaceDiffusion|AnalyticScenes|BounceLimits|Caustics|SamplerConvergence|WaterAnalytic)\\.")
 set(_render_in_tools "^(Shots/ImageRegression|TestSuiteCli|CliRender|BenchQuality)\\.")
