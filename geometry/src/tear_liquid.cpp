@@ -186,6 +186,7 @@ TearLiquidSimulation::TearLiquidSimulation(TearLiquidInput input) : input_(std::
   rivuletVolume_.assign(cellVolume_.size(), 0.0);
   rivuletPeakFlux_.assign(cellVolume_.size(), 0.0);
   breakFlowRate_ = p.rivulet.breakFlowRate > 0.0 ? p.rivulet.breakFlowRate : 0.5 * p.rivulet.formFlowRate;
+  if (p.rivulet.formFlowRate > 0.0) tabulateRivuletCells();
   meniscus_ = p.source.initialVolume;
   sourced_ = meniscus_;
   for (const InitialBead& initial : p.initialBeads) {
@@ -562,6 +563,7 @@ void TearLiquidSimulation::reroute(std::vector<LiquidPathSample> path, const std
   rerouteFilm(image, newLength);
   input_.path = std::move(path);
   pathLength_ = newLength;
+  if (input_.params.rivulet.formFlowRate > 0.0) tabulateRivuletCells();
   for (size_t id = 0; id < beads_.size(); ++id) {
     Bead& bead = beads_[id];
     if (!isLive(bead)) continue;

@@ -28,6 +28,16 @@ RivuletFlow TearLiquidSimulation::rivuletFlowAt(double s) const {
   return flow;
 }
 
+void TearLiquidSimulation::tabulateRivuletCells() {
+  const size_t cells = rivuletVolume_.size();
+  cellFlow_.resize(cells);
+  cellFluxCoefficient_.resize(cells);
+  for (size_t cell = 0; cell < cells; ++cell) {
+    cellFlow_[cell] = rivuletFlowAt((double(cell) + 0.5) * input_.params.trailCellLength);
+    cellFluxCoefficient_[cell] = rivuletFluxCoefficient(cellFlow_[cell]);
+  }
+}
+
 double TearLiquidSimulation::dripSiteOfRivulet() const { return nextDripSite(0.0, pathLength_); }
 
 size_t TearLiquidSimulation::rivuletCellEnd() const {
@@ -66,13 +76,12 @@ void TearLiquidSimulation::flowRivulet() {
     return;
   }
   // Q = k A^2 per cell at its centre's slope and angle; the sub-step keeps 2 k A dt / length <= kMaxCourant.
-  const double cellSize = input_.params.trailCellLength;
   const size_t reach = std::min(end, last + 1);
   std::vector<double> k(reach), length(reach);
   double courant = 0.0;
   for (size_t cell = 0; cell < reach; ++cell) {
     length[cell] = cellLength(cell);
-    k[cell] = rivuletFluxCoefficient(rivuletFlowAt((double(cell) + 0.5) * cellSize));
+    k[cell] = cellFluxCoefficient_[cell];
     const double area = rivuletVolume_[cell] / length[cell];
     courant = std::max(courant, 2.0 * k[cell] * area * input_.params.timeStep / length[cell]);
   }
@@ -104,8 +113,7 @@ void TearLiquidSimulation::wetUnderRivulet() {
   for (size_t cell = 0; cell < rivuletVolume_.size(); ++cell) {
     if (!(rivuletVolume_[cell] > 0.0)) continue;
     const double length = cellLength(cell);
-    const double s = (double(cell) + 0.5) * p.trailCellLength;
-    const double width = 2.0 * rivuletHalfWidth(rivuletFlowAt(s), rivuletVolume_[cell] / length);
+    const double width = 2.0 * rivuletHalfWidth(cellFlow_[cell], rivuletVolume_[cell] / length);
     const double wanted = p.filmThickness * std::max(width, cellWidth_[cell]) * length;
     const double added = std::min(std::max(0.0, wanted - cellVolume_[cell]), rivuletVolume_[cell]);
     cellWidth_[cell] = std::max(cellWidth_[cell], width);
@@ -139,7 +147,7 @@ void TearLiquidSimulation::breakRivulet() {
   auto breaking = [&](size_t cell) {
     if (!(rivuletVolume_[cell] > 0.0) || !(rivuletPeakFlux_[cell] >= breakFlowRate_)) return false;
     const double area = rivuletVolume_[cell] / cellLength(cell);
-    return rivuletFlux(rivuletFlowAt((double(cell) + 0.5) * cellSize), area) < breakFlowRate_;
+    return cellFluxCoefficient_[cell] * area * area < breakFlowRate_;
   };
   size_t cell = 0;
   while (cell < end) {
@@ -152,7 +160,7 @@ void TearLiquidSimulation::breakRivulet() {
     double widest = 0.0;
     bool longEnough = false;
     for (; last < end && breaking(last); ++last) {
-      const RivuletFlow flow = rivuletFlowAt((double(last) + 0.5) * cellSize);
+      const RivuletFlow& flow = cellFlow_[last];
       widest = std::max(widest, rivuletHalfWidthForFlux(flow, rivuletPeakFlux_[last]));
       longEnough = double(last + 1 - first) * cellSize >= rivuletBreakupSpacing(flow, widest);
       if (longEnough) break;
@@ -198,7 +206,7 @@ void TearLiquidSimulation::rivuletViews(TearLiquidState& state) const {
   for (size_t cell = 0; cell < rivuletVolume_.size(); ++cell) {
     const double length = cellLength(cell);
     const double s = double(cell) * cellSize + 0.5 * length;
-    const RivuletFlow flow = rivuletFlowAt(s);
+    const RivuletFlow& flow = cellFlow_[cell];
     const double halfWidth = rivuletVolume_[cell] > 0.0 ? rivuletHalfWidth(flow, rivuletVolume_[cell] / length) : 0.0;
     if (halfWidth < kMinDrawnHalfWidth) {
       close();

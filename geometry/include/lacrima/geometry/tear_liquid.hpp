@@ -144,7 +144,7 @@ struct WellingSource {
   // A rate that changes over time (a sob, crying that eases): keys (time s, rate m^3/s), straight
   // lines between them, held before the first and after the last; times strictly increasing,
   // rates finite and >= 0. Empty: `rate` throughout. Welling still only happens in [start, end).
-  std::vector<std::pair<double, double>> rateKeys;
+  std::vector<std::pair<double, double>> rateKeys = {};
 
   // The rate at time t (0 outside [start, end)).
   double rateAt(double t) const;
@@ -371,6 +371,9 @@ class TearLiquidSimulation {
   void feedDripSite(double volume);
   void breakStretch(size_t first, size_t last, double halfWidth);
   void rivuletViews(TearLiquidState& state) const;
+  // The flow law at each trail cell's centre, tabulated for the current course (at construction and
+  // after each reroute): the rivulet asks for it many times a step.
+  void tabulateRivuletCells();
   void moveBead(Bead& bead, int id);
   void depositTrail(Bead& bead, int id, double distance);
   void runOut(Bead& bead, int id);
@@ -421,6 +424,8 @@ class TearLiquidSimulation {
   std::vector<double> rivuletVolume_;  // rivulet liquid per trail cell
   std::vector<double> rivuletPeakFlux_;  // the largest flux the cell's rivulet has carried (0: none now)
   double breakFlowRate_ = 0.0;
+  std::vector<RivuletFlow> cellFlow_;           // per trail cell, at its centre
+  std::vector<double> cellFluxCoefficient_;     // k of Q = k A^2 per trail cell
 };
 
 // The number of steps of `timeStep` a simulation takes to reach t (advanceTo(t) takes this many).
