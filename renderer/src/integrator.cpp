@@ -26,6 +26,10 @@ float powerHeuristic(float pdfA, float pdfB) {
 
 // Wet skin (MeshInstance::wetness, materials/wet_skin.hpp): a skin hit under a water film shades
 // with the skin's BSDF under that film, built in `storage` (on the stack, no allocation per hit).
+// The caller passes no film for skin the path meets inside a bead or rivulet: there the water over
+// the skin is the drop itself, already crossed, and a film's own top surface would add a second,
+// air-facing reflection (sparkles of the small lights under every bead). The skin's own specular
+// lobes still meet air's index there (left: it needs the medium at opaque hits).
 const Bsdf* underSkinFilm(const Bsdf* bsdf, const Material& material, float filmThickness,
                           std::optional<WetSkinBsdf>& storage) {
   if (!(filmThickness > 0.0f) || !std::holds_alternative<SkinParams>(material.params)) return bsdf;
@@ -316,6 +320,9 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
   Vec3 previousPosition = cameraRay.origin;
   Ray ray = cameraRay;
   MediumStack media = cameraMedia_;  // the dielectric media the path is in (nested dielectrics only)
+  // The path refracted into a closed dielectric (a bead, a rivulet) and has not left it: skin it
+  // meets there is wetted by that water, which is its film (see underSkinFilm).
+  bool inDielectric = false;
   BounceCounter bounces(frame_.settings.bounces);
   // A bounce limit was passed: this segment gathers the light it meets, then the path ends.
   bool lastSegment = false;
@@ -366,7 +373,7 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
     TexturedHit textured;  // v.bsdf may point here for this bounce
     v.bsdf = withTextures(v.bsdf, textures_, material, hit, pathLength * pixelSpread_, textured);
     std::optional<WetSkinBsdf> wetSkin;  // v.bsdf may point here for this bounce
-    v.bsdf = underSkinFilm(v.bsdf, material, hit.wetness, wetSkin);
+    v.bsdf = underSkinFilm(v.bsdf, material, inDielectric ? 0.0f : hit.wetness, wetSkin);
     if (!v.bsdf->isTransmissive()) {
       // Opaque surfaces are two-sided: shade the side the ray arrives from.
       if (!frontFacing) { ng = -ng; ns = -ns; }
@@ -423,7 +430,10 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
     throughput *= bs->f * (absCosTheta(bs->wi) / bs->pdf);
     if (bs->transmitted) {
       etaScale *= bs->eta * bs->eta;
-      if (!v.thinSheet) crossInterface(media, hit.materialId, frontFacing);
+      if (!v.thinSheet) {
+        crossInterface(media, hit.materialId, frontFacing);
+        inDielectric = frontFacing;
+      }
     }
     if (!bs->specular) {
       chainAfterNonSpecular = true;

@@ -92,6 +92,35 @@ TEST(WetSkinRender, NoFilmOrNonSkinRendersBitwiseDry) {
   EXPECT_NE(renderFrame(skinFloor(kTrailFilm)).rgba, dry.rgba);
 }
 
+// A closed water slab lying on the floor, its base just under it (as beads and rivulets lie on skin).
+MeshInstance waterSlab(uint32_t materialId) {
+  const float half = 50.0f, top = 0.01f, bottom = -2e-5f;
+  MeshInstance slab;
+  slab.materialId = materialId;
+  for (int corner = 0; corner < 8; ++corner)
+    slab.mesh.positions.emplace_back(corner & 1 ? half : -half, corner & 2 ? top : bottom, corner & 4 ? half : -half);
+  // Counter-clockwise seen from outside.
+  slab.mesh.indices = {0, 1, 5, 0, 5, 4, 2, 6, 7, 2, 7, 3, 0, 4, 6, 0, 6, 2,
+                       1, 3, 7, 1, 7, 5, 0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6};
+  return slab;
+}
+
+// Skin under a bead is wetted by the bead: the film of the trail under it adds nothing (its top
+// surface would be a second reflection, facing air, under water).
+TEST(WetSkinRender, SkinUnderWaterShadesWithoutItsFilm) {
+  auto underWater = [](float film) {
+    Frame frame = skinFloor(film);
+    frame.materials.push_back(Material{"water", SmoothDielectricParams{1.337f}, Color::Zero()});
+    frame.meshes.push_back(waterSlab(1));
+    return frame;
+  };
+  ASSERT_EQ(findClosedMeshDefect(waterSlab(1).mesh), "");
+  ASSERT_GT(signedVolume(waterSlab(1).mesh), 0.0);
+  const Film dry = renderFrame(underWater(-1.0f));
+  EXPECT_EQ(renderFrame(underWater(kTrailFilm)).rgba, dry.rgba);
+  EXPECT_NE(dry.rgba, renderFrame(skinFloor(-1.0f)).rgba);  // the water is there
+}
+
 TEST(WetSkinRender, WetnessOfTheWrongSizeIsRejected) {
   Frame frame = skinFloor(kTrailFilm);
   frame.meshes.back().wetness.push_back(0.0f);
