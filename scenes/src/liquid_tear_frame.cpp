@@ -49,16 +49,29 @@ Vec3 skinNormal(const TriangleMesh& skin, const SurfacePoint& p) {
   return triangleNormal(skin, p.triangle);
 }
 
+// Where liquid at arc length s of the course sits on this skin: the point, the skin's normal there,
+// and the direction down the course's piece (gravity where that piece runs along the normal).
+struct CoursePlace {
+  Vec3 contact, normal, along;
+};
+
+CoursePlace coursePlace(const ShotLiquidTear& tear, const FlowPath& course, double arcLength, const TriangleMesh& skin) {
+  size_t piece = 0;
+  const SurfacePoint at = liquidTearPathPoint(course, arcLength, &piece);
+  const SurfacePoint pieceEnd{course.points[piece].triangle, course.arrival[piece + 1]};
+  CoursePlace place{surfacePosition(skin, at), skinNormal(skin, at),
+                    surfacePosition(skin, pieceEnd) - surfacePosition(skin, course.points[piece])};
+  if (std::abs(place.along.normalized().dot(place.normal)) > 0.999f) place.along = tear.gravity;
+  return place;
+}
+
 // The bead's mesh on this skin: at its point of the course, long axis along the course's piece there.
 TriangleMesh beadMesh(const ShotLiquidTear& tear, const FlowPath& course, const BeadView& bead, const TriangleMesh& skin) {
-  size_t piece = 0;
-  const SurfacePoint at = liquidTearPathPoint(course, bead.arcLength, &piece);
-  const SurfacePoint pieceEnd{course.points[piece].triangle, course.arrival[piece + 1]};
+  const CoursePlace place = coursePlace(tear, course, bead.arcLength, skin);
   LiquidBeadPlacement placement;
-  placement.contact = surfacePosition(skin, at);
-  placement.normal = skinNormal(skin, at);
-  placement.along = surfacePosition(skin, pieceEnd) - surfacePosition(skin, course.points[piece]);
-  if (std::abs(placement.along.normalized().dot(placement.normal)) > 0.999f) placement.along = tear.gravity;
+  placement.contact = place.contact;
+  placement.normal = place.normal;
+  placement.along = place.along;
   placement.halfLength = float(bead.shape.halfLength);
   placement.halfWidth = float(bead.shape.halfWidth);
   placement.height = float(bead.shape.height);
@@ -72,17 +85,8 @@ TriangleMesh rivuletMesh(const ShotLiquidTear& tear, const FlowPath& course, con
                          const TriangleMesh& skin) {
   std::vector<LiquidRivuletStation> stations;
   for (const RivuletStation& from : rivulet.stations) {
-    size_t piece = 0;
-    const SurfacePoint at = liquidTearPathPoint(course, from.arcLength, &piece);
-    const SurfacePoint pieceEnd{course.points[piece].triangle, course.arrival[piece + 1]};
-    LiquidRivuletStation station;
-    station.contact = surfacePosition(skin, at);
-    station.normal = skinNormal(skin, at);
-    station.along = surfacePosition(skin, pieceEnd) - surfacePosition(skin, course.points[piece]);
-    if (std::abs(station.along.normalized().dot(station.normal)) > 0.999f) station.along = tear.gravity;
-    station.halfWidth = float(from.halfWidth);
-    station.height = float(from.height);
-    stations.push_back(station);
+    const CoursePlace place = coursePlace(tear, course, from.arcLength, skin);
+    stations.push_back({place.contact, place.normal, place.along, float(from.halfWidth), float(from.height)});
   }
   return makeLiquidRivuletMesh(stations, kLiquidBeadBaseOffset);
 }
