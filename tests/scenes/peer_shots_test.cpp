@@ -25,7 +25,8 @@ TEST_P(PeerShot, LoadsWithMaterialsCyclesMatchesExactly) {
   EXPECT_FALSE(frame.meshes.empty() && frame.spheres.empty());
 }
 
-INSTANTIATE_TEST_SUITE_P(Shots, PeerShot, ::testing::Values("sphere_in_studio.json", "tear_on_cheek.json"));
+INSTANTIATE_TEST_SUITE_P(Shots, PeerShot,
+                         ::testing::Values("sphere_in_studio.json", "tear_on_cheek.json", "rivulet_on_cheek.json"));
 
 }  // namespace
 }  // namespace lacrima
