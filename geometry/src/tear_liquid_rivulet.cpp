@@ -197,6 +197,7 @@ void TearLiquidSimulation::breakStretch(size_t first, size_t last, double halfWi
 }
 
 void TearLiquidSimulation::rivuletViews(TearLiquidState& state) const {
+  if (!(input_.params.rivulet.formFlowRate > 0.0)) return;  // no rivulet, and no flow law tabulated
   const double cellSize = input_.params.trailCellLength;
   RivuletView run;
   auto close = [&] {
@@ -206,8 +207,7 @@ void TearLiquidSimulation::rivuletViews(TearLiquidState& state) const {
   for (size_t cell = 0; cell < rivuletVolume_.size(); ++cell) {
     const double length = cellLength(cell);
     const double s = double(cell) * cellSize + 0.5 * length;
-    const RivuletFlow& flow = cellFlow_[cell];
-    const double halfWidth = rivuletVolume_[cell] > 0.0 ? rivuletHalfWidth(flow, rivuletVolume_[cell] / length) : 0.0;
+    const double halfWidth = rivuletVolume_[cell] > 0.0 ? rivuletHalfWidth(cellFlow_[cell], rivuletVolume_[cell] / length) : 0.0;
     if (halfWidth < kMinDrawnHalfWidth) {
       close();
       continue;
@@ -216,7 +216,7 @@ void TearLiquidSimulation::rivuletViews(TearLiquidState& state) const {
     run.end = double(cell) * cellSize + length;
     run.volume += rivuletVolume_[cell];
     run.stations.push_back(
-        RivuletStation{s, positionAt(s), input_.path[pieceAt(s)].normal, halfWidth, rivuletHeight(flow, halfWidth)});
+        RivuletStation{s, positionAt(s), input_.path[pieceAt(s)].normal, halfWidth, rivuletHeight(cellFlow_[cell], halfWidth)});
   }
   close();
 }
