@@ -71,6 +71,9 @@ configure_and_build() {
 # fuzzed under the sanitizers when found and the Release ctest replays them on every run; the
 # hand-written seeds and saved findings are still replayed here.
 excluded_tests="LiquidTearShot.SimulationCostPerFrameIsSmall:DefaultShotStory.*:LiquidTearCourse.OnTheDefaultShot*"
+# The crying_rivulet example shot's story loads that same whole shot (11 s in Release): the scenes
+# stage took 728 s with it on 2026-12-04 against 318-382 s before; its code runs in the rivulet tests.
+excluded_tests+=":CryingRivuletStory.*"
 excluded_tests+=":FuzzCorpusReplay.ShotCampaignInputs*"
 # And the BSDFs' statistical tests (chi-square of sampled directions against the pdf, directional
 # albedo integrals): 84 % of the materials tests' time in Release, 10x slower under ASan (about
