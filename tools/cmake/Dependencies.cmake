@@ -24,3 +24,11 @@ if(LACRIMA_BUILD_TESTS)
   find_package(GTest CONFIG REQUIRED)
   find_package(benchmark CONFIG REQUIRED)
 endif()
+
+# TetGen 1.5 (Debian's libtet1.5-dev) ships no CMake config or pkg-config file: the header and the
+# shared library, found by name. Its tetgen.h must be included without TETLIBRARY defined.
+find_path(TETGEN_INCLUDE_DIR tetgen.h REQUIRED)
+find_library(TETGEN_LIBRARY tet REQUIRED)
+add_library(TetGen::TetGen UNKNOWN IMPORTED)
+set_target_properties(TetGen::TetGen PROPERTIES IMPORTED_LOCATION "${TETGEN_LIBRARY}"
+                                                INTERFACE_INCLUDE_DIRECTORIES "${TETGEN_INCLUDE_DIR}")

@@ -1,0 +1,63 @@
+#pragma once
+// Hyperelastic flesh: the strain measures of the deformation gradient and two materials.
+//
+// F = Ds Dm^-1 maps a tetrahedron's rest edges to its current ones; the Green strain
+// G = 1/2 (F^T F - I) is zero for any rotation (Teran, Blemker, Ng & Fedkiw 2003, eq. 1; the
+// anatomical face model of Sifakis, Neverov & Fedkiw 2005 measures its flesh this way).
+//
+// - St. Venant-Kirchhoff: psi = mu G:G + lambda/2 tr(G)^2, P = F S, S = 2 mu G + lambda tr(G) I.
+//   The material of the Green strain, exact for large rotations and small strains, but it
+//   softens under strong compression (its energy falls again past ~58 % compression) and can
+//   invert a tetrahedron and keep it inverted.
+// - Fixed corotated (Stomakhin, Howes, Schroeder & Teran 2012, eq. 2):
+//   psi = mu |F - R|^2 + lambda/2 (J - 1)^2, P = 2 mu (F - R) + lambda (J - 1) cof(F), with R the
+//   rotation of F's polar decomposition taken through the SVD with the inversion fix of Irving,
+//   Teran & Fedkiw 2004 (a reflection moved onto the smallest singular value). Its energy grows
+//   for any compression and through inversion, so a pinched cheek comes back: the default.
+#include <Eigen/Dense>
+
+#include "lacrima/flesh/tet_mesh.hpp"
+
+namespace lacrima::flesh {
+
+enum class FleshMaterial { StVenantKirchhoff, FixedCorotated };
+
+struct LameParameters {
+  double mu = 0.0, lambda = 0.0;
+  // From Young's modulus (Pa) and Poisson's ratio (in (-1, 0.5)).
+  static LameParameters fromYoung(double youngsModulus, double poissonRatio);
+};
+
+inline Mat3d deformationGradient(const Mat3d& ds, const Mat3d& dmInverse) { return ds * dmInverse; }
+inline Mat3d greenStrain(const Mat3d& f) { return 0.5 * (f.transpose() * f - Mat3d::Identity()); }
+
+// cof(F) = det(F) F^-T, written without the inverse so that it holds for a flat F too.
+Mat3d cofactor(const Mat3d& f);
+
+// The rotation of F's polar decomposition, a proper rotation even for det(F) <= 0.
+Mat3d polarRotation(const Mat3d& f);
+
+double energyDensity(FleshMaterial material, const LameParameters& lame, const Mat3d& f);
+
+// The first Piola-Kirchhoff stress dpsi/dF.
+Mat3d firstPiolaStress(FleshMaterial material, const LameParameters& lame, const Mat3d& f);
+
+// The Cauchy stress sigma = P F^T / det(F).
+Mat3d cauchyStress(const Mat3d& p, const Mat3d& f);
+
+// A positive semi-definite approximation of the stress differential dP = (d^2 psi / dF^2) : dF,
+// which the implicit solver's conjugate gradients need:
+// - St. Venant-Kirchhoff: dP = dF S+ + F dS with S+ the second Piola stress with its negative
+//   eigenvalues clamped to zero (exact while S is positive semi-definite, i.e. in tension);
+// - fixed corotated: dP = 2 mu dF + lambda (cof(F):dF) cof(F), the rotation and the cofactor
+//   held fixed (exact at the rest state; the quasi-Newton step of a lagged rotation).
+// What the differential needs of F, computed once per Newton iterate and tetrahedron (the
+// conjugate gradients then apply it many times): F, and S+ (St. Venant-Kirchhoff) or cof(F).
+struct StressLinearization {
+  Mat3d f, held;
+};
+StressLinearization linearizeStress(FleshMaterial material, const LameParameters& lame, const Mat3d& f);
+Mat3d stressDifferential(FleshMaterial material, const LameParameters& lame, const StressLinearization& at,
+                         const Mat3d& df);
+
+}  // namespace lacrima::flesh
