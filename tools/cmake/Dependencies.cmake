@@ -26,7 +26,8 @@ if(LACRIMA_BUILD_TESTS)
 endif()
 
 # TetGen 1.5 (Debian's libtet1.5-dev) ships no CMake config or pkg-config file: the header and the
-# shared library, found by name. Its tetgen.h must be included without TETLIBRARY defined.
+# shared library, found by name. The library is built with TETLIBRARY (errors are thrown as int):
+# define it before including tetgen.h.
 find_path(TETGEN_INCLUDE_DIR tetgen.h REQUIRED)
 find_library(TETGEN_LIBRARY tet REQUIRED)
 add_library(TetGen::TetGen UNKNOWN IMPORTED)

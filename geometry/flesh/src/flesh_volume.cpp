@@ -1,0 +1,211 @@
+// buildFleshVolume and the node anchors (flesh_volume.hpp).
+#include "lacrima/flesh/flesh_volume.hpp"
+
+#include <fmt/format.h>
+
+#include <unordered_set>
+
+#include "lacrima/geometry/closest_point_grid.hpp"
+#include "tetgen_call.hpp"
+
+namespace lacrima::flesh {
+
+namespace {
+
+// The outward normals averaged with their neighbours' `passes` times: the inner surface follows
+// the skin's broad shape, not every wrinkle (an offset along raw normals folds in creases). The
+// border's vertices keep their own normals: averaged with neighbours on one side only, they
+// would lean the walls outward (4 % too much volume under a 34-degree spherical cap).
+std::vector<Vec3d> smoothedNormals(const SkinPatch& patch, const std::vector<bool>& onBorder, int passes) {
+  std::vector<std::unordered_set<int>> neighbours(patch.positions.size());
+  for (const auto& t : patch.triangles)
+    for (int c = 0; c < 3; ++c) neighbours[size_t(t[c])].insert({t[(c + 1) % 3], t[(c + 2) % 3]});
+  std::vector<Vec3d> normals = patch.normals;
+  for (int pass = 0; pass < passes; ++pass) {
+    std::vector<Vec3d> next(normals.size());
+    for (size_t v = 0; v < normals.size(); ++v) {
+      if (onBorder[v]) {
+        next[v] = normals[v];
+        continue;
+      }
+      Vec3d sum = normals[v];
+      for (int n : neighbours[v]) sum += normals[size_t(n)];
+      next[v] = sum.normalized();
+    }
+    normals = std::move(next);
+  }
+  return normals;
+}
+
+Vec3d triangleNormal(const std::vector<Vec3d>& x, const std::array<int, 3>& t) {
+  return (x[size_t(t[1])] - x[size_t(t[0])]).cross(x[size_t(t[2])] - x[size_t(t[0])]);
+}
+
+// The inner surface must be the skin shrunk, not folded: each edge keeps over a tenth of its
+// length in its own direction (an offset deeper than the skin's radius of curvature turns edges
+// round; a point-mirrored triangle keeps its orientation, so the triangles' normals alone would
+// not tell) and each triangle keeps its orientation.
+void checkInnerSurface(const SkinPatch& patch, const std::vector<Vec3d>& inner, double depth) {
+  const auto fail = [&](int vertex) {
+    const Vec3d& p = patch.positions[size_t(vertex)];
+    throw FleshVolumeError(fmt::format(
+        "the flesh's inner surface, {} m under the skin, folds over under the skin near ({:.4f}, {:.4f}, {:.4f}) m: "
+        "the skin curves more tightly there than the depth allows; give a smaller depth or leave that part of the "
+        "skin out of the region",
+        depth, p.x(), p.y(), p.z()));
+  };
+  for (const auto& t : patch.triangles) {
+    if (!(triangleNormal(inner, t).dot(triangleNormal(patch.positions, t)) > 0.0)) fail(t[0]);
+    for (int c = 0; c < 3; ++c) {
+      const size_t a = size_t(t[c]), b = size_t(t[(c + 1) % 3]);
+      const Vec3d edge = patch.positions[b] - patch.positions[a];
+      if (!((inner[b] - inner[a]).dot(edge) > 0.1 * edge.squaredNorm())) fail(t[c]);
+    }
+  }
+}
+
+// The border edges of the patch, each directed as in its one triangle.
+std::vector<std::array<int, 2>> borderEdges(const SkinPatch& patch) {
+  std::unordered_set<uint64_t> directed;
+  const auto key = [](int a, int b) { return (uint64_t(uint32_t(a)) << 32) | uint32_t(b); };
+  for (const auto& t : patch.triangles)
+    for (int c = 0; c < 3; ++c) directed.insert(key(t[c], t[(c + 1) % 3]));
+  std::vector<std::array<int, 2>> border;
+  for (const auto& t : patch.triangles)
+    for (int c = 0; c < 3; ++c)
+      if (!directed.count(key(t[(c + 1) % 3], t[c]))) border.push_back({t[c], t[(c + 1) % 3]});
+  return border;
+}
+
+struct Shell {
+  std::vector<Vec3d> points;  // the skin's vertices, then the inner surface's
+  std::vector<std::array<int, 3>> facets;
+};
+
+Shell closedShell(const SkinPatch& patch, const std::vector<Vec3d>& inner, const std::vector<std::array<int, 2>>& border) {
+  Shell shell;
+  const int n = int(patch.positions.size());
+  shell.points = patch.positions;
+  shell.points.insert(shell.points.end(), inner.begin(), inner.end());
+  for (const auto& t : patch.triangles) {
+    shell.facets.push_back(t);
+    shell.facets.push_back({t[0] + n, t[2] + n, t[1] + n});
+  }
+  for (const auto& [a, b] : border) {
+    shell.facets.push_back({b, a, a + n});
+    shell.facets.push_back({b, a + n, b + n});
+  }
+  return shell;
+}
+
+std::string tetgenSwitches(const FleshVolumeSettings& s) {
+  // p: a piecewise linear complex; Y: no Steiner points on its facets (the skin's vertices stay the
+  // boundary's only nodes); q: radius-edge bound; a: volume bound; Q: quiet.
+  return fmt::format("pYq{:.4f}a{:.18f}Q", s.radiusEdgeRatio, s.maxTetVolume);
+}
+
+TetMesh runTetGen(const Shell& shell, const FleshVolumeSettings& settings) {
+  TetMesh mesh = tetrahedralizeInChildProcess(shell.points, shell.facets, tetgenSwitches(settings));
+  for (size_t i = 0; i < shell.points.size(); ++i)
+    if (i >= mesh.nodes.size() || (mesh.nodes[i] - shell.points[i]).norm() > 1e-12)
+      throw FleshVolumeError("TetGen renumbered the skin's vertices (coincident skin and inner points?)");
+  for (const Tet& t : mesh.tets)
+    for (int corner : t)
+      if (corner < 0 || size_t(corner) >= mesh.nodes.size()) throw FleshVolumeError("TetGen's answer names a missing node");
+  orientPositively(mesh);
+  return mesh;
+}
+
+// The orthonormal frame of a triangle: first edge, in-plane perpendicular, normal (as columns).
+Mat3d triangleFrame(const std::vector<Vec3d>& x, const std::array<int, 3>& t) {
+  const Vec3d e1 = (x[size_t(t[1])] - x[size_t(t[0])]).normalized();
+  const Vec3d n = triangleNormal(x, t).normalized();
+  Mat3d frame;
+  frame << e1, n.cross(e1), n;
+  return frame;
+}
+
+Vec3d pointOn(const std::vector<Vec3d>& x, const std::array<int, 3>& t, const Vec3d& b) {
+  return b[0] * x[size_t(t[0])] + b[1] * x[size_t(t[1])] + b[2] * x[size_t(t[2])];
+}
+
+NodeAnchor anchorAt(const SkinPatch& patch, int triangle, const Vec3d& barycentric, const Vec3d& node) {
+  const auto& t = patch.triangles[size_t(triangle)];
+  NodeAnchor anchor{triangle, barycentric, Vec3d::Zero()};
+  anchor.offset = triangleFrame(patch.positions, t).transpose() * (node - pointOn(patch.positions, t, barycentric));
+  return anchor;
+}
+
+std::vector<NodeAnchor> anchorNodes(const SkinPatch& patch, const TetMesh& mesh) {
+  const size_t n = patch.positions.size();
+  std::vector<NodeAnchor> anchors(mesh.nodes.size());
+  std::vector<int> triangleOf(n, -1);
+  std::vector<int> cornerOf(n, 0);
+  for (size_t t = 0; t < patch.triangles.size(); ++t)
+    for (int c = 0; c < 3; ++c)
+      if (triangleOf[size_t(patch.triangles[t][c])] < 0) {
+        triangleOf[size_t(patch.triangles[t][c])] = int(t);
+        cornerOf[size_t(patch.triangles[t][c])] = c;
+      }
+  // The skin's own vertices and the inner surface's points under them.
+  for (size_t v = 0; v < n; ++v) {
+    const Vec3d corner = Vec3d::Unit(cornerOf[v]);
+    anchors[v] = anchorAt(patch, triangleOf[v], corner, mesh.nodes[v]);
+    anchors[v + n] = anchorAt(patch, triangleOf[v], corner, mesh.nodes[v + n]);
+  }
+  // Points TetGen added inside: the nearest point of the skin.
+  TriangleMesh skin;
+  for (const Vec3d& p : patch.positions) skin.positions.push_back(p.cast<float>());
+  for (const auto& t : patch.triangles)
+    for (int c : t) skin.indices.push_back(uint32_t(c));
+  const ClosestPointGrid grid(skin);
+  for (size_t i = 2 * n; i < mesh.nodes.size(); ++i) {
+    const SurfacePoint nearest = grid.closest(mesh.nodes[i].cast<float>());
+    // Summing to exactly 1 in double, so that the anchor point moves as an affine combination.
+    const Vec3d weights = nearest.barycentric.cast<double>();
+    const Vec3d barycentric = weights / weights.sum();
+    anchors[i] = anchorAt(patch, int(nearest.triangle), barycentric, mesh.nodes[i]);
+  }
+  return anchors;
+}
+
+}  // namespace
+
+FleshVolume buildFleshVolume(const SkinPatch& patch, const FleshVolumeSettings& settings) {
+  if (patch.triangles.empty()) throw FleshVolumeError("the flesh region holds no skin triangle");
+  if (!(settings.depth > 0.0) || !(settings.maxTetVolume > 0.0) || !(settings.radiusEdgeRatio >= 1.0))
+    throw FleshVolumeError("the flesh volume needs a positive depth and tetrahedron volume and a radius-edge bound >= 1");
+  const std::vector<std::array<int, 2>> border = borderEdges(patch);
+  std::vector<bool> onBorder(patch.positions.size(), false);
+  for (const auto& edge : border)
+    for (int v : edge) onBorder[size_t(v)] = true;
+  const std::vector<Vec3d> normals = smoothedNormals(patch, onBorder, settings.normalSmoothing);
+  std::vector<Vec3d> inner(patch.positions.size());
+  for (size_t v = 0; v < inner.size(); ++v) inner[v] = patch.positions[v] - settings.depth * normals[v];
+  checkInnerSurface(patch, inner, settings.depth);
+  FleshVolume volume;
+  volume.mesh = runTetGen(closedShell(patch, inner, border), settings);
+  volume.skinNodes = int(patch.positions.size());
+  volume.kinematic.assign(volume.mesh.nodes.size(), false);
+  for (size_t v = patch.positions.size(); v < 2 * patch.positions.size(); ++v) volume.kinematic[v] = true;
+  for (size_t v = 0; v < onBorder.size(); ++v) volume.kinematic[v] = volume.kinematic[v] || onBorder[v];
+  volume.anchors = anchorNodes(patch, volume.mesh);
+  return volume;
+}
+
+std::vector<Vec3d> anchoredNodePositions(const FleshVolume& volume, const SkinPatch& patch,
+                                         const std::vector<Vec3d>& posedPatchPositions) {
+  std::vector<Mat3d> frames(patch.triangles.size());
+  for (size_t t = 0; t < frames.size(); ++t) frames[t] = triangleFrame(posedPatchPositions, patch.triangles[t]);
+  std::vector<Vec3d> nodes(volume.anchors.size());
+  for (size_t i = 0; i < nodes.size(); ++i) {
+    const NodeAnchor& a = volume.anchors[i];
+    const auto& t = patch.triangles[size_t(a.triangle)];
+    nodes[i] = pointOn(posedPatchPositions, t, a.barycentric) + frames[size_t(a.triangle)] * a.offset;
+  }
+  // The skin's own vertices exactly where the pose puts them (no rounding through the frame).
+  for (size_t v = 0; v < size_t(volume.skinNodes); ++v) nodes[v] = posedPatchPositions[v];
+  return nodes;
+}
+
+}  // namespace lacrima::flesh

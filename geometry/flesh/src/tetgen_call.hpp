@@ -1,0 +1,18 @@
+#pragma once
+// TetGen run in a child process: TetGen 1.5 crashes (segmentation fault) on some inputs it
+// should reject (a facet piercing another, a dangling facet), and a crash in the renderer's
+// process would lose the user's render; in a child it is an error message.
+#include <array>
+#include <string>
+#include <vector>
+
+#include "lacrima/flesh/tet_mesh.hpp"
+
+namespace lacrima::flesh {
+
+// Tetrahedralizes the piecewise linear complex (points and triangular facets) with TetGen's
+// `switches`. Throws FleshVolumeError when TetGen reports an error or its process dies.
+TetMesh tetrahedralizeInChildProcess(const std::vector<Vec3d>& points, const std::vector<std::array<int, 3>>& facets,
+                                     const std::string& switches);
+
+}  // namespace lacrima::flesh
