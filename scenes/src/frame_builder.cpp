@@ -10,6 +10,7 @@
 
 #include "asset_pose.hpp"
 #include "eye_frame.hpp"
+#include "flesh_frame.hpp"
 #include "lacrima/geometry/detail_patterns.hpp"
 #include "lacrima/geometry/dripping_tear.hpp"
 #include "lacrima/geometry/mesh.hpp"
@@ -251,6 +252,17 @@ void applyDetail(const Shot& shot, const ShotDetail& detail, double frame, std::
     if (asset.gltf->primitives[i].part == detail.part) displaceAndRenormalise(posed[i], region, application);
 }
 
+// Moves the posed skin under each simulated flesh (at shutter open and close) before any detail
+// displaces it: the flesh carries the skin, the details ride on it.
+void applyFleshes(const Shot& shot, const ShutterTimes& shutter, PosedAssets& open, std::optional<PosedAssets>& close) {
+  for (const ShotFlesh& flesh : shot.flesh) {
+    if (open[flesh.asset].empty() || flesh.primitive >= open[flesh.asset].size()) continue;
+    shotfile::applyFlesh(flesh, shutter.open, flesh.primitive, open[flesh.asset][flesh.primitive]);
+    if (close && !(*close)[flesh.asset].empty())
+      shotfile::applyFlesh(flesh, shutter.close, flesh.primitive, (*close)[flesh.asset][flesh.primitive]);
+  }
+}
+
 // Applies the shot's details active at this frame to the posed assets (at shutter open and close).
 void applyDetails(const Shot& shot, int frameNumber, const ShutterTimes& shutter, PosedAssets& open,
                   std::optional<PosedAssets>& close) {
@@ -337,6 +349,10 @@ Frame buildFrame(const Shot& shot, int frameNumber, FrameBuildTimes* times) {
     const StageClock clock(&t.rigSeconds);
     open = poseAssets(shot, shutter.open, nullptr);
     if (shutter.blurred()) close = poseAssets(shot, shutter.close, &open);
+  }
+  {
+    const StageClock clock(&t.fleshSeconds);
+    applyFleshes(shot, shutter, open, close);
   }
   {
     const StageClock clock(&t.detailSeconds);

@@ -21,6 +21,7 @@
 #include "asset_pose.hpp"
 #include "detail_refinement.hpp"
 #include "eye_resolve.hpp"
+#include "flesh_frame.hpp"
 #include "suggest.hpp"
 #include "liquid_tear_resolve.hpp"
 #include "liquid_trail_refinement.hpp"
@@ -37,7 +38,7 @@ using namespace shotfile;
 const std::vector<std::string> kRootKeys = {"version",   "frames", "output",      "colorConfig",
                                             "render",    "camera", "environment", "background",
                                             "materials", "lights", "assets",      "shapes",
-                                            "tears",     "details", "eyes"};
+                                            "tears",     "details", "eyes",   "flesh"};
 const std::vector<std::string> kMaterialTypes = {"diffuse", "skin", "water", "rough_dielectric"};
 const std::vector<std::string> kCausticsModes = {"mnee", "straight", "off"};  // order of readCaustics' modes
 const std::vector<std::string> kSamplerKinds = {"sobol", "independent"};  // order of readSampler's kinds
@@ -51,6 +52,8 @@ const std::vector<std::string> kShapeTypes = {"sphere", "ellipsoid", "rectangle"
 const std::vector<std::string> kTearTypes = {"dripping", "shedding", "liquid"};
 const std::vector<std::string> kDetailPatterns = {"forehead", "eyeCorner", "cheek", "frown", "dimple", "eyePouch"};
 const std::vector<std::string> kSubdivisionSchemes = {"loop", "linear"};
+const std::vector<std::string> kFleshMaterials = {"fixedCorotated", "stVenantKirchhoff"};  // readFlesh's order
+const std::vector<std::string> kFleshIntegrators = {"backwardEuler", "midpoint"};         // readFlesh's order
 // Each level quadruples the region's triangles: 4 levels turn one triangle into 256.
 constexpr int kMaxSubdivisionLevels = 4;
 
@@ -173,6 +176,8 @@ class ShotReader {
       readArray(*v, "/details", "details", [&](const Json& e, const std::string& p) { readDetail(e, p); });
     if (const Json* v = o.find("eyes"))
       readArray(*v, "/eyes", "eyes", [&](const Json& e, const std::string& p) { readEye(e, p); });
+    if (const Json* v = o.find("flesh"))
+      readArray(*v, "/flesh", "flesh volumes", [&](const Json& e, const std::string& p) { readFlesh(e, p); });
   }
 
  private:
@@ -1396,6 +1401,64 @@ class ShotReader {
     }
   }
 
+  // ---- flesh -------------------------------------------------------------------------------
+
+  // A simulated flesh volume (docs/shot-format.md "flesh"; ShotFlesh).
+  void readFlesh(const Json& v, const std::string& pointer) {
+    ObjectReader o(c_, v, pointer,
+                   {"asset", "part", "regions", "depth", "tetSize", "youngsModulus", "poisson", "density", "damping",
+                    "substeps", "material", "integrator"});
+    if (!o.ok()) return;
+    const size_t before = c_.errorCount();
+    ShotFlesh flesh;
+    flesh.pointer = pointer;
+    const auto asset = readAssetPart(o, flesh.part);
+    if (asset) flesh.asset = *asset;
+    if (asset) readFleshRegions(o, *asset, flesh);
+    if (auto x = o.number("depth", Range::above(0))) flesh.volume.depth = *x;
+    // The largest tetrahedron's edge: TetGen's volume bound is that of a regular tetrahedron.
+    if (auto x = o.number("tetSize", Range::above(0))) flesh.volume.maxTetVolume = std::pow(*x, 3) / (6.0 * std::sqrt(2.0));
+    if (auto x = o.number("youngsModulus", Range::above(0))) flesh.youngsModulus = *x;
+    if (auto x = o.number("poisson", Range::open(-1, 0.5))) flesh.poissonRatio = *x;
+    if (auto x = o.number("density", Range::above(0))) flesh.dynamics.density = *x;
+    if (auto x = o.integer("substeps", Range::closed(1, 64))) flesh.substeps = int(*x);
+    static constexpr flesh::FleshMaterial materials[] = {flesh::FleshMaterial::FixedCorotated,
+                                                         flesh::FleshMaterial::StVenantKirchhoff};
+    if (const auto i = readChoice(o, "material", kFleshMaterials, "flesh material")) flesh.material = materials[*i];
+    static constexpr flesh::FleshIntegrator integrators[] = {flesh::FleshIntegrator::BackwardEuler,
+                                                             flesh::FleshIntegrator::ImplicitMidpoint};
+    if (const auto i = readChoice(o, "integrator", kFleshIntegrators, "integrator")) flesh.dynamics.integrator = integrators[*i];
+    if (const Json* d = o.find("damping")) {
+      ObjectReader r(c_, *d, o.at("damping"), {"mass", "stiffness"});
+      if (r.ok()) {
+        if (auto x = r.number("mass", Range::atLeast(0))) flesh.dynamics.massDamping = *x;
+        if (auto x = r.number("stiffness", Range::atLeast(0))) flesh.dynamics.stiffnessDamping = *x;
+      }
+    }
+    if (c_.errorCount() == before && asset) shot_.flesh.push_back(flesh);
+  }
+
+  // "regions": [{"center": anchor on the part, "radius": m > 0}, ...], at least one.
+  void readFleshRegions(ObjectReader& o, size_t asset, ShotFlesh& flesh) {
+    const Json* v = o.find("regions");
+    if (!v) {
+      o.missing("regions", "an array of regions {\"center\", \"radius\"} of the skin to simulate the flesh under");
+      return;
+    }
+    if (!v->is_array() || v->empty()) {
+      o.error("regions", "expected a non-empty array of regions {\"center\", \"radius\"}, found " + describeValue(*v));
+      return;
+    }
+    for (size_t i = 0; i < v->size(); ++i) {
+      ObjectReader r(c_, (*v)[i], childPointer(o.at("regions"), i), {"center", "radius"});
+      if (!r.ok()) continue;
+      ShotFleshRegion region;
+      readAnchor(r, "center", asset, flesh.part, region.center);
+      if (auto x = r.number("radius", Range::above(0), true)) region.radius = *x;
+      flesh.regions.push_back(region);
+    }
+  }
+
   // One basic pattern: {"pattern": name, "alpha", "beta", "gamma"} (the object itself for a
   // single pattern, so it may hold other keys; those are checked by the caller's reader).
   std::optional<BasicDetailPattern> readPattern(ObjectReader& o) {
@@ -1631,6 +1694,8 @@ Shot loadShot(const std::filesystem::path& path, const GltfAssetLoader& loadAsse
   }
   ShotReader(checker, shot, loadAsset).read(*json);
   if (checker.errorCount() > 0) throw ShotError(checker.diagnostics());
+  // On the assets as loaded: the flesh volumes' boundaries are the skin's own tessellation.
+  std::vector<FleshProblem> fleshProblems = resolveFleshVolumes(shot);
   // Before any surface point is found: they index the refined triangles.
   refineDetailRegions(shot);
   refineLiquidTrails(shot);
@@ -1642,6 +1707,8 @@ Shot loadShot(const std::filesystem::path& path, const GltfAssetLoader& loadAsse
   for (const LiquidTearProblem& problem : resolveLiquidTears(shot))
     checker.error(problem.pointer, Anchor::Value, problem.message);
   for (const EyeProblem& problem : resolveEyes(shot)) checker.error(problem.pointer, Anchor::Value, problem.message);
+  for (const FleshProblem& problem : fleshProblems) checker.error(problem.pointer, Anchor::Value, problem.message);
+  embedFleshSkins(shot);
   if (checker.errorCount() > 0) throw ShotError(checker.diagnostics());
   return shot;
 }

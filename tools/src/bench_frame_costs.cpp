@@ -25,6 +25,7 @@ void applyBenchSettings(const RenderSettings& bench, RenderSettings& settings) {
 
 void recordGeometry(const FrameBuildTimes& t, FrameCost& cost) {
   cost.rig = t.rigSeconds;
+  cost.flesh = t.fleshSeconds;
   cost.details = t.detailSeconds;
   cost.liquid = t.liquidSeconds;
   cost.eyes = t.eyeSeconds;
@@ -51,6 +52,7 @@ struct Column {
 const std::vector<Column>& columns() {
   static const std::vector<Column> all = {
       {"rig", [](const FrameCost& c) { return c.rig; }, false},
+      {"flesh", [](const FrameCost& c) { return c.flesh; }, false},
       {"details", [](const FrameCost& c) { return c.details; }, false},
       {"liquid", [](const FrameCost& c) { return c.liquid; }, false},
       {"eyes", [](const FrameCost& c) { return c.eyes; }, false},

@@ -15,7 +15,7 @@ namespace lacrima::cli {
 // What the report measures of one frame, in seconds (steady_clock).
 struct FrameCost {
   int frame = 0;
-  double rig = 0, details = 0, liquid = 0, eyes = 0, otherGeometry = 0, geometry = 0;  // buildFrame
+  double rig = 0, flesh = 0, details = 0, liquid = 0, eyes = 0, otherGeometry = 0, geometry = 0;  // buildFrame
   bool refit = false;        // the scene was refitted (false: built)
   double upload = 0, bvh = 0;  // the scene update's parts (SceneUpdateProbe)
   double beforeFirstRay = 0;   // the renderer's time up to its first ray (scene update included)

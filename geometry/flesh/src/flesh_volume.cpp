@@ -3,65 +3,64 @@
 
 #include <fmt/format.h>
 
+#include <optional>
 #include <unordered_set>
 
 #include "lacrima/geometry/closest_point_grid.hpp"
+#include "lacrima/geometry/sphere_fit.hpp"
 #include "tetgen_call.hpp"
 
 namespace lacrima::flesh {
 
 namespace {
 
-// The outward normals averaged with their neighbours' `passes` times: the inner surface follows
-// the skin's broad shape, not every wrinkle (an offset along raw normals folds in creases). The
-// border's vertices keep their own normals: averaged with neighbours on one side only, they
-// would lean the walls outward (4 % too much volume under a 34-degree spherical cap).
-std::vector<Vec3d> smoothedNormals(const SkinPatch& patch, const std::vector<bool>& onBorder, int passes) {
-  std::vector<std::unordered_set<int>> neighbours(patch.positions.size());
-  for (const auto& t : patch.triangles)
-    for (int c = 0; c < 3; ++c) neighbours[size_t(t[c])].insert({t[(c + 1) % 3], t[(c + 2) % 3]});
-  std::vector<Vec3d> normals = patch.normals;
-  for (int pass = 0; pass < passes; ++pass) {
-    std::vector<Vec3d> next(normals.size());
-    for (size_t v = 0; v < normals.size(); ++v) {
-      if (onBorder[v]) {
-        next[v] = normals[v];
-        continue;
-      }
-      Vec3d sum = normals[v];
-      for (int n : neighbours[v]) sum += normals[size_t(n)];
-      next[v] = sum.normalized();
-    }
-    normals = std::move(next);
-  }
-  return normals;
-}
-
 Vec3d triangleNormal(const std::vector<Vec3d>& x, const std::array<int, 3>& t) {
   return (x[size_t(t[1])] - x[size_t(t[0])]).cross(x[size_t(t[2])] - x[size_t(t[0])]);
 }
 
-// The inner surface must be the skin shrunk, not folded: each edge keeps over a tenth of its
-// length in its own direction (an offset deeper than the skin's radius of curvature turns edges
-// round; a point-mirrored triangle keeps its orientation, so the triangles' normals alone would
-// not tell) and each triangle keeps its orientation.
-void checkInnerSurface(const SkinPatch& patch, const std::vector<Vec3d>& inner, double depth) {
-  const auto fail = [&](int vertex) {
-    const Vec3d& p = patch.positions[size_t(vertex)];
-    throw FleshVolumeError(fmt::format(
-        "the flesh's inner surface, {} m under the skin, folds over under the skin near ({:.4f}, {:.4f}, {:.4f}) m: "
-        "the skin curves more tightly there than the depth allows; give a smaller depth or leave that part of the "
-        "skin out of the region",
-        depth, p.x(), p.y(), p.z()));
-  };
-  for (const auto& t : patch.triangles) {
-    if (!(triangleNormal(inner, t).dot(triangleNormal(patch.positions, t)) > 0.0)) fail(t[0]);
-    for (int c = 0; c < 3; ++c) {
-      const size_t a = size_t(t[c]), b = size_t(t[(c + 1) % 3]);
-      const Vec3d edge = patch.positions[b] - patch.positions[a];
-      if (!((inner[b] - inner[a]).dot(edge) > 0.1 * edge.squaredNorm())) fail(t[c]);
-    }
+// The inner surface: the skin shrunk towards a centre c, each point moved `depth` along the ray from
+// c (the centre of the sphere fitted to the patch, behind the skin). Shrinking along rays maps
+// space outside the ball of radius depth round c one-to-one onto itself with a positive Jacobian,
+// so the inner surface can neither fold nor cross itself, however finely the skin is tessellated
+// (an offset along vertex normals folds wherever small triangles' normals disagree by more than
+// their size over the depth, as on a skin refined along a tear's trail). Where no sphere fits (a
+// flat patch) or its centre lies in front of the skin (a hollow), the skin is moved along its mean
+// normal instead. The thickness measured along the skin's own normal is depth times the cosine
+// between it and the ray: a little thinner where the skin is oblique to the centre.
+std::vector<Vec3d> innerSurface(const SkinPatch& patch, double depth) {
+  Vec3d centroid = Vec3d::Zero(), meanNormal = Vec3d::Zero();
+  for (const Vec3d& p : patch.positions) centroid += p;
+  centroid /= double(patch.positions.size());
+  for (const auto& t : patch.triangles) meanNormal += triangleNormal(patch.positions, t);
+  meanNormal.normalize();
+  double extent = 0.0;
+  for (const Vec3d& p : patch.positions) extent = std::max(extent, (p - centroid).norm());
+  std::optional<Vec3d> center;
+  try {
+    std::vector<Vec3> points;
+    for (const Vec3d& p : patch.positions) points.push_back(p.cast<float>());
+    const FittedSphere sphere = fitSphere(points);
+    const Vec3d c = sphere.center.cast<double>();
+    if (meanNormal.dot(centroid - c) > 0.0 && double(sphere.radius) < 20.0 * extent) center = c;
+  } catch (const std::exception&) {
+    // Coplanar (or too few) points: no sphere; the mean normal serves.
   }
+  std::vector<Vec3d> inner(patch.positions.size());
+  for (size_t v = 0; v < inner.size(); ++v) {
+    const Vec3d& p = patch.positions[v];
+    if (!center) {
+      inner[v] = p - depth * meanNormal;
+      continue;
+    }
+    const double distance = (p - *center).norm();
+    if (!(distance > 1.5 * depth))
+      throw FleshVolumeError(fmt::format(
+          "the flesh depth {} m is too deep for the skin's curvature near ({:.4f}, {:.4f}, {:.4f}) m (it lies {:.4f} m "
+          "from the centre of the sphere the region's skin fits); give a smaller depth",
+          depth, p.x(), p.y(), p.z(), distance));
+    inner[v] = p - depth * (p - *center) / distance;
+  }
+  return inner;
 }
 
 // The border edges of the patch, each directed as in its one triangle.
@@ -179,10 +178,7 @@ FleshVolume buildFleshVolume(const SkinPatch& patch, const FleshVolumeSettings& 
   std::vector<bool> onBorder(patch.positions.size(), false);
   for (const auto& edge : border)
     for (int v : edge) onBorder[size_t(v)] = true;
-  const std::vector<Vec3d> normals = smoothedNormals(patch, onBorder, settings.normalSmoothing);
-  std::vector<Vec3d> inner(patch.positions.size());
-  for (size_t v = 0; v < inner.size(); ++v) inner[v] = patch.positions[v] - settings.depth * normals[v];
-  checkInnerSurface(patch, inner, settings.depth);
+  const std::vector<Vec3d> inner = innerSurface(patch, settings.depth);
   FleshVolume volume;
   volume.mesh = runTetGen(closedShell(patch, inner, border), settings);
   volume.skinNodes = int(patch.positions.size());

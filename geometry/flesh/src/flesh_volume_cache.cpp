@@ -52,7 +52,6 @@ uint64_t fleshVolumeKey(const SkinPatch& patch, const FleshVolumeSettings& setti
   h.add(settings.depth);
   h.add(settings.maxTetVolume);
   h.add(settings.radiusEdgeRatio);
-  h.add(settings.normalSmoothing);
   return h.value();
 }
 

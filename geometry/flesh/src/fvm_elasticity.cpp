@@ -94,7 +94,8 @@ void FvmElasticity::linearizeAt(const std::vector<Vec3d>& x) {
 }
 
 void FvmElasticity::addStiffnessProduct(const std::vector<Vec3d>& dx, std::vector<Vec3d>& out) const {
-  std::vector<Vec3d> corners(tets_.size() * 4);
+  std::vector<Vec3d>& corners = cornerScratch_;  // every entry written below
+  corners.resize(tets_.size() * 4);
   forEachTet(tets_.size(), [&](size_t t) {
     const Mat3d dF = edgeMatrix(dx, tets_[t]) * dmInverse_[t];
     const Mat3d dP = stressDifferential(material_, lame_, linearization_[t], dF);

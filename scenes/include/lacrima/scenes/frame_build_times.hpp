@@ -10,6 +10,7 @@ namespace lacrima {
 // per-frame stages below pose, displace and simulate on the already refined meshes.
 struct FrameBuildTimes {
   double rigSeconds = 0.0;     // assets posed: blendshapes, skinning, normals (shutter open and close)
+  double fleshSeconds = 0.0;   // simulated flesh: the simulation up to the frame, the skin moved with it
   double detailSeconds = 0.0;  // details displacing the posed skin, normals renewed around them
   // Liquid tears: the meniscus swelling, the simulation up to the frame, beads, drops and the wet
   // trail's film on the skin.

@@ -10,6 +10,8 @@
 #include <utility>
 #include <vector>
 
+#include "lacrima/flesh/flesh_simulation.hpp"
+#include "lacrima/flesh/flesh_volume.hpp"
 #include "lacrima/geometry/detail_patterns.hpp"
 #include "lacrima/geometry/dripping_tear.hpp"
 #include "lacrima/geometry/eye.hpp"
@@ -347,6 +349,59 @@ struct ShotEye {
   std::shared_ptr<const EyeModel> model;
 };
 
+namespace shotfile {
+class FleshRun;  // scenes/src/flesh_frame.hpp: a flesh's simulation, advanced as frames are built
+}
+
+// A sphere of the skin the flesh is simulated under (all of the part's triangles whose corners lie
+// within `radius` of the centre, on the first frame's pose).
+struct ShotFleshRegion {
+  ShotSurfaceAnchor center;  // as written, on the flesh's part
+  double radius = 0.0;       // metres, > 0
+  ShotSurfacePoint centerPoint;  // resolved by loadShot
+};
+
+// Simulated flesh under part of a face (docs/shot-format.md "flesh"): a tetrahedral volume between
+// the skin and the skin moved `volume.depth` inward, whose nodes the rig poses (the rest shape at
+// each instant) and a finite-volume simulation moves (inertia: lag, jiggle, settling); the skin
+// follows the simulated nodes. Simulated from the shot's first frame, so any frame renders alone.
+// A shot's flesh dynamics unless it says otherwise. Rayleigh damping alpha = 4/s on the motion
+// relative to the rig and beta = 2 ms: damping ratios alpha / (2 omega) + beta omega / 2 of ~0.1
+// for a 10 Hz cheek wobble and ~0.2 for 30 Hz ripples (modelling choice: a few visible swings).
+// Solver tolerances for pictures: Newton stops at 1 % of its first residual, each linear solve at
+// 0.1 %; on the default shot's cheek the skin then moves within 0.024 mm of a solve to 1e-6 / 1e-8
+// (of up to 1 mm), at a third of the cost.
+inline flesh::FleshDynamicsParams defaultShotFleshDynamics() {
+  flesh::FleshDynamicsParams p;
+  p.massDamping = 4.0;
+  p.stiffnessDamping = 0.002;
+  p.newtonTolerance = 1e-2;
+  p.cgTolerance = 1e-3;
+  return p;
+}
+
+struct ShotFlesh {
+  size_t asset = 0;
+  std::string part;
+  std::vector<ShotFleshRegion> regions;
+  flesh::FleshVolumeSettings volume;
+  flesh::FleshMaterial material = flesh::FleshMaterial::FixedCorotated;
+  double youngsModulus = 3000.0;  // Pa
+  double poissonRatio = 0.45;
+  flesh::FleshDynamicsParams dynamics = defaultShotFleshDynamics();
+  int substeps = 4;               // simulation steps per frame
+  std::string pointer;            // "/flesh/0", for problems found resolving it
+  // Resolved by loadShot (scenes/src/flesh_frame.hpp): the primitive of the regions' centres, the
+  // skin patch in it (positions of the shot's first frame), the volume under it, the simulation.
+  size_t primitive = 0;
+  std::shared_ptr<const flesh::SkinPatch> patch;  // of the unrefined primitive, vertices welded by position
+  std::shared_ptr<const flesh::FleshVolume> tetVolume;
+  // Per vertex of the primitive as rendered (after refinement): its place in the volume (tet -1:
+  // outside, not moved by the flesh).
+  std::vector<flesh::TetEmbedding> skinEmbedding;
+  std::shared_ptr<shotfile::FleshRun> run;
+};
+
 struct Shot {
   std::filesystem::path path;  // the shot file, as given to loadShot
   int version = 1;
@@ -381,6 +436,7 @@ struct Shot {
   std::vector<ShotLiquidTear> liquidTears;      // "liquid" tears
   std::vector<ShotDetail> details;
   std::vector<ShotEye> eyes;
+  std::vector<ShotFlesh> flesh;
 
   // Things that load but deserve a look (glTF loader caveats, environment texels that were
   // NaN/Inf/negative and set to 0). Each message starts with "warning: ". The tool prints them.

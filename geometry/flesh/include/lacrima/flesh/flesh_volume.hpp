@@ -1,7 +1,7 @@
 #pragma once
 // The flesh volume under a patch of skin: the region between the skin and an inner surface (the
-// skin moved inward by a depth along its smoothed normals: the skull's side of the flesh), closed
-// by walls along the patch's border, tetrahedralized by TetGen (Si 2015, "TetGen, a Delaunay-based
+// skin shrunk by a depth towards the centre of the sphere it fits: the skull's side of the flesh),
+// closed by walls along the patch's border, tetrahedralized by TetGen (Si 2015, "TetGen, a Delaunay-based
 // quality tetrahedral mesh generator", ACM TOMS 41(2)) with a bound on the radius-edge ratio and
 // on the volume, the skin's triangles kept as they are (no Steiner points on the boundary).
 //
@@ -34,7 +34,6 @@ struct FleshVolumeSettings {
   double depth = 0.012;             // m: the flesh's thickness under the skin
   double maxTetVolume = 4e-9;       // m^3 (a regular tetrahedron of 3.3 mm edges)
   double radiusEdgeRatio = 1.5;     // TetGen's -q bound (>= ~1.1; smaller is better shaped)
-  int normalSmoothing = 20;         // Laplacian passes over the normals the inner surface is offset along
 };
 
 // Where a node sits relative to the skin: a triangle of the patch, a point of it (barycentric)
@@ -58,7 +57,7 @@ class FleshVolumeError : public std::runtime_error {
 };
 
 // Throws FleshVolumeError when the patch is empty, the depth is too deep for the skin's curvature
-// (the inner surface folds) or TetGen fails.
+// or TetGen fails (a region whose skin the rays from the centre cross twice).
 FleshVolume buildFleshVolume(const SkinPatch& patch, const FleshVolumeSettings& settings);
 
 // Every node of the volume placed on a pose of the patch (positions in the patch's numbering).

@@ -61,6 +61,8 @@ class FvmElasticity {
   std::vector<StressLinearization> linearization_;
   // Node n's corners (4 * tetrahedron + corner) are incidence_[offset_[n], offset_[n + 1]).
   std::vector<int> incidenceOffset_, incidence_;
+  // The stiffness product's per-corner buffer, kept between the conjugate gradients' many calls.
+  mutable std::vector<Vec3d> cornerScratch_;
 };
 
 }  // namespace lacrima::flesh

@@ -1,0 +1,236 @@
+#include "flesh_frame.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <cstdlib>
+
+#include "asset_pose.hpp"
+#include "lacrima/flesh/flesh_volume_cache.hpp"
+#include "surface_anchor.hpp"
+
+namespace lacrima::shotfile {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// A skin vertex is carried by the flesh when it lies in a tetrahedron or this little outside one
+// (in barycentric weight): the vertices of a skin refined after the volume was built lie on its
+// boundary, a hair inside or outside it.
+constexpr double kEmbeddingSlack = 0.02;
+
+TriangleMesh posedSkin(const ShotAsset& asset, size_t primitive, double frame) {
+  return posedPrimitive(asset, assetPoseAt(asset, frame), primitive);
+}
+
+std::vector<Vec3d> patchPositions(const flesh::SkinPatch& patch, const TriangleMesh& skin) {
+  std::vector<Vec3d> out(patch.skinVertex.size());
+  for (size_t v = 0; v < out.size(); ++v) out[v] = skin.positions.at(patch.skinVertex[v]).cast<double>();
+  return out;
+}
+
+// The skin triangles of the primitive whose three corners lie within some region's radius.
+std::vector<bool> trianglesInRegions(const TriangleMesh& skin, const std::vector<ShotFleshRegion>& regions) {
+  std::vector<bool> inside(skin.triangleCount(), false);
+  for (size_t t = 0; t < inside.size(); ++t)
+    for (const ShotFleshRegion& region : regions) {
+      bool all = true;
+      for (int c = 0; c < 3; ++c)
+        all = all && (skin.positions[skin.indices[3 * t + size_t(c)]] - region.centerPoint.reference).norm() <= region.radius;
+      if (all) {
+        inside[t] = true;
+        break;
+      }
+    }
+  return inside;
+}
+
+// The patch of the skin in the regions, its vertices welded by position first (glTF splits
+// vertices along uv seams: unwelded, a seam would be a border inside the patch, with walls on both
+// sides of it), triangles of no area left out.
+std::shared_ptr<const flesh::SkinPatch> skinPatchOf(const TriangleMesh& skin, const std::vector<uint32_t>& weld,
+                                                    const std::vector<ShotFleshRegion>& regions) {
+  TriangleMesh withNormals = skin;
+  if (withNormals.normals.size() != withNormals.positions.size()) computeSmoothNormals(withNormals, weld);
+  std::vector<Vec3d> positions, normals;
+  for (size_t v = 0; v < skin.positions.size(); ++v) {
+    positions.push_back(skin.positions[v].cast<double>());
+    normals.push_back(withNormals.normals[v].cast<double>());
+  }
+  std::vector<bool> selected = trianglesInRegions(skin, regions);
+  std::vector<std::array<uint32_t, 3>> triangles;
+  for (size_t t = 0; t < skin.triangleCount(); ++t) {
+    const std::array<uint32_t, 3> corners{weld[skin.indices[3 * t]], weld[skin.indices[3 * t + 1]],
+                                          weld[skin.indices[3 * t + 2]]};
+    const Vec3d area = (positions[corners[1]] - positions[corners[0]]).cross(positions[corners[2]] - positions[corners[0]]);
+    if (!(area.norm() > 0.0)) selected[t] = false;
+    triangles.push_back(corners);
+  }
+  return std::make_shared<const flesh::SkinPatch>(flesh::extractSkinPatch(positions, normals, triangles, selected));
+}
+
+std::optional<FleshProblem> resolveOne(Shot& shot, ShotFlesh& flesh) {
+  for (ShotFleshRegion& region : flesh.regions)
+    region.centerPoint = resolveSurfaceAnchor(shot, flesh.asset, flesh.part, region.center);
+  flesh.primitive = flesh.regions.front().centerPoint.primitive;
+  for (size_t i = 1; i < flesh.regions.size(); ++i)
+    if (flesh.regions[i].centerPoint.primitive != flesh.primitive)
+      return FleshProblem{fmt::format("{}/regions/{}/center", flesh.pointer, i),
+                          "the regions' centres lie on different primitives of the part; a flesh volume lies under one"};
+  const ShotAsset& asset = shot.assets[flesh.asset];
+  const TriangleMesh skin = posedSkin(asset, flesh.primitive, shot.frameStart);
+  flesh.patch = skinPatchOf(skin, findCoincidentVertices(skin), flesh.regions);
+  if (flesh.patch->triangles.empty())
+    return FleshProblem{flesh.pointer + "/regions",
+                        "no triangle of the skin lies wholly within the regions: give larger radii"};
+  try {
+    flesh.tetVolume = std::make_shared<const flesh::FleshVolume>(
+        flesh::cachedFleshVolume(*flesh.patch, flesh.volume, fleshCacheDirectory()));
+  } catch (const flesh::FleshVolumeError& e) {
+    return FleshProblem{flesh.pointer, fmt::format("the flesh volume cannot be built: {}", e.what())};
+  }
+  flesh.run = std::make_shared<FleshRun>(shot, flesh);
+  return std::nullopt;
+}
+
+}  // namespace
+
+fs::path fleshCacheDirectory() {
+  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) return fs::path(xdg) / "lacrima/flesh";
+  if (const char* home = std::getenv("HOME"); home && *home) return fs::path(home) / ".cache/lacrima/flesh";
+  return {};
+}
+
+std::vector<FleshProblem> resolveFleshVolumes(Shot& shot) {
+  std::vector<FleshProblem> problems;
+  for (ShotFlesh& flesh : shot.flesh)
+    if (std::optional<FleshProblem> problem = resolveOne(shot, flesh)) problems.push_back(*problem);
+  return problems;
+}
+
+void embedFleshSkins(Shot& shot) {
+  for (ShotFlesh& flesh : shot.flesh) {
+    if (!flesh.run) continue;
+    const TriangleMesh skin = posedSkin(shot.assets[flesh.asset], flesh.primitive, shot.frameStart);
+    const flesh::TetMesh& mesh = flesh.tetVolume->mesh;
+    Eigen::AlignedBox3d box;
+    for (const Vec3d& p : mesh.nodes) box.extend(p);
+    std::vector<Vec3d> points;
+    std::vector<size_t> vertices;
+    for (size_t v = 0; v < skin.positions.size(); ++v)
+      if (box.contains(skin.positions[v].cast<double>())) {
+        points.push_back(skin.positions[v].cast<double>());
+        vertices.push_back(v);
+      }
+    flesh.skinEmbedding.assign(skin.positions.size(), flesh::TetEmbedding{});
+    const std::vector<flesh::TetEmbedding> embedded = flesh::embedPoints(mesh, points);
+    for (size_t i = 0; i < vertices.size(); ++i)
+      if (embedded[i].tet >= 0 && embedded[i].weights.minCoeff() >= -kEmbeddingSlack)
+        flesh.skinEmbedding[vertices[i]] = embedded[i];
+  }
+}
+
+FleshRun::FleshRun(const Shot& shot, const ShotFlesh& flesh)
+    : asset_(shot.assets.at(flesh.asset)),
+      primitive_(flesh.primitive),
+      patch_(flesh.patch),
+      volume_(flesh.tetVolume),
+      initial_(volume_->mesh, flesh.material, flesh::LameParameters::fromYoung(flesh.youngsModulus, flesh.poissonRatio),
+               flesh.dynamics, volume_->kinematic),
+      fps_(shot.fps),
+      substeps_(flesh.substeps),
+      startFrame_(shot.frameStart + std::min(0.0, shot.shutter ? shot.shutter->first : 0.0)),
+      simulation_(initial_) {
+  restart();
+}
+
+std::vector<Vec3d> FleshRun::targetAtFrame(int frame) {
+  for (const auto& [posedFrame, target] : posedTargets_)
+    if (posedFrame == frame) return target;
+  std::vector<Vec3d> target =
+      flesh::anchoredNodePositions(*volume_, *patch_, patchPositions(*patch_, posedSkin(asset_, primitive_, frame)));
+  posedTargets_[nextPosedSlot_] = {frame, target};
+  nextPosedSlot_ = (nextPosedSlot_ + 1) % posedTargets_.size();
+  return target;
+}
+
+std::vector<Vec3d> FleshRun::targetAt(double frame) {
+  const int before = int(std::floor(frame));
+  const double f = frame - before;
+  std::vector<Vec3d> target = targetAtFrame(before);
+  if (f == 0.0) return target;
+  const std::vector<Vec3d> after = targetAtFrame(before + 1);
+  for (size_t i = 0; i < target.size(); ++i) target[i] += f * (after[i] - target[i]);
+  return target;
+}
+
+void FleshRun::restart() {
+  simulation_ = initial_;
+  step_ = 0;
+  target_ = targetAt(startFrame_);
+  // At rest on the rig's pose, moving with it.
+  const std::vector<Vec3d> next = targetAt(frameAtStep(1));
+  const double h = stepFrames() / fps_;
+  std::vector<Vec3d> velocities(next.size());
+  for (size_t i = 0; i < next.size(); ++i) velocities[i] = (next[i] - target_[i]) / h;
+  simulation_.setState(target_, velocities);
+}
+
+void FleshRun::advanceOneStep() {
+  const double h = stepFrames() / fps_;
+  std::vector<Vec3d> next = targetAt(frameAtStep(step_ + 1));
+  std::vector<Vec3d> velocities(next.size());
+  for (size_t i = 0; i < next.size(); ++i) velocities[i] = (next[i] - target_[i]) / h;
+  simulation_.step(h, next, velocities);
+  target_ = std::move(next);
+  ++step_;
+}
+
+std::vector<Vec3d> FleshRun::nodeOffsetsAt(double frame) {
+  const size_t nodes = volume_->mesh.nodes.size();
+  if (frame <= startFrame_) return std::vector<Vec3d>(nodes, Vec3d::Zero());
+  std::lock_guard<std::mutex> lock(mutex_);
+  constexpr double kSlack = 1e-9;  // frames: a time on the step grid is on it
+  if (frame < frameAtStep(step_) - kSlack) restart();
+  while (frameAtStep(step_ + 1) <= frame + kSlack) advanceOneStep();
+  const std::vector<Vec3d>* positions = &simulation_.positions();
+  std::vector<Vec3d> target = target_;
+  flesh::FleshSimulation partial = simulation_;
+  if (frame > frameAtStep(step_) + kSlack) {
+    // Between steps (a shutter time off the grid): a shorter step there, not kept.
+    const double h = (frame - frameAtStep(step_)) / fps_;
+    target = targetAt(frame);
+    std::vector<Vec3d> velocities(target.size());
+    for (size_t i = 0; i < target.size(); ++i) velocities[i] = (target[i] - target_[i]) / h;
+    partial.step(h, target, velocities);
+    positions = &partial.positions();
+  }
+  std::vector<Vec3d> offsets(nodes);
+  for (size_t v = 0; v < nodes; ++v) offsets[v] = (*positions)[v] - target[v];
+  return offsets;
+}
+
+void applyFlesh(const ShotFlesh& flesh, double frame, size_t primitive, TriangleMesh& posed) {
+  if (!flesh.run || primitive != flesh.primitive || posed.positions.size() != flesh.skinEmbedding.size()) return;
+  const std::vector<Vec3d> offsets = flesh.run->nodeOffsetsAt(frame);
+  const flesh::TetMesh& mesh = flesh.tetVolume->mesh;
+  std::vector<bool> moved(posed.positions.size(), false);
+  bool any = false;
+  for (size_t v = 0; v < posed.positions.size(); ++v) {
+    const flesh::TetEmbedding& e = flesh.skinEmbedding[v];
+    if (e.tet < 0) continue;
+    const Vec3d offset = flesh::embeddedPosition(mesh, offsets, e);
+    if (offset == Vec3d::Zero()) continue;
+    posed.positions[v] += offset.cast<float>();
+    moved[v] = any = true;
+  }
+  if (!any) return;
+  if (posed.normals.size() == posed.positions.size())
+    renewSmoothNormalsAround(posed, moved);
+  else
+    computeSmoothNormals(posed);
+}
+
+}  // namespace lacrima::shotfile

@@ -1,0 +1,77 @@
+#pragma once
+// A shot's simulated flesh, frame by frame (ShotFlesh, docs/shot-format.md "flesh"): resolved at
+// load (the skin patch of its regions on the first frame's pose and the tetrahedral volume under
+// it), simulated from the shot's first frame with the rig's pose of the volume as the moving rest
+// shape, and applied to the posed skin as the simulated nodes' offsets from the rig's.
+#include <array>
+#include <climits>
+#include <mutex>
+#include <vector>
+
+#include "lacrima/flesh/flesh_simulation.hpp"
+#include "lacrima/scenes/shot_model.hpp"
+#include "shedding_tear_resolve.hpp"  // SheddingTearProblem: a problem at a JSON pointer
+
+namespace lacrima::shotfile {
+
+using FleshProblem = SheddingTearProblem;
+
+// Where flesh volumes are filed (flesh_volume_cache.hpp): $XDG_CACHE_HOME/lacrima/flesh, else
+// ~/.cache/lacrima/flesh; empty (not filed) when neither is set.
+std::filesystem::path fleshCacheDirectory();
+
+// Builds (or reads from the cache) each flesh volume of the shot and its simulation, on the assets
+// as loaded (before any refinement of their skin: the volume's boundary is the asset's own
+// tessellation, and the simulation poses that asset); the problems found (regions on different
+// primitives, no skin in them, a volume TetGen cannot mesh).
+std::vector<FleshProblem> resolveFleshVolumes(Shot& shot);
+
+// After the skin is final (refined under details and along tear trails): embeds each vertex of the
+// flesh's primitive that lies in (or on) its volume, on the first frame's pose.
+void embedFleshSkins(Shot& shot);
+
+// One flesh's simulation, advanced on demand and kept at the latest time asked for: a sequence
+// rendered in order simulates each step once; a frame before the kept time starts again from the
+// shot's first frame. Thread-safe.
+class FleshRun {
+ public:
+  FleshRun(const Shot& shot, const ShotFlesh& flesh);
+
+  // The simulated nodes' offsets from the rig's pose of them at a (fractional) frame (zero before
+  // the simulation starts).
+  std::vector<Vec3d> nodeOffsetsAt(double frame);
+
+ private:
+  // The rig's pose of the volume's nodes at a (fractional) frame: the asset posed at the whole
+  // frames around it, interpolated linearly (posing the face is most of a step's cost; the rig's
+  // keys are smooth over a frame).
+  std::vector<Vec3d> targetAt(double frame);
+  std::vector<Vec3d> targetAtFrame(int frame);
+  double stepFrames() const { return 1.0 / substeps_; }
+  double frameAtStep(long step) const { return startFrame_ + double(step) * stepFrames(); }
+  void restart();
+  void advanceOneStep();
+
+  ShotAsset asset_;  // a copy of the asset as loaded, unrefined (meshes and rig shared)
+  size_t primitive_;
+  std::shared_ptr<const flesh::SkinPatch> patch_;
+  std::shared_ptr<const flesh::FleshVolume> volume_;
+  flesh::FleshSimulation initial_;
+  double fps_;
+  int substeps_;
+  double startFrame_;
+
+  std::mutex mutex_;
+  flesh::FleshSimulation simulation_;
+  long step_ = 0;                  // simulation_ is at frameAtStep(step_)
+  std::vector<Vec3d> target_;      // the rig's pose there
+  std::array<std::pair<int, std::vector<Vec3d>>, 2> posedTargets_{{{INT_MIN, {}}, {INT_MIN, {}}}};
+  size_t nextPosedSlot_ = 0;
+};
+
+// Moves the posed primitive's embedded skin vertices by the flesh's offsets at `frame`, interpolated
+// in their tetrahedra (normals renewed around the moved vertices). Nothing for a primitive that is
+// not the flesh's, or a flesh not resolved.
+void applyFlesh(const ShotFlesh& flesh, double frame, size_t primitive, TriangleMesh& posed);
+
+}  // namespace lacrima::shotfile
