@@ -3,11 +3,13 @@
 #include <fmt/format.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 
 #include "asset_pose.hpp"
 #include "lacrima/flesh/flesh_volume_cache.hpp"
+#include "lacrima/geometry/region_refinement.hpp"
 #include "surface_anchor.hpp"
 
 namespace lacrima::shotfile {
@@ -143,14 +145,25 @@ FleshRun::FleshRun(const Shot& shot, const ShotFlesh& flesh)
       substeps_(flesh.substeps),
       startFrame_(shot.frameStart + std::min(0.0, shot.shutter ? shot.shutter->first : 0.0)),
       simulation_(initial_) {
+  // How deep each node lies, as a fraction of the flesh's depth: 0 on the skin, 1 on the inner surface.
+  for (const flesh::NodeAnchor& anchor : volume_->anchors)
+    depthFraction_.push_back(std::clamp(anchor.offset.norm() / flesh.volume.depth, 0.0, 1.0));
   restart();
 }
 
 std::vector<Vec3d> FleshRun::targetAtFrame(int frame) {
   for (const auto& [posedFrame, target] : posedTargets_)
     if (posedFrame == frame) return target;
-  std::vector<Vec3d> target =
-      flesh::anchoredNodePositions(*volume_, *patch_, patchPositions(*patch_, posedSkin(asset_, primitive_, frame)));
+  // The skin as the rig poses it, and as its joints alone pose it (the skull's and jaw's motion,
+  // no expression).
+  AssetPose pose = assetPoseAt(asset_, frame);
+  const std::vector<Vec3d> skin = flesh::anchoredNodePositions(
+      *volume_, *patch_, patchPositions(*patch_, posedPrimitive(asset_, pose, primitive_)));
+  std::fill(pose.face.blendshapeWeights.begin(), pose.face.blendshapeWeights.end(), 0.0f);
+  const std::vector<Vec3d> skull = flesh::anchoredNodePositions(
+      *volume_, *patch_, patchPositions(*patch_, posedPrimitive(asset_, pose, primitive_)));
+  std::vector<Vec3d> target(skin.size());
+  for (size_t i = 0; i < target.size(); ++i) target[i] = (1.0 - depthFraction_[i]) * skin[i] + depthFraction_[i] * skull[i];
   posedTargets_[nextPosedSlot_] = {frame, target};
   nextPosedSlot_ = (nextPosedSlot_ + 1) % posedTargets_.size();
   return target;
@@ -212,11 +225,11 @@ std::vector<Vec3d> FleshRun::nodeOffsetsAt(double frame) {
   return offsets;
 }
 
-void applyFlesh(const ShotFlesh& flesh, double frame, size_t primitive, TriangleMesh& posed) {
+void applyFlesh(const ShotFlesh& flesh, const GltfPrimitive& primitiveSource, double frame, size_t primitive,
+                TriangleMesh& posed) {
   if (!flesh.run || primitive != flesh.primitive || posed.positions.size() != flesh.skinEmbedding.size()) return;
   const std::vector<Vec3d> offsets = flesh.run->nodeOffsetsAt(frame);
   const flesh::TetMesh& mesh = flesh.tetVolume->mesh;
-  std::vector<bool> moved(posed.positions.size(), false);
   bool any = false;
   for (size_t v = 0; v < posed.positions.size(); ++v) {
     const flesh::TetEmbedding& e = flesh.skinEmbedding[v];
@@ -224,13 +237,12 @@ void applyFlesh(const ShotFlesh& flesh, double frame, size_t primitive, Triangle
     const Vec3d offset = flesh::embeddedPosition(mesh, offsets, e);
     if (offset == Vec3d::Zero()) continue;
     posed.positions[v] += offset.cast<float>();
-    moved[v] = any = true;
+    any = true;
   }
-  if (!any) return;
-  if (posed.normals.size() == posed.positions.size())
-    renewSmoothNormalsAround(posed, moved);
-  else
-    computeSmoothNormals(posed);
+  // The normals as the rig makes them for this primitive (a linear refinement is shaded as the
+  // unrefined mesh: normals from the split triangles would show its facets, and would turn the
+  // directions the details then displace the skin along).
+  if (any) computePrimitiveNormals(posed, primitiveSource);
 }
 
 }  // namespace lacrima::shotfile

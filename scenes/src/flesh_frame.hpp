@@ -42,9 +42,11 @@ class FleshRun {
   std::vector<Vec3d> nodeOffsetsAt(double frame);
 
  private:
-  // The rig's pose of the volume's nodes at a (fractional) frame: the asset posed at the whole
-  // frames around it, interpolated linearly (posing the face is most of a step's cost; the rig's
-  // keys are smooth over a frame).
+  // The rig's pose of the volume's nodes at a (fractional) frame: a node on the skin where the rig
+  // puts the skin, a node on the inner surface where the rig's joints alone put it (the skull and
+  // jaw carry the deep flesh; an expression moves the skin, and the flesh between follows by
+  // depth), blended linearly in between. Posed at the whole frames around it and interpolated
+  // linearly (posing the face is most of a step's cost; the rig's keys are smooth over a frame).
   std::vector<Vec3d> targetAt(double frame);
   std::vector<Vec3d> targetAtFrame(int frame);
   double stepFrames() const { return 1.0 / substeps_; }
@@ -60,6 +62,7 @@ class FleshRun {
   double fps_;
   int substeps_;
   double startFrame_;
+  std::vector<double> depthFraction_;  // per node: 0 on the skin, 1 on the inner surface
 
   std::mutex mutex_;
   flesh::FleshSimulation simulation_;
@@ -70,8 +73,10 @@ class FleshRun {
 };
 
 // Moves the posed primitive's embedded skin vertices by the flesh's offsets at `frame`, interpolated
-// in their tetrahedra (normals renewed around the moved vertices). Nothing for a primitive that is
-// not the flesh's, or a flesh not resolved.
-void applyFlesh(const ShotFlesh& flesh, double frame, size_t primitive, TriangleMesh& posed);
+// in their tetrahedra, and renews its normals as the rig makes them (primitiveSource: the asset's
+// glTF primitive it was posed from). Nothing for a primitive that is not the flesh's, or a flesh
+// not resolved; a still face keeps the rig's normals bitwise.
+void applyFlesh(const ShotFlesh& flesh, const GltfPrimitive& primitiveSource, double frame, size_t primitive,
+                TriangleMesh& posed);
 
 }  // namespace lacrima::shotfile

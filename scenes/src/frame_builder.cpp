@@ -257,9 +257,10 @@ void applyDetail(const Shot& shot, const ShotDetail& detail, double frame, std::
 void applyFleshes(const Shot& shot, const ShutterTimes& shutter, PosedAssets& open, std::optional<PosedAssets>& close) {
   for (const ShotFlesh& flesh : shot.flesh) {
     if (open[flesh.asset].empty() || flesh.primitive >= open[flesh.asset].size()) continue;
-    shotfile::applyFlesh(flesh, shutter.open, flesh.primitive, open[flesh.asset][flesh.primitive]);
+    const GltfPrimitive& source = shot.assets[flesh.asset].gltf->primitives[flesh.primitive];
+    shotfile::applyFlesh(flesh, source, shutter.open, flesh.primitive, open[flesh.asset][flesh.primitive]);
     if (close && !(*close)[flesh.asset].empty())
-      shotfile::applyFlesh(flesh, shutter.close, flesh.primitive, (*close)[flesh.asset][flesh.primitive]);
+      shotfile::applyFlesh(flesh, source, shutter.close, flesh.primitive, (*close)[flesh.asset][flesh.primitive]);
   }
 }
 

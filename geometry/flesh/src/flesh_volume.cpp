@@ -3,11 +3,14 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <optional>
+#include <unordered_map>
 #include <unordered_set>
 
 #include "lacrima/geometry/closest_point_grid.hpp"
 #include "lacrima/geometry/sphere_fit.hpp"
+#include "lacrima/geometry/surface_point.hpp"
 #include "tetgen_call.hpp"
 
 namespace lacrima::flesh {
@@ -76,9 +79,13 @@ std::vector<std::array<int, 2>> borderEdges(const SkinPatch& patch) {
   return border;
 }
 
+// Facet markers of the shell, which TetGen passes on to the nodes it puts on them.
+enum ShellMarker : int { kSkinFacet = 1, kInnerFacet = 2, kWallFacet = 3 };
+
 struct Shell {
   std::vector<Vec3d> points;  // the skin's vertices, then the inner surface's
   std::vector<std::array<int, 3>> facets;
+  std::vector<int> markers;   // ShellMarker per facet
 };
 
 Shell closedShell(const SkinPatch& patch, const std::vector<Vec3d>& inner, const std::vector<std::array<int, 2>>& border) {
@@ -88,23 +95,30 @@ Shell closedShell(const SkinPatch& patch, const std::vector<Vec3d>& inner, const
   shell.points.insert(shell.points.end(), inner.begin(), inner.end());
   for (const auto& t : patch.triangles) {
     shell.facets.push_back(t);
+    shell.markers.push_back(kSkinFacet);
     shell.facets.push_back({t[0] + n, t[2] + n, t[1] + n});
+    shell.markers.push_back(kInnerFacet);
   }
   for (const auto& [a, b] : border) {
     shell.facets.push_back({b, a, a + n});
     shell.facets.push_back({b, a + n, b + n});
+    shell.markers.insert(shell.markers.end(), {kWallFacet, kWallFacet});
   }
   return shell;
 }
 
 std::string tetgenSwitches(const FleshVolumeSettings& s) {
-  // p: a piecewise linear complex; Y: no Steiner points on its facets (the skin's vertices stay the
-  // boundary's only nodes); q: radius-edge bound; a: volume bound; Q: quiet.
-  return fmt::format("pYq{:.4f}a{:.18f}Q", s.radiusEdgeRatio, s.maxTetVolume);
+  // p: a piecewise linear complex; q: radius-edge bound; a: volume bound; Q: quiet. The boundary's
+  // triangles may be split (no -Y): kept whole, the skin's long thin triangles left slivers under
+  // them that the rig's pose turned inside out (9 of 3,616 on the default shot's cheeks; 1 of
+  // 21,154 split), and a tetrahedron whose rest shape is inverted keeps an old one, which pulls the
+  // flesh off the rig's pose (0.15 mm kept, 0.003 mm split).
+  return fmt::format("pq{:.4f}a{:.18f}Q", s.radiusEdgeRatio, s.maxTetVolume);
 }
 
-TetMesh runTetGen(const Shell& shell, const FleshVolumeSettings& settings) {
-  TetMesh mesh = tetrahedralizeInChildProcess(shell.points, shell.facets, tetgenSwitches(settings));
+TetGenResult runTetGen(const Shell& shell, const FleshVolumeSettings& settings) {
+  TetGenResult result = tetrahedralizeInChildProcess(shell.points, shell.facets, shell.markers, tetgenSwitches(settings));
+  TetMesh& mesh = result.mesh;
   for (size_t i = 0; i < shell.points.size(); ++i)
     if (i >= mesh.nodes.size() || (mesh.nodes[i] - shell.points[i]).norm() > 1e-12)
       throw FleshVolumeError("TetGen renumbered the skin's vertices (coincident skin and inner points?)");
@@ -112,7 +126,69 @@ TetMesh runTetGen(const Shell& shell, const FleshVolumeSettings& settings) {
     for (int corner : t)
       if (corner < 0 || size_t(corner) >= mesh.nodes.size()) throw FleshVolumeError("TetGen's answer names a missing node");
   orientPositively(mesh);
-  return mesh;
+  return result;
+}
+
+double distanceToSegment(const Vec3d& p, const Vec3d& a, const Vec3d& b) {
+  const Vec3d d = b - a;
+  const double t = std::clamp((p - a).dot(d) / d.squaredNorm(), 0.0, 1.0);
+  return (p - (a + t * d)).norm();
+}
+
+// The nodes on the tetrahedral mesh's boundary (on a face that only one tetrahedron has).
+std::vector<bool> boundaryNodes(const TetMesh& mesh) {
+  std::unordered_map<std::string, int> faceUse;
+  static constexpr int kOpposite[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
+  const auto keyOf = [&](const Tet& t, const int* f) {
+    std::array<int, 3> k{t[size_t(f[0])], t[size_t(f[1])], t[size_t(f[2])]};
+    std::sort(k.begin(), k.end());
+    return std::string(reinterpret_cast<const char*>(k.data()), sizeof k);
+  };
+  for (const Tet& t : mesh.tets)
+    for (const auto& f : kOpposite) ++faceUse[keyOf(t, f)];
+  std::vector<bool> onBoundary(mesh.nodes.size(), false);
+  for (const Tet& t : mesh.tets)
+    for (const auto& f : kOpposite)
+      if (faceUse[keyOf(t, f)] == 1)
+        for (int c = 0; c < 3; ++c) onBoundary[size_t(t[size_t(f[c])])] = true;
+  return onBoundary;
+}
+
+// The rig moves the inner surface, the walls and the skin's border (the skull, and the flesh
+// outside the region); the simulation moves the rest. Nodes TetGen added are classified by where
+// they lie: TetGen marks those inside its facets with the facet's marker but not always those on
+// the facets' shared edges, so a boundary node is free only when it lies on the skin (within a
+// micrometre) and off the skin's border edges.
+std::vector<bool> kinematicNodes(const SkinPatch& patch, const std::vector<std::array<int, 2>>& border,
+                                 const TetGenResult& result) {
+  const size_t n = patch.positions.size();
+  const TetMesh& mesh = result.mesh;
+  std::vector<bool> kinematic(mesh.nodes.size(), false);
+  for (const auto& edge : border)
+    for (int v : edge) kinematic[size_t(v)] = true;
+  for (size_t i = n; i < 2 * n; ++i) kinematic[i] = true;
+  const std::vector<bool> onBoundary = boundaryNodes(mesh);
+  TriangleMesh skin;
+  for (const Vec3d& p : patch.positions) skin.positions.push_back(p.cast<float>());
+  for (const auto& t : patch.triangles)
+    for (int c : t) skin.indices.push_back(uint32_t(c));
+  const ClosestPointGrid grid(skin);
+  constexpr double kOnSurface = 1e-6;  // metres; the skin is stored in float
+  for (size_t i = 2 * n; i < kinematic.size(); ++i) {
+    const int marker = result.nodeMarkers[i];
+    if (marker == kInnerFacet || marker == kWallFacet) {
+      kinematic[i] = true;
+      continue;
+    }
+    if (!onBoundary[i]) continue;
+    const Vec3d& p = mesh.nodes[i];
+    const double toSkin = (surfacePosition(skin, grid.closest(p.cast<float>())).cast<double>() - p).norm();
+    bool onBorder = false;
+    for (const auto& [a, b] : border)
+      onBorder = onBorder || distanceToSegment(p, patch.positions[size_t(a)], patch.positions[size_t(b)]) < kOnSurface;
+    kinematic[i] = toSkin > kOnSurface || onBorder;
+  }
+  return kinematic;
 }
 
 // The orthonormal frame of a triangle: first edge, in-plane perpendicular, normal (as columns).
@@ -170,21 +246,24 @@ std::vector<NodeAnchor> anchorNodes(const SkinPatch& patch, const TetMesh& mesh)
 
 }  // namespace
 
+std::string fleshVolumeRecipe(const FleshVolumeSettings& settings) {
+  // Change the words with the method: a volume is filed under them (its nodes, tetrahedra,
+  // kinematic flags and anchors).
+  return "inner surface shrunk towards the fitted sphere's centre; TetGen -" + tetgenSwitches(settings) +
+         "; kinematic: inner surface, walls and border, added nodes by position; anchors: nearest skin triangle";
+}
+
 FleshVolume buildFleshVolume(const SkinPatch& patch, const FleshVolumeSettings& settings) {
   if (patch.triangles.empty()) throw FleshVolumeError("the flesh region holds no skin triangle");
   if (!(settings.depth > 0.0) || !(settings.maxTetVolume > 0.0) || !(settings.radiusEdgeRatio >= 1.0))
     throw FleshVolumeError("the flesh volume needs a positive depth and tetrahedron volume and a radius-edge bound >= 1");
   const std::vector<std::array<int, 2>> border = borderEdges(patch);
-  std::vector<bool> onBorder(patch.positions.size(), false);
-  for (const auto& edge : border)
-    for (int v : edge) onBorder[size_t(v)] = true;
   const std::vector<Vec3d> inner = innerSurface(patch, settings.depth);
+  const TetGenResult result = runTetGen(closedShell(patch, inner, border), settings);
   FleshVolume volume;
-  volume.mesh = runTetGen(closedShell(patch, inner, border), settings);
+  volume.mesh = result.mesh;
   volume.skinNodes = int(patch.positions.size());
-  volume.kinematic.assign(volume.mesh.nodes.size(), false);
-  for (size_t v = patch.positions.size(); v < 2 * patch.positions.size(); ++v) volume.kinematic[v] = true;
-  for (size_t v = 0; v < onBorder.size(); ++v) volume.kinematic[v] = volume.kinematic[v] || onBorder[v];
+  volume.kinematic = kinematicNodes(patch, border, result);
   volume.anchors = anchorNodes(patch, volume.mesh);
   return volume;
 }

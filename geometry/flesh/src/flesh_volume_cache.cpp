@@ -52,6 +52,8 @@ uint64_t fleshVolumeKey(const SkinPatch& patch, const FleshVolumeSettings& setti
   h.add(settings.depth);
   h.add(settings.maxTetVolume);
   h.add(settings.radiusEdgeRatio);
+  const std::string recipe = fleshVolumeRecipe(settings);
+  h.add(recipe.data(), recipe.size());
   return h.value();
 }
 

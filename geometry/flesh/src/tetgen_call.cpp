@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <algorithm>
 #include <cstring>
 
 #include "lacrima/flesh/flesh_volume.hpp"
@@ -22,7 +23,8 @@ struct Reply {
   int points = 0, tets = 0;
 };
 
-void fillInput(const std::vector<Vec3d>& points, const std::vector<std::array<int, 3>>& facets, tetgenio& in) {
+void fillInput(const std::vector<Vec3d>& points, const std::vector<std::array<int, 3>>& facets,
+               const std::vector<int>& facetMarkers, tetgenio& in) {
   in.firstnumber = 0;
   in.numberofpoints = int(points.size());
   in.pointlist = new REAL[points.size() * 3];
@@ -30,6 +32,8 @@ void fillInput(const std::vector<Vec3d>& points, const std::vector<std::array<in
     for (int k = 0; k < 3; ++k) in.pointlist[3 * i + size_t(k)] = points[i][k];
   in.numberoffacets = int(facets.size());
   in.facetlist = new tetgenio::facet[facets.size()];
+  in.facetmarkerlist = new int[facets.size()];
+  for (size_t f = 0; f < facets.size(); ++f) in.facetmarkerlist[f] = facetMarkers[f];
   for (size_t f = 0; f < facets.size(); ++f) {
     tetgenio::facet& facet = in.facetlist[f];
     tetgenio::init(&facet);
@@ -54,10 +58,10 @@ bool writeAll(int fd, const void* data, size_t size) {
 }
 
 [[noreturn]] void runChild(int fd, const std::vector<Vec3d>& points, const std::vector<std::array<int, 3>>& facets,
-                           std::string switches) {
+                           const std::vector<int>& facetMarkers, std::string switches) {
   Reply reply;
   tetgenio in, out;
-  fillInput(points, facets, in);
+  fillInput(points, facets, facetMarkers, in);
   try {
     tetrahedralize(switches.data(), &in, &out);
     reply.points = out.numberofpoints;
@@ -70,6 +74,9 @@ bool writeAll(int fd, const void* data, size_t size) {
     ok = ok && writeAll(fd, out.pointlist, sizeof(REAL) * 3 * size_t(reply.points));
     for (int t = 0; ok && t < reply.tets; ++t)
       ok = writeAll(fd, out.tetrahedronlist + size_t(t) * size_t(out.numberofcorners), sizeof(int) * 4);
+    std::vector<int> markers(size_t(reply.points), 0);
+    if (out.pointmarkerlist) std::copy(out.pointmarkerlist, out.pointmarkerlist + reply.points, markers.begin());
+    ok = ok && writeAll(fd, markers.data(), sizeof(int) * markers.size());
   }
   ::_exit(ok ? 0 : 1);
 }
@@ -97,8 +104,8 @@ std::string describeTetGenError(int code) {
 
 }  // namespace
 
-TetMesh tetrahedralizeInChildProcess(const std::vector<Vec3d>& points, const std::vector<std::array<int, 3>>& facets,
-                                     const std::string& switches) {
+TetGenResult tetrahedralizeInChildProcess(const std::vector<Vec3d>& points, const std::vector<std::array<int, 3>>& facets,
+                                          const std::vector<int>& facetMarkers, const std::string& switches) {
   int fds[2];
   if (::pipe(fds) != 0) throw FleshVolumeError(fmt::format("cannot start TetGen: pipe: {}", std::strerror(errno)));
   const pid_t child = ::fork();
@@ -109,7 +116,7 @@ TetMesh tetrahedralizeInChildProcess(const std::vector<Vec3d>& points, const std
   }
   if (child == 0) {
     ::close(fds[0]);
-    runChild(fds[1], points, facets, switches);
+    runChild(fds[1], points, facets, facetMarkers, switches);
   }
   ::close(fds[1]);
   const std::string data = readAll(fds[0]);
@@ -128,10 +135,12 @@ TetMesh tetrahedralizeInChildProcess(const std::vector<Vec3d>& points, const std
     throw FleshVolumeError(fmt::format("TetGen could not mesh the flesh volume: {} (its error {}); a smaller depth or "
                                        "a region with a smoother border usually helps",
                                        describeTetGenError(reply.status), reply.status));
-  const size_t expected = sizeof reply + sizeof(double) * 3 * size_t(reply.points) + sizeof(int) * 4 * size_t(reply.tets);
+  const size_t expected = sizeof reply + sizeof(double) * 3 * size_t(reply.points) + sizeof(int) * 4 * size_t(reply.tets) +
+                          sizeof(int) * size_t(reply.points);
   if (data.size() != expected || !WIFEXITED(wstatus) || WEXITSTATUS(wstatus) != 0)
     throw FleshVolumeError("TetGen's answer was cut short");
-  TetMesh mesh;
+  TetGenResult result;
+  TetMesh& mesh = result.mesh;
   const char* p = data.data() + sizeof reply;
   mesh.nodes.resize(size_t(reply.points));
   for (Vec3d& node : mesh.nodes) {
@@ -143,7 +152,9 @@ TetMesh tetrahedralizeInChildProcess(const std::vector<Vec3d>& points, const std
     std::memcpy(tet.data(), p, sizeof(int) * 4);
     p += sizeof(int) * 4;
   }
-  return mesh;
+  result.nodeMarkers.resize(size_t(reply.points));
+  std::memcpy(result.nodeMarkers.data(), p, sizeof(int) * result.nodeMarkers.size());
+  return result;
 }
 
 }  // namespace lacrima::flesh

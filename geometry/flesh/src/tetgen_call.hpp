@@ -10,9 +10,16 @@
 
 namespace lacrima::flesh {
 
-// Tetrahedralizes the piecewise linear complex (points and triangular facets) with TetGen's
-// `switches`. Throws FleshVolumeError when TetGen reports an error or its process dies.
-TetMesh tetrahedralizeInChildProcess(const std::vector<Vec3d>& points, const std::vector<std::array<int, 3>>& facets,
-                                     const std::string& switches);
+struct TetGenResult {
+  TetMesh mesh;
+  // Per output node: the marker of the facet it lies on (facetMarkers' values), 0 inside.
+  std::vector<int> nodeMarkers;
+};
+
+// Tetrahedralizes the piecewise linear complex (points, triangular facets and a marker per facet,
+// non-zero) with TetGen's `switches`. Throws FleshVolumeError when TetGen reports an error or its
+// process dies.
+TetGenResult tetrahedralizeInChildProcess(const std::vector<Vec3d>& points, const std::vector<std::array<int, 3>>& facets,
+                                          const std::vector<int>& facetMarkers, const std::string& switches);
 
 }  // namespace lacrima::flesh

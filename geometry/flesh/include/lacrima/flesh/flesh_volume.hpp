@@ -3,7 +3,7 @@
 // skin shrunk by a depth towards the centre of the sphere it fits: the skull's side of the flesh),
 // closed by walls along the patch's border, tetrahedralized by TetGen (Si 2015, "TetGen, a Delaunay-based
 // quality tetrahedral mesh generator", ACM TOMS 41(2)) with a bound on the radius-edge ratio and
-// on the volume, the skin's triangles kept as they are (no Steiner points on the boundary).
+// on the volume (the skin's triangles split where the bounds need it).
 //
 // Each node is anchored to a skin triangle: its offset from the anchor point, in the triangle's
 // own frame, places it on any pose of the skin. So the rig's pose of the skin gives the rig's
@@ -55,6 +55,11 @@ class FleshVolumeError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
+
+// How buildFleshVolume makes a volume from these settings, in words (its inner surface's
+// construction and TetGen's switches): part of the key volumes are filed on disk under, so a change
+// of method is never answered from an old file.
+std::string fleshVolumeRecipe(const FleshVolumeSettings& settings);
 
 // Throws FleshVolumeError when the patch is empty, the depth is too deep for the skin's curvature
 // or TetGen fails (a region whose skin the rays from the centre cross twice).
