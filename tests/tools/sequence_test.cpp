@@ -392,12 +392,18 @@ TEST(SequenceInterrupt, KilledRendersNeverLeaveABrokenFrameAndResumeMatchesAnUni
   const fs::path shot = writeSphereShot(dir, kFrames);
   const SlowRender small{96, 54, 24};  // about 50 ms a frame: the 24 frames take a second or two
   const fs::path reference = dir / "reference", killed = dir / "killed";
+  const auto referenceStart = std::chrono::steady_clock::now();
   ASSERT_EQ(lacrima(slowRenderArgs(shot, reference, small)).exitStatus, 0);
+  const double referenceMs =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - referenceStart).count();
 
   // Kills at moments drawn with a fixed seed, from start-up (scene load, first frame) to
-  // mid-write; each run resumes the last, so the kills spread over the whole sequence.
+  // mid-write; each run resumes the last, so the kills spread over the whole sequence. The latest
+  // moment is a tenth of the uninterrupted run (at least 40 ms): ten kills then stop the sequence
+  // about half way on a fast machine as on a loaded one (a fixed 400 ms let an idle machine finish
+  // all 24 frames before the last kill, and the test said nothing).
   std::mt19937 random(20240611);
-  std::uniform_int_distribution<int> moment(20, 400);  // milliseconds after the start
+  std::uniform_int_distribution<int> moment(20, std::max(40, int(0.1 * referenceMs)));  // ms after the start
   for (int attempt = 0; attempt < kKills; ++attempt) {
     std::vector<std::string> args = slowRenderArgs(shot, killed, small);
     args.push_back("--resume");
