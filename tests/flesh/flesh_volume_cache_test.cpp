@@ -49,13 +49,24 @@ void expectSameVolume(const FleshVolume& a, const FleshVolume& b) {
   }
 }
 
+// The small patch's volume built through a fresh cache directory, its key and the file it went to.
+struct FiledVolume {
+  fs::path dir;
+  SkinPatch patch = smallPatch();
+  FleshVolumeSettings settings;
+  FleshVolume built;
+  uint64_t key = 0;
+  fs::path file;
+  explicit FiledVolume(const std::string& name) : dir(freshDirectory(name)) {
+    built = cachedFleshVolume(patch, settings, dir);
+    key = fleshVolumeKey(patch, settings);
+    file = dir / fmt::format("{:016x}.flesh", key);
+  }
+};
+
 TEST(FleshVolumeCache, FiledVolumeReadsBackBitwise) {
-  const fs::path dir = freshDirectory("flesh_cache_roundtrip");
-  const SkinPatch patch = smallPatch();
-  const FleshVolumeSettings settings;
-  const FleshVolume built = cachedFleshVolume(patch, settings, dir);
-  const uint64_t key = fleshVolumeKey(patch, settings);
-  const fs::path file = dir / fmt::format("{:016x}.flesh", key);
+  const FiledVolume filed("flesh_cache_roundtrip");
+  const auto& [dir, patch, settings, built, key, file] = filed;
   ASSERT_TRUE(fs::exists(file));
   const std::optional<FleshVolume> read = readFleshVolume(file, key);
   ASSERT_TRUE(read);
@@ -80,12 +91,8 @@ TEST(FleshVolumeCache, KeyChangesWithEveryInput) {
 }
 
 TEST(FleshVolumeCache, TruncatedOrCorruptFileIsNotTrusted) {
-  const fs::path dir = freshDirectory("flesh_cache_corrupt");
-  const SkinPatch patch = smallPatch();
-  const FleshVolumeSettings settings;
-  const FleshVolume built = cachedFleshVolume(patch, settings, dir);
-  const uint64_t key = fleshVolumeKey(patch, settings);
-  const fs::path file = dir / fmt::format("{:016x}.flesh", key);
+  const FiledVolume filed("flesh_cache_corrupt");
+  const auto& [dir, patch, settings, built, key, file] = filed;
   fs::resize_file(file, fs::file_size(file) - 10);
   EXPECT_FALSE(readFleshVolume(file, key));
   expectSameVolume(built, cachedFleshVolume(patch, settings, dir));  // rebuilt and filed again
