@@ -208,20 +208,19 @@ std::vector<Vec3d> FleshRun::nodeOffsetsAt(double frame) {
   constexpr double kSlack = 1e-9;  // frames: a time on the step grid is on it
   if (frame < frameAtStep(step_) - kSlack) restart();
   while (frameAtStep(step_ + 1) <= frame + kSlack) advanceOneStep();
-  const std::vector<Vec3d>* positions = &simulation_.positions();
-  std::vector<Vec3d> target = target_;
-  flesh::FleshSimulation partial = simulation_;
-  if (frame > frameAtStep(step_) + kSlack) {
-    // Between steps (a shutter time off the grid): a shorter step there, not kept.
-    const double h = (frame - frameAtStep(step_)) / fps_;
-    target = targetAt(frame);
-    std::vector<Vec3d> velocities(target.size());
-    for (size_t i = 0; i < target.size(); ++i) velocities[i] = (target[i] - target_[i]) / h;
-    partial.step(h, target, velocities);
-    positions = &partial.positions();
-  }
   std::vector<Vec3d> offsets(nodes);
-  for (size_t v = 0; v < nodes; ++v) offsets[v] = (*positions)[v] - target[v];
+  if (frame <= frameAtStep(step_) + kSlack) {
+    for (size_t v = 0; v < nodes; ++v) offsets[v] = simulation_.positions()[v] - target_[v];
+    return offsets;
+  }
+  // Between steps (a shutter time off the grid): a shorter step there, on a copy, not kept.
+  const double h = (frame - frameAtStep(step_)) / fps_;
+  const std::vector<Vec3d> target = targetAt(frame);
+  std::vector<Vec3d> velocities(target.size());
+  for (size_t i = 0; i < target.size(); ++i) velocities[i] = (target[i] - target_[i]) / h;
+  flesh::FleshSimulation partial = simulation_;
+  partial.step(h, target, velocities);
+  for (size_t v = 0; v < nodes; ++v) offsets[v] = partial.positions()[v] - target[v];
   return offsets;
 }
 
