@@ -127,10 +127,8 @@ void embedFleshSkins(Shot& shot) {
         vertices.push_back(v);
       }
     flesh.skinEmbedding.assign(skin.positions.size(), flesh::TetEmbedding{});
-    const std::vector<flesh::TetEmbedding> embedded = flesh::embedPoints(mesh, points);
-    for (size_t i = 0; i < vertices.size(); ++i)
-      if (embedded[i].tet >= 0 && embedded[i].weights.minCoeff() >= -kEmbeddingSlack)
-        flesh.skinEmbedding[vertices[i]] = embedded[i];
+    const std::vector<flesh::TetEmbedding> embedded = flesh::embedPoints(mesh, points, kEmbeddingSlack);
+    for (size_t i = 0; i < vertices.size(); ++i) flesh.skinEmbedding[vertices[i]] = embedded[i];
   }
 }
 
@@ -189,6 +187,8 @@ void FleshRun::restart() {
   std::vector<Vec3d> velocities(next.size());
   for (size_t i = 0; i < next.size(); ++i) velocities[i] = (next[i] - target_[i]) / h;
   simulation_.setState(target_, velocities);
+  offsets_.assign(next.size(), Vec3d::Zero());
+  previousOffsets_ = offsets_;
 }
 
 void FleshRun::advanceOneStep() {
@@ -199,6 +199,9 @@ void FleshRun::advanceOneStep() {
   simulation_.step(h, next, velocities);
   target_ = std::move(next);
   ++step_;
+  previousOffsets_ = std::move(offsets_);
+  offsets_.resize(target_.size());
+  for (size_t v = 0; v < target_.size(); ++v) offsets_[v] = simulation_.positions()[v] - target_[v];
 }
 
 std::vector<Vec3d> FleshRun::nodeOffsetsAt(double frame) {
@@ -206,21 +209,14 @@ std::vector<Vec3d> FleshRun::nodeOffsetsAt(double frame) {
   if (frame <= startFrame_) return std::vector<Vec3d>(nodes, Vec3d::Zero());
   std::lock_guard<std::mutex> lock(mutex_);
   constexpr double kSlack = 1e-9;  // frames: a time on the step grid is on it
-  if (frame < frameAtStep(step_) - kSlack) restart();
-  while (frameAtStep(step_ + 1) <= frame + kSlack) advanceOneStep();
+  if (frame < frameAtStep(step_ - 1) - kSlack) restart();
+  while (frameAtStep(step_) < frame - kSlack) advanceOneStep();
+  if (frame >= frameAtStep(step_) - kSlack) return offsets_;
+  // Between two steps (a shutter time off the grid): the offsets interpolated linearly between
+  // them (a shorter step from the earlier one would cost as much as a whole step).
+  const double f = std::clamp((frame - frameAtStep(step_ - 1)) / stepFrames(), 0.0, 1.0);
   std::vector<Vec3d> offsets(nodes);
-  if (frame <= frameAtStep(step_) + kSlack) {
-    for (size_t v = 0; v < nodes; ++v) offsets[v] = simulation_.positions()[v] - target_[v];
-    return offsets;
-  }
-  // Between steps (a shutter time off the grid): a shorter step there, on a copy, not kept.
-  const double h = (frame - frameAtStep(step_)) / fps_;
-  const std::vector<Vec3d> target = targetAt(frame);
-  std::vector<Vec3d> velocities(target.size());
-  for (size_t i = 0; i < target.size(); ++i) velocities[i] = (target[i] - target_[i]) / h;
-  flesh::FleshSimulation partial = simulation_;
-  partial.step(h, target, velocities);
-  for (size_t v = 0; v < nodes; ++v) offsets[v] = partial.positions()[v] - target[v];
+  for (size_t v = 0; v < nodes; ++v) offsets[v] = previousOffsets_[v] + f * (offsets_[v] - previousOffsets_[v]);
   return offsets;
 }
 

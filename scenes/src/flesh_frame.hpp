@@ -30,9 +30,10 @@ std::vector<FleshProblem> resolveFleshVolumes(Shot& shot);
 // flesh's primitive that lies in (or on) its volume, on the first frame's pose.
 void embedFleshSkins(Shot& shot);
 
-// One flesh's simulation, advanced on demand and kept at the latest time asked for: a sequence
-// rendered in order simulates each step once; a frame before the kept time starts again from the
-// shot's first frame. Thread-safe.
+// One flesh's simulation, advanced on demand and kept at the step after the latest time asked for
+// (a time between two steps is interpolated between them): a sequence rendered in order simulates
+// each step once; a time before the kept steps starts again from the shot's first frame.
+// Thread-safe.
 class FleshRun {
  public:
   FleshRun(const Shot& shot, const ShotFlesh& flesh);
@@ -68,6 +69,8 @@ class FleshRun {
   flesh::FleshSimulation simulation_;
   long step_ = 0;                  // simulation_ is at frameAtStep(step_)
   std::vector<Vec3d> target_;      // the rig's pose there
+  std::vector<Vec3d> offsets_;     // the simulated nodes' offsets from it
+  std::vector<Vec3d> previousOffsets_;  // and at the step before (zero at the start)
   std::array<std::pair<int, std::vector<Vec3d>>, 2> posedTargets_{{{INT_MIN, {}}, {INT_MIN, {}}}};
   size_t nextPosedSlot_ = 0;
 };

@@ -193,5 +193,21 @@ TEST(FleshVolume, PointsEmbedWithWeightsThatRebuildThem) {
   }
 }
 
+TEST(FleshVolume, PointsOutsideTheVolumeEmbedOnlyWithinTheSlack) {
+  const SkinPatch patch = flatSkin(0.04, 8).patch();
+  FleshVolumeSettings settings;
+  settings.maxTetVolume = 2e-8;
+  const FleshVolume volume = buildFleshVolume(patch, settings);
+  // The skin is the plane z = 0 and the flesh lies under it: a hair above is a hair outside.
+  const std::vector<Vec3d> points{{0.02, 0.02, 1e-6}, {0.02, 0.02, 0.004}, {0.02, 0.02, -0.1}};
+  const std::vector<TetEmbedding> embedded = embedPoints(volume.mesh, points, 0.02);
+  ASSERT_GE(embedded[0].tet, 0);
+  EXPECT_LT(embedded[0].weights.minCoeff(), 0.0);
+  EXPECT_GE(embedded[0].weights.minCoeff(), -0.02);
+  EXPECT_EQ(embedded[1].tet, -1) << "4 mm above the skin";
+  EXPECT_EQ(embedded[2].tet, -1) << "far below the inner surface";
+  EXPECT_EQ(embedPoints(volume.mesh, points)[0].tet, -1) << "no slack: not inside";
+}
+
 }  // namespace
 }  // namespace lacrima::flesh

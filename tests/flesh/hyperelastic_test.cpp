@@ -100,8 +100,25 @@ TEST(Hyperelastic, CauchyStressIsPFTransposeOverJ) {
   EXPECT_LT((sigma * f.determinant() - p * f.transpose()).norm(), 1e-9);
 }
 
+TEST(Hyperelastic, PolarRotationIsTheRotationThatLeavesASymmetricStretch) {
+  // F = R S with R a rotation and S symmetric, for stretched, sheared, nearly flat and inverted F.
+  std::vector<Mat3d> cases{Mat3d::Identity(), someRotation(), Vec3d(1.0, 1.0, 1.0 + 1e-12).asDiagonal()};
+  srand(7);
+  for (int i = 0; i < 200; ++i) cases.push_back(Mat3d::Identity() + 0.05 * Mat3d::Random());
+  for (int i = 0; i < 200; ++i) cases.push_back(Mat3d::Random());
+  cases.push_back(someRotation() * Vec3d(1.0, 0.5, -0.3).asDiagonal());   // inverted
+  cases.push_back(someRotation() * Vec3d(1.0, 1e-5, 1e-6).asDiagonal());  // squashed to a line
+  for (const Mat3d& f : cases) {
+    const Mat3d r = polarRotation(f);
+    EXPECT_LT((r.transpose() * r - Mat3d::Identity()).norm(), 1e-10);
+    EXPECT_NEAR(r.determinant(), 1.0, 1e-10);
+    const Mat3d s = r.transpose() * f;
+    EXPECT_LT((s - s.transpose()).norm(), 1e-9 * std::max(1.0, f.norm())) << f;
+  }
+}
+
 TEST(Hyperelastic, StressDifferentialMatchesDifferencesInTension) {
-  // Exact for StVK while S >= 0 (tension), and for the corotated material at rest.
+  // Exact for StVK while S >= 0 (tension).
   Mat3d f;
   f << 1.15, 0.05, 0.0, 0.02, 1.1, 0.03, 0.0, 0.01, 1.2;
   Mat3d df;
@@ -112,18 +129,44 @@ TEST(Hyperelastic, StressDifferentialMatchesDifferencesInTension) {
       (firstPiolaStress(stvk, kLame, f + eps * df) - firstPiolaStress(stvk, kLame, f - eps * df)) / (2 * eps);
   const Mat3d analytic = stressDifferential(stvk, kLame, linearizeStress(stvk, kLame, f), df);
   EXPECT_LT((analytic - byDifferences).norm(), 1e-5 * byDifferences.norm());
+}
 
+Mat3d corotatedByDifferences(const Mat3d& f, const Mat3d& df) {
+  const double eps = 1e-6;
   const FleshMaterial co = FleshMaterial::FixedCorotated;
-  const Mat3d i = Mat3d::Identity();
-  const Mat3d atRest = (firstPiolaStress(co, kLame, i + eps * df) - firstPiolaStress(co, kLame, i - eps * df)) / (2 * eps);
-  // At rest the rotation's own differential only removes dF's skew part, which 2 mu dF keeps: compare
-  // on a symmetric dF.
-  const Mat3d dsym = 0.5 * (df + df.transpose());
-  const Mat3d atRestSym =
-      (firstPiolaStress(co, kLame, i + eps * dsym) - firstPiolaStress(co, kLame, i - eps * dsym)) / (2 * eps);
-  EXPECT_LT((stressDifferential(co, kLame, linearizeStress(co, kLame, i), dsym) - atRestSym).norm(),
-            1e-5 * atRestSym.norm());
-  EXPECT_GT(atRest.norm(), 0.0);
+  return (firstPiolaStress(co, kLame, f + eps * df) - firstPiolaStress(co, kLame, f - eps * df)) / (2 * eps);
+}
+
+Mat3d corotatedDifferential(const Mat3d& f, const Mat3d& df) {
+  const FleshMaterial co = FleshMaterial::FixedCorotated;
+  return stressDifferential(co, kLame, linearizeStress(co, kLame, f), df);
+}
+
+TEST(Hyperelastic, CorotatedDifferentialIsExactAtRestAndUnderRotation) {
+  Mat3d df;
+  df << 0.3, -0.1, 0.2, 0.05, 0.4, -0.2, 0.1, 0.0, -0.3;
+  for (const Mat3d& f : {Mat3d(Mat3d::Identity()), someRotation()}) {
+    const Mat3d expected = corotatedByDifferences(f, df);
+    EXPECT_LT((corotatedDifferential(f, df) - expected).norm(), 1e-6 * expected.norm());
+  }
+  // A rotation's own direction costs nothing: dF = W F with W skew.
+  Mat3d w;
+  w << 0, -0.2, 0.1, 0.2, 0, -0.3, -0.1, 0.3, 0;
+  EXPECT_LT(corotatedDifferential(someRotation(), w * someRotation()).norm(), 1e-9);
+}
+
+TEST(Hyperelastic, CorotatedDifferentialInTensionLacksOnlyTheCofactorsTerm) {
+  // Stretched on every axis (each pair of singular values sums past 2, so no clamping): the
+  // differential is exact but for lambda (J - 1) dcof(F), which it leaves out.
+  const Mat3d f = someRotation() * Vec3d(1.2, 1.15, 1.1).asDiagonal();
+  Mat3d df;
+  df << 0.3, -0.1, 0.2, 0.05, 0.4, -0.2, 0.1, 0.0, -0.3;
+  Mat3d dcof;
+  dcof.col(0) = df.col(1).cross(f.col(2)) + f.col(1).cross(df.col(2));
+  dcof.col(1) = df.col(2).cross(f.col(0)) + f.col(2).cross(df.col(0));
+  dcof.col(2) = df.col(0).cross(f.col(1)) + f.col(0).cross(df.col(1));
+  const Mat3d expected = corotatedByDifferences(f, df) - kLame.lambda * (f.determinant() - 1.0) * dcof;
+  EXPECT_LT((corotatedDifferential(f, df) - expected).norm(), 1e-6 * expected.norm());
 }
 
 TEST(Hyperelastic, StressDifferentialIsPositiveSemiDefinite) {

@@ -61,28 +61,32 @@ double FvmElasticity::energy(const std::vector<Vec3d>& x) const {
   return sum;
 }
 
+void FvmElasticity::tetCornerForces(size_t t, const std::vector<Vec3d>& x, const Mat3d& p, const Mat3d& deformation,
+                                    std::vector<Vec3d>& corners) const {
+  const Tet& tet = tets_[t];
+  const double j = deformation.determinant();
+  for (int c = 0; c < 4; ++c) corners[4 * t + size_t(c)].setZero();
+  if (std::abs(j) < 1e-12) {
+    // Flat: no Cauchy stress (J = 0); the same forces by Nanson's formula, -P Dm^-T V0 per corner.
+    const Mat3d h = -restVolume_[t] * p * dmInverse_[t].transpose();
+    for (int c = 1; c < 4; ++c) corners[4 * t + size_t(c)] = h.col(c - 1);
+    corners[4 * t] = -(h.col(0) + h.col(1) + h.col(2));
+    return;
+  }
+  const Mat3d sigma = cauchyStress(p, deformation);  // step 1
+  for (const auto& face : kFaces) {
+    const Vec3d& a = x[size_t(tet[face[0]])];
+    const Vec3d areaNormal = 0.5 * (x[size_t(tet[face[1]])] - a).cross(x[size_t(tet[face[2]])] - a);
+    const Vec3d force = -sigma * areaNormal;                         // steps 2-3: -sigma a n
+    for (int corner : face) corners[4 * t + size_t(corner)] += force / 3.0;  // step 4
+  }
+}
+
 void FvmElasticity::addForces(const std::vector<Vec3d>& x, std::vector<Vec3d>& f) const {
   std::vector<Vec3d> corners(tets_.size() * 4);
   forEachTet(tets_.size(), [&](size_t t) {
-    const Tet& tet = tets_[t];
-    const Mat3d deformation = edgeMatrix(x, tet) * dmInverse_[t];
-    const Mat3d p = firstPiolaStress(material_, lame_, deformation);
-    const double j = deformation.determinant();
-    for (int c = 0; c < 4; ++c) corners[4 * t + size_t(c)].setZero();
-    if (std::abs(j) < 1e-12) {
-      // Flat: no Cauchy stress (J = 0); the same forces by Nanson's formula, -P Dm^-T V0 per corner.
-      const Mat3d h = -restVolume_[t] * p * dmInverse_[t].transpose();
-      for (int c = 1; c < 4; ++c) corners[4 * t + size_t(c)] = h.col(c - 1);
-      corners[4 * t] = -(h.col(0) + h.col(1) + h.col(2));
-      return;
-    }
-    const Mat3d sigma = cauchyStress(p, deformation);  // step 1
-    for (const auto& face : kFaces) {
-      const Vec3d& a = x[size_t(tet[face[0]])];
-      const Vec3d areaNormal = 0.5 * (x[size_t(tet[face[1]])] - a).cross(x[size_t(tet[face[2]])] - a);
-      const Vec3d force = -sigma * areaNormal;                         // steps 2-3: -sigma a n
-      for (int corner : face) corners[4 * t + size_t(corner)] += force / 3.0;  // step 4
-    }
+    const Mat3d deformation = edgeMatrix(x, tets_[t]) * dmInverse_[t];
+    tetCornerForces(t, x, firstPiolaStress(material_, lame_, deformation), deformation, corners);
   });
   gatherCorners(corners, f);  // step 5: each node's three faces of each of its tetrahedra
 }
@@ -91,6 +95,17 @@ void FvmElasticity::linearizeAt(const std::vector<Vec3d>& x) {
   forEachTet(tets_.size(), [&](size_t t) {
     linearization_[t] = linearizeStress(material_, lame_, edgeMatrix(x, tets_[t]) * dmInverse_[t]);
   });
+}
+
+void FvmElasticity::linearizeAndAddForces(const std::vector<Vec3d>& x, std::vector<Vec3d>& f) {
+  std::vector<Vec3d>& corners = cornerScratch_;
+  corners.resize(tets_.size() * 4);
+  forEachTet(tets_.size(), [&](size_t t) {
+    const Mat3d deformation = edgeMatrix(x, tets_[t]) * dmInverse_[t];
+    linearization_[t] = linearizeStress(material_, lame_, deformation);
+    tetCornerForces(t, x, firstPiolaStress(material_, lame_, linearization_[t]), deformation, corners);
+  });
+  gatherCorners(corners, f);
 }
 
 void FvmElasticity::addStiffnessProduct(const std::vector<Vec3d>& dx, std::vector<Vec3d>& out) const {
@@ -107,8 +122,8 @@ void FvmElasticity::addStiffnessProduct(const std::vector<Vec3d>& dx, std::vecto
   gatherCorners(corners, out);
 }
 
-void FvmElasticity::addStiffnessDiagonal(std::vector<Vec3d>& diagonal) const {
-  std::vector<Vec3d> corners(tets_.size() * 4);
+void FvmElasticity::addStiffnessBlockDiagonal(std::vector<Mat3d>& blocks) const {
+  std::vector<Mat3d> corners(tets_.size() * 4);
   forEachTet(tets_.size(), [&](size_t t) {
     const Mat3d& dmInv = dmInverse_[t];
     // d(F)/d(x_corner) along an axis: corner c > 0 moves column c-1 of Ds, corner 0 all three back.
@@ -119,10 +134,13 @@ void FvmElasticity::addStiffnessDiagonal(std::vector<Vec3d>& diagonal) const {
       for (int axis = 0; axis < 3; ++axis) {
         const Mat3d dF = Vec3d::Unit(axis) * gradients.row(c);
         const Mat3d dP = stressDifferential(material_, lame_, linearization_[t], dF);
-        corners[4 * t + size_t(c)][axis] = restVolume_[t] * dP.row(axis).dot(gradients.row(c));
+        corners[4 * t + size_t(c)].col(axis) = restVolume_[t] * dP * gradients.row(c).transpose();
       }
   });
-  gatherCorners(corners, diagonal);
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, nodeCount_, 1024), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t n = r.begin(); n != r.end(); ++n)
+      for (int i = incidenceOffset_[n]; i < incidenceOffset_[n + 1]; ++i) blocks[n] += corners[size_t(incidence_[size_t(i)])];
+  });
 }
 
 std::vector<double> FvmElasticity::lumpedMasses(double density) const {

@@ -1,6 +1,9 @@
 // embedPoints (flesh_volume.hpp): barycentric embedding through a uniform grid of tetrahedra.
 #include <algorithm>
 #include <cmath>
+#include <limits>
+
+#include <tbb/parallel_for.h>
 
 #include "lacrima/flesh/flesh_volume.hpp"
 
@@ -36,20 +39,27 @@ class TetGrid {
     }
   }
 
-  TetEmbedding embed(const Vec3d& p) const {
+  // The point's cell lists every tetrahedron whose box holds the point; one a hair away (a point
+  // just outside the boundary) is listed at the point's cell or at a neighbour, since the slack is
+  // far less than a cell. Ties go to the lower tetrahedron index: the same answer in any order.
+  TetEmbedding embed(const Vec3d& p, double slack) const {
     TetEmbedding best;
     double bestMin = -std::numeric_limits<double>::infinity();
     const auto consider = [&](int t) {
       const Eigen::Vector4d w = barycentricIn(mesh_, size_t(t), p);
-      if (w.minCoeff() > bestMin) bestMin = w.minCoeff(), best = {t, w};
+      const double smallest = w.minCoeff();
+      if (smallest > bestMin || (smallest == bestMin && t < best.tet)) bestMin = smallest, best = {t, w};
     };
     const auto [i, j, k] = cellOf(p);
     for (int t : cells_[index(i, j, k)]) consider(t);
-    // Outside every tetrahedron listed at its cell (a point a hair off the boundary, or far off):
-    // the whole mesh decides.
-    if (bestMin < -1e-6)
-      for (size_t t = 0; t < mesh_.tets.size(); ++t) consider(int(t));
-    return best;
+    if (bestMin < 0.0) {
+      for (int dk = -1; dk <= 1; ++dk)
+        for (int dj = -1; dj <= 1; ++dj)
+          for (int di = -1; di <= 1; ++di)
+            if (inGrid(i + di, j + dj, k + dk))
+              for (int t : cells_[index(i + di, j + dj, k + dk)]) consider(t);
+    }
+    return bestMin >= -slack ? best : TetEmbedding{};
   }
 
  private:
@@ -57,6 +67,9 @@ class TetGrid {
     std::array<int, 3> c{};
     for (int k = 0; k < 3; ++k) c[size_t(k)] = std::clamp(int((p[k] - lo_[k]) / cell_), 0, dims_[k] - 1);
     return c;
+  }
+  bool inGrid(int i, int j, int k) const {
+    return i >= 0 && j >= 0 && k >= 0 && i < dims_[0] && j < dims_[1] && k < dims_[2];
   }
   size_t index(int i, int j, int k) const { return (size_t(k) * size_t(dims_[1]) + size_t(j)) * size_t(dims_[0]) + size_t(i); }
 
@@ -69,12 +82,13 @@ class TetGrid {
 
 }  // namespace
 
-std::vector<TetEmbedding> embedPoints(const TetMesh& mesh, const std::vector<Vec3d>& points) {
-  std::vector<TetEmbedding> out;
-  if (mesh.tets.empty()) return std::vector<TetEmbedding>(points.size());
+std::vector<TetEmbedding> embedPoints(const TetMesh& mesh, const std::vector<Vec3d>& points, double slack) {
+  std::vector<TetEmbedding> out(points.size());
+  if (mesh.tets.empty()) return out;
   const TetGrid grid(mesh);
-  out.reserve(points.size());
-  for (const Vec3d& p : points) out.push_back(grid.embed(p));
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size(), 1024), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t i = r.begin(); i != r.end(); ++i) out[i] = grid.embed(points[i], slack);
+  });
   return out;
 }
 

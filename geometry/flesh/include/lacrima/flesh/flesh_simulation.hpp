@@ -61,7 +61,8 @@ class FleshSimulation {
 
  private:
   double theta() const { return params_.integrator == FleshIntegrator::BackwardEuler ? 1.0 : 0.5; }
-  // r(x) of the step (zero on kinematic nodes).
+  // r(x) of the step (zero on kinematic nodes); leaves the elasticity linearized at the step's
+  // evaluation point (x, or the midpoint) for the Newton step that follows.
   std::vector<Vec3d> residual(double h, const std::vector<Vec3d>& x, const std::vector<Vec3d>& targetVelocity);
   // Solves J dx = -r on the free nodes; returns the iterations taken.
   int solveNewtonStep(double h, const std::vector<Vec3d>& r, std::vector<Vec3d>& dx) const;

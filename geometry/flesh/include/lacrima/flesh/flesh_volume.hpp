@@ -76,8 +76,11 @@ struct TetEmbedding {
 };
 
 // Each point's tetrahedron: the one whose smallest barycentric weight is largest (so a point on the
-// boundary, or a hair outside it, goes to the tetrahedron it is nearest to being in).
-std::vector<TetEmbedding> embedPoints(const TetMesh& mesh, const std::vector<Vec3d>& points);
+// boundary, or a hair outside it, goes to the tetrahedron it is nearest to being in). A point
+// outside every tetrahedron by more than `slack` (that weight below -slack) is not embedded
+// (tet -1). Slack is meant small (a few hundredths): only the point's own and neighbouring grid
+// cells are searched.
+std::vector<TetEmbedding> embedPoints(const TetMesh& mesh, const std::vector<Vec3d>& points, double slack = 1e-9);
 
 Vec3d embeddedPosition(const TetMesh& topology, const std::vector<Vec3d>& nodes, const TetEmbedding& embedding);
 

@@ -35,10 +35,15 @@ class FvmElasticity {
 
   // Holds the stress linearization at x for the products below.
   void linearizeAt(const std::vector<Vec3d>& x);
+
+  // Both at once: the forces of x added to f, and x's linearization held (one singular value
+  // decomposition per tetrahedron serves both).
+  void linearizeAndAddForces(const std::vector<Vec3d>& x, std::vector<Vec3d>& f);
   // out += K dx, with K ~ -df/dx the positive semi-definite stiffness at the linearized shape.
   void addStiffnessProduct(const std::vector<Vec3d>& dx, std::vector<Vec3d>& out) const;
-  // diagonal += the diagonal of K (per node, per axis): the conjugate gradients' preconditioner.
-  void addStiffnessDiagonal(std::vector<Vec3d>& diagonal) const;
+  // blocks += the 3x3 blocks on K's diagonal (per node, its three axes coupled): the conjugate
+  // gradients' preconditioner.
+  void addStiffnessBlockDiagonal(std::vector<Mat3d>& blocks) const;
 
   // rho V0 / 4 per node over its tetrahedra's first rest volumes (lumped mass).
   std::vector<double> lumpedMasses(double density) const;
@@ -48,6 +53,11 @@ class FvmElasticity {
   FleshMaterial material() const { return material_; }
 
  private:
+  // Tetrahedron t's share of the forces of x given its first Piola stress and F (steps 1-4) into
+  // corners[4t .. 4t+3].
+  void tetCornerForces(size_t t, const std::vector<Vec3d>& x, const Mat3d& p, const Mat3d& deformation,
+                       std::vector<Vec3d>& corners) const;
+
   // Per-tetrahedron corner vectors into per-node sums, in a fixed order (deterministic for any
   // thread count).
   void gatherCorners(const std::vector<Vec3d>& corners, std::vector<Vec3d>& out) const;

@@ -49,14 +49,24 @@ Mat3d cauchyStress(const Mat3d& p, const Mat3d& f);
 // which the implicit solver's conjugate gradients need:
 // - St. Venant-Kirchhoff: dP = dF S+ + F dS with S+ the second Piola stress with its negative
 //   eigenvalues clamped to zero (exact while S is positive semi-definite, i.e. in tension);
-// - fixed corotated: dP = 2 mu dF + lambda (cof(F):dF) cof(F), the rotation and the cofactor
-//   held fixed (exact at the rest state; the quasi-Newton step of a lagged rotation).
+// - fixed corotated: dP = 2 mu (dF - dR) + lambda (cof(F):dF) cof(F). The rotation's differential
+//   in F's singular frame (F = U Sigma V^T, dF^ = U^T dF V) turns each pair's skew part
+//   b = (dF^_ij - dF^_ji) / 2 by 2 b / (s_i + s_j) (Twigg & Kacic-Alesic 2010; Stomakhin et al.
+//   2012, section 4.2), so 2 mu (dF - dR) keeps (1 - 2 / (s_i + s_j)) of it, clamped at zero where
+//   compression makes that negative (Teran et al. 2005's definiteness fix). The cofactor's own
+//   differential, lambda (J - 1) dcof, is left out: indefinite, and small wherever the flesh keeps
+//   its volume (J near 1). Exact at rest and under pure rotation.
 // What the differential needs of F, computed once per Newton iterate and tetrahedron (the
-// conjugate gradients then apply it many times): F, and S+ (St. Venant-Kirchhoff) or cof(F).
+// conjugate gradients then apply it many times): F, and S+ (St. Venant-Kirchhoff) or cof(F), the
+// rotation R and the twist map M (fixed corotated). In world terms the rotation's differential is
+// dR = R [M a]x with a the axial vector of skew(R^T dF) and M = V diag(removed fractions) V^T.
 struct StressLinearization {
   Mat3d f, held;
+  Mat3d rotation = Mat3d::Identity(), twist = Mat3d::Zero();
 };
 StressLinearization linearizeStress(FleshMaterial material, const LameParameters& lame, const Mat3d& f);
+// The first Piola stress at the linearization's F, from what it holds (no second decomposition).
+Mat3d firstPiolaStress(FleshMaterial material, const LameParameters& lame, const StressLinearization& at);
 Mat3d stressDifferential(FleshMaterial material, const LameParameters& lame, const StressLinearization& at,
                          const Mat3d& df);
 
