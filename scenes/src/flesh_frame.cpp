@@ -8,7 +8,9 @@
 #include <cstdlib>
 
 #include "asset_pose.hpp"
+#include "lacrima/flesh/flesh_state_cache.hpp"
 #include "lacrima/flesh/flesh_volume_cache.hpp"
+#include "lacrima/flesh/fnv1a.hpp"
 #include "lacrima/geometry/region_refinement.hpp"
 #include "surface_anchor.hpp"
 
@@ -73,6 +75,22 @@ std::shared_ptr<const flesh::SkinPatch> skinPatchOf(const TriangleMesh& skin, co
   return std::make_shared<const flesh::SkinPatch>(flesh::extractSkinPatch(positions, normals, triangles, selected));
 }
 
+// What a flesh's states depend on besides the rig's motion: the volume, the material, the
+// solver's settings and revision, the step grid.
+uint64_t baseStateKey(const ShotFlesh& flesh, const flesh::SkinPatch& patch, double fps, double startFrame) {
+  flesh::Fnv1a h(flesh::fleshVolumeKey(patch, flesh.volume));
+  h.add(flesh::kFleshSolverRevision);
+  h.add(flesh.material);
+  h.add(flesh.youngsModulus);
+  h.add(flesh.poissonRatio);
+  const flesh::FleshDynamicsParams& d = flesh.dynamics;
+  for (double value : {d.density, d.massDamping, d.stiffnessDamping, d.newtonTolerance, d.cgTolerance}) h.add(value);
+  for (int value : {int(d.integrator), d.newtonIterations, d.cgIterations, flesh.substeps}) h.add(value);
+  h.add(fps);
+  h.add(startFrame);
+  return h.value();
+}
+
 std::optional<FleshProblem> resolveOne(Shot& shot, ShotFlesh& flesh) {
   for (ShotFleshRegion& region : flesh.regions)
     region.centerPoint = resolveSurfaceAnchor(shot, flesh.asset, flesh.part, region.center);
@@ -132,7 +150,7 @@ void embedFleshSkins(Shot& shot) {
   }
 }
 
-FleshRun::FleshRun(const Shot& shot, const ShotFlesh& flesh)
+FleshRun::FleshRun(const Shot& shot, const ShotFlesh& flesh, StateFiling filing)
     : asset_(shot.assets.at(flesh.asset)),
       primitive_(flesh.primitive),
       patch_(flesh.patch),
@@ -146,6 +164,11 @@ FleshRun::FleshRun(const Shot& shot, const ShotFlesh& flesh)
   // How deep each node lies, as a fraction of the flesh's depth: 0 on the skin, 1 on the inner surface.
   for (const flesh::NodeAnchor& anchor : volume_->anchors)
     depthFraction_.push_back(std::clamp(anchor.offset.norm() / flesh.volume.depth, 0.0, 1.0));
+  if (const fs::path cache = fleshCacheDirectory(); !cache.empty() && filing == StateFiling::On) {
+    stateDirectory_ = cache / "states";
+    stateKeys_.push_back(baseStateKey(flesh, *patch_, fps_, startFrame_));
+    keyedPoseThrough_ = int(std::floor(startFrame_)) - 1;
+  }
   restart();
 }
 
@@ -189,6 +212,7 @@ void FleshRun::restart() {
   simulation_.setState(target_, velocities);
   offsets_.assign(next.size(), Vec3d::Zero());
   previousOffsets_ = offsets_;
+  previousKnown_ = true;
 }
 
 void FleshRun::advanceOneStep() {
@@ -196,12 +220,69 @@ void FleshRun::advanceOneStep() {
   std::vector<Vec3d> next = targetAt(frameAtStep(step_ + 1));
   std::vector<Vec3d> velocities(next.size());
   for (size_t i = 0; i < next.size(); ++i) velocities[i] = (next[i] - target_[i]) / h;
-  simulation_.step(h, next, velocities);
+  const flesh::FleshStepReport report = simulation_.step(h, next, velocities);
+  ++counts_.steps;
+  counts_.newtonIterations += report.newtonIterations;
+  counts_.conjugateGradientIterations += report.cgIterations;
   target_ = std::move(next);
   ++step_;
   previousOffsets_ = std::move(offsets_);
+  previousKnown_ = true;
   offsets_.resize(target_.size());
   for (size_t v = 0; v < target_.size(); ++v) offsets_[v] = simulation_.positions()[v] - target_[v];
+  if (step_ % substeps_ == 0) fileState();
+}
+
+uint64_t FleshRun::stateKey(long index) {
+  // Whole frame j's state depends on the rig's poses of every whole frame up to the one at or
+  // after the simulation's time there (the steps interpolate between whole frames' poses).
+  while (long(stateKeys_.size()) <= index) {
+    uint64_t key = stateKeys_.back();
+    const int through = int(std::ceil(startFrame_ + double(stateKeys_.size())));
+    for (; keyedPoseThrough_ < through; ++keyedPoseThrough_)
+      key = flesh::chainFleshStateKey(key, targetAtFrame(keyedPoseThrough_ + 1));
+    stateKeys_.push_back(key);
+  }
+  return stateKeys_[size_t(index)];
+}
+
+void FleshRun::fileState() {
+  if (stateDirectory_.empty()) return;
+  const long index = step_ / substeps_;
+  try {
+    std::error_code ec;
+    std::filesystem::create_directories(stateDirectory_, ec);
+    const flesh::FleshState state{simulation_.positions(), simulation_.velocities()};
+    flesh::writeFleshState(flesh::fleshStateFile(stateDirectory_, index, stateKey(index)), state, stateKey(index));
+  } catch (const std::exception&) {
+    // Not filed (a full or read-only disk): a later frame rendered alone simulates more.
+  }
+}
+
+bool FleshRun::loadState(long index) {
+  const uint64_t key = stateKey(index);
+  std::optional<flesh::FleshState> state =
+      flesh::readFleshState(flesh::fleshStateFile(stateDirectory_, index, key), key, initial_.positions().size());
+  if (!state) return false;
+  simulation_ = initial_;
+  simulation_.setState(std::move(state->positions), std::move(state->velocities));
+  step_ = index * substeps_;
+  target_ = targetAt(frameAtStep(step_));
+  offsets_.resize(target_.size());
+  for (size_t v = 0; v < target_.size(); ++v) offsets_[v] = simulation_.positions()[v] - target_[v];
+  previousOffsets_ = offsets_;
+  previousKnown_ = false;
+  return true;
+}
+
+void FleshRun::resumeNear(double frame, bool behind) {
+  if (!stateDirectory_.empty()) {
+    const long latest = long(std::floor(frame - startFrame_ + 1e-9));
+    const long kept = behind ? 0 : step_ / substeps_;
+    for (long index = latest; index > kept; --index)
+      if (loadState(index)) return;
+  }
+  if (behind) restart();
 }
 
 std::vector<Vec3d> FleshRun::nodeOffsetsAt(double frame) {
@@ -209,7 +290,9 @@ std::vector<Vec3d> FleshRun::nodeOffsetsAt(double frame) {
   if (frame <= startFrame_) return std::vector<Vec3d>(nodes, Vec3d::Zero());
   std::lock_guard<std::mutex> lock(mutex_);
   constexpr double kSlack = 1e-9;  // frames: a time on the step grid is on it
-  if (frame < frameAtStep(step_ - 1) - kSlack) restart();
+  const double keptFrom = previousKnown_ ? frameAtStep(step_ - 1) : frameAtStep(step_);
+  const bool behind = frame < keptFrom - kSlack;
+  if (behind || frame > frameAtStep(step_) + 1.0) resumeNear(frame, behind);
   while (frameAtStep(step_) < frame - kSlack) advanceOneStep();
   if (frame >= frameAtStep(step_) - kSlack) return offsets_;
   // Between two steps (a shutter time off the grid): the offsets interpolated linearly between

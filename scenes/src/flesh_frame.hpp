@@ -32,11 +32,24 @@ void embedFleshSkins(Shot& shot);
 
 // One flesh's simulation, advanced on demand and kept at the step after the latest time asked for
 // (a time between two steps is interpolated between them): a sequence rendered in order simulates
-// each step once; a time before the kept steps starts again from the shot's first frame.
-// Thread-safe.
+// each step once. Its state at each whole frame of the simulation is filed on disk
+// (flesh_state_cache.hpp, under fleshCacheDirectory()/states): a time more than a frame ahead, or
+// before the kept steps, continues from the latest filed state at or before it, else (behind)
+// starts again from the shot's first frame. The same positions either way. Thread-safe.
+// What a run has simulated so far (for lacrima bench --flesh).
+struct FleshRunCounts {
+  long steps = 0, newtonIterations = 0, conjugateGradientIterations = 0;
+};
+
 class FleshRun {
  public:
-  FleshRun(const Shot& shot, const ShotFlesh& flesh);
+  enum class StateFiling { On, Off };  // Off: states are neither read nor filed (benchmarks)
+  FleshRun(const Shot& shot, const ShotFlesh& flesh, StateFiling filing = StateFiling::On);
+
+  FleshRunCounts counts() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return counts_;
+  }
 
   // The simulated nodes' offsets from the rig's pose of them at a (fractional) frame (zero before
   // the simulation starts).
@@ -54,6 +67,13 @@ class FleshRun {
   double frameAtStep(long step) const { return startFrame_ + double(step) * stepFrames(); }
   void restart();
   void advanceOneStep();
+  // Moves to the latest filed state at or before `frame` and after the kept step (any filed state
+  // when `behind`); restarts when behind and none is filed.
+  void resumeNear(double frame, bool behind);
+  bool loadState(long frameIndex);
+  void fileState();
+  // The chain key of the state at whole frame `index` of the simulation (flesh_state_cache.hpp).
+  uint64_t stateKey(long index);
 
   ShotAsset asset_;  // a copy of the asset as loaded, unrefined (meshes and rig shared)
   size_t primitive_;
@@ -65,12 +85,17 @@ class FleshRun {
   double startFrame_;
   std::vector<double> depthFraction_;  // per node: 0 on the skin, 1 on the inner surface
 
-  std::mutex mutex_;
+  mutable std::mutex mutex_;
+  FleshRunCounts counts_;
   flesh::FleshSimulation simulation_;
   long step_ = 0;                  // simulation_ is at frameAtStep(step_)
   std::vector<Vec3d> target_;      // the rig's pose there
   std::vector<Vec3d> offsets_;     // the simulated nodes' offsets from it
   std::vector<Vec3d> previousOffsets_;  // and at the step before (zero at the start)
+  bool previousKnown_ = true;      // false right after a filed state is loaded
+  std::filesystem::path stateDirectory_;  // empty: states are not filed
+  std::vector<uint64_t> stateKeys_;       // per whole frame of the simulation, as far as computed
+  int keyedPoseThrough_ = 0;              // the last whole frame whose pose is in stateKeys_.back()
   std::array<std::pair<int, std::vector<Vec3d>>, 2> posedTargets_{{{INT_MIN, {}}, {INT_MIN, {}}}};
   size_t nextPosedSlot_ = 0;
 };

@@ -6,7 +6,17 @@
 #include <gtest/gtest.h>
 #include <tbb/task_arena.h>
 
+#include <fmt/format.h>
+
 #include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+
+#include "lacrima/flesh/flesh_state_cache.hpp"
+#include "lacrima/scenes/flesh_bench.hpp"
+#include "support/test_directory.hpp"
 
 #include "shot_test_support.hpp"
 
@@ -91,10 +101,31 @@ TEST(FleshShot, AStillFaceIsLeftBitwiseAsTheRigMadeIt) {
   for (int f : {1, 6}) EXPECT_EQ(difference(faceSkin(buildFrame(flesh, f)), faceSkin(buildFrame(rig, f))).moved, 0u) << f;
 }
 
+// Points $XDG_CACHE_HOME (where flesh volumes and states are filed) at a folder of the test's own
+// for its lifetime.
+class ScopedCacheHome {
+ public:
+  explicit ScopedCacheHome(const std::filesystem::path& dir) {
+    if (const char* old = std::getenv("XDG_CACHE_HOME")) old_ = old;
+    setenv("XDG_CACHE_HOME", dir.c_str(), 1);
+  }
+  ~ScopedCacheHome() {
+    if (old_) setenv("XDG_CACHE_HOME", old_->c_str(), 1);
+    else unsetenv("XDG_CACHE_HOME");
+  }
+
+ private:
+  std::optional<std::string> old_;
+};
+
 TEST(FleshShot, AFrameBuiltAloneIsTheFrameBuiltInSequenceWithAnyThreadCount) {
+  // States filed by the sequence are not where the frame built alone looks: it simulates from the start.
+  const std::filesystem::path home = test::testDirectory("flesh_cache", true);
+  const ScopedCacheHome cache(home / "sequence");
   const Shot sequence = nodShot(true, "flesh_sequence.json");
   TriangleMesh inSequence;
   for (int f = 1; f <= 5; ++f) inSequence = faceSkin(buildFrame(sequence, f));
+  const ScopedCacheHome aloneCache(home / "alone");
   const Shot alone = nodShot(true, "flesh_alone.json");
   TriangleMesh single;
   tbb::task_arena oneThread(1);
@@ -104,6 +135,60 @@ TEST(FleshShot, AFrameBuiltAloneIsTheFrameBuiltInSequenceWithAnyThreadCount) {
   const TriangleMesh again = faceSkin(buildFrame(sequence, 3));
   const Shot fresh = nodShot(true, "flesh_fresh.json");
   EXPECT_EQ(difference(again, faceSkin(buildFrame(fresh, 3))).moved, 0u);
+}
+
+// The state filed at a whole frame (frame 1 + index: the nod shot has no shutter) of the shot's
+// one flesh in the cache folder, with its key from the file's name.
+std::pair<std::filesystem::path, uint64_t> filedState(const std::filesystem::path& cacheHome, long index) {
+  const std::string prefix = fmt::format("frame{:05d}-", index);
+  for (const auto& entry : std::filesystem::directory_iterator(cacheHome / "lacrima/flesh/states")) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind(prefix, 0) == 0) return {entry.path(), std::stoull(name.substr(prefix.size(), 16), nullptr, 16)};
+  }
+  ADD_FAILURE() << "no state filed for frame index " << index;
+  return {};
+}
+
+TEST(FleshShot, AFrameBuiltAloneContinuesFromTheStateFiledAtTheFrameBefore) {
+  const std::filesystem::path home = test::testDirectory("flesh_cache", true);
+  const ScopedCacheHome cache(home);
+  const Shot sequence = nodShot(true, "flesh_filed_sequence.json");
+  TriangleMesh inSequence;
+  for (int f = 1; f <= 5; ++f) inSequence = faceSkin(buildFrame(sequence, f));
+  // Frame 5 alone continues from the state of frame 5 itself (index 4): moved by a millimetre
+  // there, the frame built alone moves with it, so it was read; put back, the frame is bitwise the
+  // sequence's.
+  const auto [file, key] = filedState(home, 4);
+  std::optional<flesh::FleshState> state = flesh::readFleshState(file, key, sequence.flesh[0].tetVolume->mesh.nodes.size());
+  ASSERT_TRUE(state);
+  flesh::FleshState moved = *state;
+  for (size_t n = 0; n < moved.positions.size(); ++n)
+    if (!sequence.flesh[0].tetVolume->kinematic[n]) moved.positions[n].x() += 1e-3;
+  flesh::writeFleshState(file, moved, key);
+  EXPECT_GT(difference(inSequence, faceSkin(buildFrame(nodShot(true, "flesh_filed_moved.json"), 5))).largest, 5e-4f);
+  flesh::writeFleshState(file, *state, key);
+  EXPECT_EQ(difference(inSequence, faceSkin(buildFrame(nodShot(true, "flesh_filed_alone.json"), 5))).moved, 0u);
+  // A corrupt state is passed over (the one before it serves).
+  std::ofstream(file, std::ios::binary | std::ios::trunc) << "garbage";
+  EXPECT_EQ(difference(inSequence, faceSkin(buildFrame(nodShot(true, "flesh_filed_corrupt.json"), 5))).moved, 0u);
+}
+
+TEST(FleshShot, TheFleshBenchSimulatesEveryStepAndFilesNoState) {
+  const std::filesystem::path home = test::testDirectory("flesh_cache", true);
+  const ScopedCacheHome cache(home);
+  const Shot shot = nodShot(true, "flesh_bench.json");
+  const FleshBenchResult result = measureFleshFrames(shot, 0.005, 4);
+  ASSERT_EQ(result.frames.size(), 3u);  // frames 2-4, each from the one before
+  EXPECT_EQ(result.frames.front().frame, 2);
+  EXPECT_EQ(result.steps, 3 * shot.flesh[0].substeps);
+  EXPECT_GE(result.newtonIterations, result.steps);
+  EXPECT_GT(result.conjugateGradientIterations, result.newtonIterations);
+  EXPECT_GT(result.tetrahedra, 100u);
+  EXPECT_GT(result.freeNodes, 0u);
+  EXPECT_LT(result.freeNodes, result.nodes);
+  EXPECT_FALSE(std::filesystem::exists(home / "lacrima/flesh/states"));
+  EXPECT_THROW(measureFleshFrames(loadShot(writeShot("flesh_bench_none.json", ictFaceShot("", "", kNod, kFrames))), 0.005, 4),
+               InputError);
 }
 
 TEST(FleshShot, MistakesInTheFleshKeyGetOneClearMessage) {

@@ -59,6 +59,9 @@ struct BenchOptions {
   int width = 320, height = 180, spp = 4, threads = 0, repetitions = 3;
   std::optional<std::string> costFrames;  // the per-frame cost report's frames (none: six from the middle)
   bool frameCostsOnly = false;
+  // --flesh: the shot's simulated flesh per frame at these tetrahedron sizes (cmd_bench_flesh.cpp).
+  bool flesh = false;
+  std::vector<double> tetSizes = {0.005, 0.0028};
   // --quality: time to equal error (cmd_bench_quality.cpp).
   bool quality = false;
   std::optional<int> frame;  // default: the shot's first frame
@@ -97,6 +100,7 @@ int runCheck(const std::string& shotPath);
 int runInfo(const std::string& path);
 int runBench(const BenchOptions& options);
 int runBenchQuality(const BenchOptions& options);
+int runBenchFlesh(const BenchOptions& options);
 int runExport(const ExportOptions& options);
 int runFarmSubmit(const FarmSubmitOptions& options);
 int runFarmStatus(const FarmStatusOptions& options);

@@ -259,7 +259,14 @@ void addBench(CLI::App& app, BenchOptions& o) {
   bench->add_flag("--quality", o.quality,
                   "Time to equal error instead: RMSE at 1, 2, 4 ... --max-spp samples against a converged reference, "
                   "the RMSE-vs-spp slope, and the samples and seconds to reach each --target");
-  bench->add_option("--frame", o.frame, "--quality: the frame (default: the shot's first)");
+  bench->add_flag("--flesh", o.flesh,
+                  "The simulated flesh's milliseconds per frame instead, its volume rebuilt at each --tet-size "
+                  "(simulated from the shot's first frame through --frame, default the shot's last)");
+  bench->add_option("--tet-size", o.tetSizes,
+                    "--flesh: tetrahedron edge bounds in metres (repeatable; default 0.005 0.0028: about 20k and "
+                    "100k tetrahedra on the default shot)")
+      ->check(CLI::PositiveNumber);
+  bench->add_option("--frame", o.frame, "--quality: the frame (default: the shot's first); --flesh: the last frame");
   bench->add_option("--reference-spp", o.referenceSpp,
                     "--quality: samples of the reference (its own noise adds in quadrature: 1024 against 64 spp "
                     "raises the RMSE by 3 %)")
@@ -277,7 +284,8 @@ void addBench(CLI::App& app, BenchOptions& o) {
                     "--quality: adaptive sampling for the measured renders with this threshold, 0 = off (default: "
                     "as the shot says); each count is then the pixels' maximum, and the mean is reported")
       ->check(nonNegativeNumber());
-  bench->callback([&o] { throw CLI::RuntimeError(o.quality ? runBenchQuality(o) : runBench(o)); });
+  bench->callback(
+      [&o] { throw CLI::RuntimeError(o.quality ? runBenchQuality(o) : o.flesh ? runBenchFlesh(o) : runBench(o)); });
 }
 
 

@@ -1,7 +1,9 @@
 #include "lacrima/flesh/flesh_volume_cache.hpp"
 
+#include "binary_file.hpp"
+#include "lacrima/flesh/fnv1a.hpp"
+
 #include <fmt/format.h>
-#include <unistd.h>
 
 #include <cstring>
 #include <fstream>
@@ -12,32 +14,6 @@ namespace lacrima::flesh {
 namespace {
 
 constexpr char kMagic[8] = {'L', 'C', 'F', 'L', 'E', 'S', 'H', '2'};
-
-class Fnv1a {
- public:
-  void add(const void* data, size_t size) {
-    const auto* bytes = static_cast<const unsigned char*>(data);
-    for (size_t i = 0; i < size; ++i) hash_ = (hash_ ^ bytes[i]) * 1099511628211ull;
-  }
-  template <typename T>
-  void add(const T& value) {
-    add(&value, sizeof value);
-  }
-  uint64_t value() const { return hash_; }
-
- private:
-  uint64_t hash_ = 14695981039346656037ull;
-};
-
-template <typename T>
-void put(std::ostream& out, const T& value) {
-  out.write(reinterpret_cast<const char*>(&value), sizeof value);
-}
-
-template <typename T>
-bool get(std::istream& in, T& value) {
-  return bool(in.read(reinterpret_cast<char*>(&value), sizeof value));
-}
 
 }  // namespace
 
@@ -58,10 +34,7 @@ uint64_t fleshVolumeKey(const SkinPatch& patch, const FleshVolumeSettings& setti
 }
 
 void writeFleshVolume(const std::filesystem::path& file, const FleshVolume& volume, uint64_t key) {
-  const std::filesystem::path temporary = file.string() + fmt::format(".{}.tmp", ::getpid());
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    if (!out) throw std::runtime_error(fmt::format("cannot write {}", temporary.string()));
+  writeFileWhole(file, [&](std::ostream& out) {
     out.write(kMagic, sizeof kMagic);
     put(out, key);
     put(out, uint64_t(volume.mesh.nodes.size()));
@@ -75,14 +48,7 @@ void writeFleshVolume(const std::filesystem::path& file, const FleshVolume& volu
       out.write(reinterpret_cast<const char*>(a.barycentric.data()), sizeof(double) * 3);
       out.write(reinterpret_cast<const char*>(a.offset.data()), sizeof(double) * 3);
     }
-    if (!out.flush()) throw std::runtime_error(fmt::format("cannot write {}", temporary.string()));
-  }
-  std::error_code ec;
-  std::filesystem::rename(temporary, file, ec);
-  if (ec) {
-    std::filesystem::remove(temporary, ec);
-    throw std::runtime_error(fmt::format("cannot write {}", file.string()));
-  }
+  });
 }
 
 std::optional<FleshVolume> readFleshVolume(const std::filesystem::path& file, uint64_t key) {

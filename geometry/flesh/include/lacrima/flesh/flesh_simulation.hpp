@@ -10,8 +10,8 @@
 // the tests check). Damping is Rayleigh's, alpha M + beta K, with the mass part acting on the
 // velocity relative to the rig's (vt): flesh carried along by a turning head is not slowed by it.
 // Each Newton step solves J dx = -r with J = M (1 + alpha h) / (theta h^2) +
-// (theta + beta / h) K, by conjugate gradients preconditioned with J's diagonal; K is the
-// positive semi-definite stiffness of FvmElasticity.
+// (theta + beta / h) K, by conjugate gradients preconditioned with J's 3x3 block diagonal; K is
+// the positive semi-definite stiffness of FvmElasticity.
 //
 // Kinematic nodes (the skull's side of the flesh, and the flesh outside the simulated region)
 // are placed on the target each step: the rig moves them, the simulation never does.
@@ -22,6 +22,11 @@
 namespace lacrima::flesh {
 
 enum class FleshIntegrator { BackwardEuler, ImplicitMidpoint };
+
+// Changes whenever a change to the solver or the materials alters the states a simulation reaches:
+// states filed on disk (flesh_state_cache.hpp) are keyed by it, so a new binary does not continue
+// from an old one's states.
+constexpr int kFleshSolverRevision = 2;
 
 struct FleshDynamicsParams {
   double density = 1100.0;         // kg/m^3 (soft tissue, ~1.05-1.1 times water)
