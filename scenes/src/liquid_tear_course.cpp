@@ -128,6 +128,18 @@ LiquidTearRun::LiquidTearRun(const Shot& shot, const ShotLiquidTear& tear)
       courseFrame_(liquidTearCourseFrame(shot, tear, 0.0)),
       simulation_(inputOn(tear, *course_)) {}
 
+LiquidTearRun::LiquidTearRun(const Shot& shot, const ShotLiquidTear& tear, const LiquidTearRun& kept)
+    : shot_(shot),
+      tear_(tear),
+      course_(kept.course_),
+      courseFrame_(kept.courseFrame_),
+      simulation_(kept.simulation_),
+      reroutes_(kept.reroutes_) {}
+
+bool LiquidTearRun::hasPassed(double frame) const {
+  return tearLiquidStepsTo(liquidTearSeconds(shot_, tear_, frame), tear_.input.params.timeStep) < simulation_.steps();
+}
+
 void LiquidTearRun::followCourse(int frame) {
   while (courseFrame_ < frame) {
     ++courseFrame_;
@@ -156,6 +168,19 @@ void LiquidTearRun::advanceTo(double frame) {
 }
 
 TearLiquidState LiquidTearRun::state(double frame) const { return simulation_.state(liquidTearSeconds(shot_, tear_, frame)); }
+
+LiquidTearRun LiquidTearRunKeeper::runFor(const Shot& shot, const ShotLiquidTear& tear, double frame) const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (run_ && tear_ == &tear && !run_->hasPassed(frame)) return LiquidTearRun(shot, tear, *run_);
+  return LiquidTearRun(shot, tear);
+}
+
+void LiquidTearRunKeeper::keep(const ShotLiquidTear& tear, const LiquidTearRun& run) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  tear_ = &tear;
+  run_.reset();
+  run_.emplace(run);
+}
 
 // ---- Queries --------------------------------------------------------------------------------------
 

@@ -119,8 +119,11 @@ LiquidTearShutter simulateLiquidTearShutter(const Shot& shot, const ShotLiquidTe
                                             double shutterClose, const std::vector<TriangleMesh>& openSkin) {
   LiquidTearShutter result;
   if (tear.input.path.empty()) return result;  // not resolved (not from loadShot)
-  LiquidTearRun run(shot, tear);
+  // Continued from the run the frame before kept at its shutter open (bitwise the same state as
+  // simulating from the tear's start: LiquidTearRun), so a sequence simulates each step once.
+  LiquidTearRun run = tear.runKeeper ? tear.runKeeper->runFor(shot, tear, shutterOpen) : LiquidTearRun(shot, tear);
   run.advanceTo(shutterOpen);
+  if (tear.runKeeper) tear.runKeeper->keep(tear, run);
   result.open = run.state(shutterOpen);
   result.openCourse = run.coursePointer();
   result.meniscusOpen = run.simulation().meniscusVolume();

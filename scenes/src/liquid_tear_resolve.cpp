@@ -164,6 +164,7 @@ void resolveTear(const Shot& shot, ShotLiquidTear& tear, std::vector<LiquidTearP
   for (const ShotContactAngleRegion& region : tear.contactAngleRegions)
     regions.push_back({SurfacePoint{region.centerPoint.triangle, region.centerPoint.barycentric}, region.radius});
   tear.courses = liquidTearCourses(shot, tear, tear.sourcePoint, carried, std::move(regions), tear.pinning);
+  tear.runKeeper = std::make_shared<LiquidTearRunKeeper>();
   const std::shared_ptr<const LiquidTearCourse> first = tear.courses->at(tear.courses->firstFrame());
   if (first->path.points.size() < 2 || first->path.length() < kMinLiquidPathLength) {
     problems.push_back({childPointer(tear.pointer, "source"),

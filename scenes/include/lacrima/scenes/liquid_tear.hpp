@@ -5,6 +5,7 @@
 // the moving face.
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <vector>
 
 #include "lacrima/geometry/flow_path_transfer.hpp"
@@ -128,6 +129,10 @@ int liquidTearCourseFrame(const Shot& shot, const ShotLiquidTear& tear, double s
 class LiquidTearRun {
  public:
   LiquidTearRun(const Shot& shot, const ShotLiquidTear& tear);
+  // `kept` (a run of this tear) continued from where it stopped.
+  LiquidTearRun(const Shot& shot, const ShotLiquidTear& tear, const LiquidTearRun& kept);
+  // Whether it has stepped past the (fractional) frame, so cannot be advanced to it.
+  bool hasPassed(double frame) const;
   // Simulates to the (fractional) frame, which may not be earlier than the last one (InputError).
   void advanceTo(double frame);
   TearLiquidState state(double frame) const;  // after advanceTo(frame)
@@ -146,6 +151,23 @@ class LiquidTearRun {
   int courseFrame_ = 0;
   TearLiquidSimulation simulation_;
   int reroutes_ = 0;
+};
+
+// The latest run a process advanced for a tear (ShotLiquidTear::runKeeper), so that the next frame
+// continues it instead of simulating again from the tear's start. A run is a pure function of the
+// time it reached, so a continued run gives bitwise the state a new one would. Thread-safe.
+class LiquidTearRunKeeper {
+ public:
+  // A run to advance to `frame`: the kept run continued when it was kept for this tear (the same
+  // object: a copy of the shot has its own runs) and has not passed the frame, else a new run.
+  LiquidTearRun runFor(const Shot& shot, const ShotLiquidTear& tear, double frame) const;
+  // Keeps a copy of `run`, of `tear`, in place of the kept one.
+  void keep(const ShotLiquidTear& tear, const LiquidTearRun& run);
+
+ private:
+  mutable std::mutex mutex_;
+  const ShotLiquidTear* tear_ = nullptr;
+  std::optional<LiquidTearRun> run_;
 };
 
 // The tear's liquid state at a (fractional) frame, simulated from its simulationStartFrame: beads,

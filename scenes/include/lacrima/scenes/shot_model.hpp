@@ -227,7 +227,8 @@ struct ShotSheddingTear {
   double secondsAt(double frame, double fps) const { return (frame - startFrame) / fps; }
 };
 
-class LiquidTearCourses;  // liquid_tear.hpp
+class LiquidTearCourses;    // liquid_tear.hpp
+class LiquidTearRunKeeper;  // liquid_tear.hpp
 
 // A liquid tear (issue 5; docs/shot-format.md "Liquid tears"): tear fluid welling at a skin point
 // and running down the flow path from it as beads that stick, slide, leave a drying film, hang and
@@ -294,6 +295,9 @@ struct ShotLiquidTear {
   // The flow path's courses as the face moves, one per integer frame from the simulation's start
   // (liquid_tear.hpp); set by loadShot. `path` and `input.path` are its course at frameStart.
   std::shared_ptr<const LiquidTearCourses> courses;
+  // The run the last frame built advanced (liquid_tear.hpp), for the next frame to continue; set
+  // by loadShot.
+  std::shared_ptr<LiquidTearRunKeeper> runKeeper;
 };
 
 // Animated skin detail (seed 004 section 3; docs/shot-format.md "details"): a sum of basic
