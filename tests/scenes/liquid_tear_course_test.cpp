@@ -170,6 +170,31 @@ TEST(LiquidTearCourse, AFrameAloneEqualsTheSameFrameInASequence) {
   EXPECT_EQ(once.course().path.positions, stepwise.course().path.positions);
 }
 
+TEST(LiquidTearCourse, AKeptRunIsContinuedOnlyForItsOwnTearAndNotBackwards) {
+  const Shot shot = shotAt24Fps();
+  const auto sheet = std::make_shared<const TurningSheet>(1.5);
+  const ShotLiquidTear tear = tearOn(sheet, 20.0), other = tearOn(sheet, 20.0);
+  LiquidTearRunKeeper keeper;
+  LiquidTearRun first = keeper.runFor(shot, tear, 20.0);
+  EXPECT_EQ(first.simulation().steps(), 0);  // nothing kept yet
+  first.advanceTo(20.0);
+  keeper.keep(tear, first);
+  LiquidTearRun continued = keeper.runFor(shot, tear, 30.0);
+  EXPECT_EQ(continued.simulation().steps(), first.simulation().steps());
+  EXPECT_EQ(keeper.runFor(shot, other, 30.0).simulation().steps(), 0) << "another tear's run";
+  EXPECT_EQ(keeper.runFor(shot, tear, 10.0).simulation().steps(), 0) << "the kept run is past frame 10";
+  // Continued, the run reaches the state of a run from the start.
+  continued.advanceTo(40.0);
+  LiquidTearRun fresh(shot, tear);
+  fresh.advanceTo(40.0);
+  ASSERT_FALSE(fresh.simulation().beads().empty());
+  ASSERT_EQ(continued.simulation().beads().size(), fresh.simulation().beads().size());
+  for (size_t i = 0; i < fresh.simulation().beads().size(); ++i)
+    EXPECT_EQ(continued.simulation().beads()[i].arcLength, fresh.simulation().beads()[i].arcLength) << i;
+  EXPECT_EQ(continued.simulation().cellFilmVolume(), fresh.simulation().cellFilmVolume());
+  EXPECT_EQ(continued.reroutes(), fresh.reroutes());
+}
+
 TEST(LiquidTearCourse, TheVolumeIsConservedAcrossTheCourseChanges) {
   const Shot shot = shotAt24Fps();
   const ShotLiquidTear tear = tearOn(std::make_shared<const TurningSheet>(2.0), 20.0);
