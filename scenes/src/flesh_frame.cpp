@@ -84,7 +84,8 @@ uint64_t baseStateKey(const ShotFlesh& flesh, const flesh::SkinPatch& patch, dou
   h.add(flesh.youngsModulus);
   h.add(flesh.poissonRatio);
   const flesh::FleshDynamicsParams& d = flesh.dynamics;
-  for (double value : {d.density, d.massDamping, d.stiffnessDamping, d.newtonTolerance, d.cgTolerance}) h.add(value);
+  for (double value : {d.density, d.massDamping, d.stiffnessDamping, d.newtonTolerance, d.cgTolerance, d.positionTolerance})
+    h.add(value);
   for (int value : {int(d.integrator), d.newtonIterations, d.cgIterations, flesh.substeps}) h.add(value);
   h.add(fps);
   h.add(startFrame);

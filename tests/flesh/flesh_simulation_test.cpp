@@ -228,6 +228,32 @@ TEST(FleshSimulation, NewtonConvergesInOneStepWhileTheRigTurnsTheFlesh) {
   EXPECT_LE(newtonSteps, 36);
 }
 
+TEST(FleshSimulation, APositionToleranceSolvesToWhatCanBeSeenInFewerIterations) {
+  // The jerked block of the test above, 24 steps: solved to relative tolerances alone, and also
+  // stopping once no node would move by more than 0.1 um. The positions agree to about a micrometre
+  // (the jerk moves the top by millimetres); the second takes far fewer iterations.
+  const RiggedBlock block;
+  const auto run = [&](double positionTolerance, std::vector<Vec3d>& positions) {
+    FleshDynamicsParams params;
+    params.massDamping = 4.0;
+    params.newtonTolerance = 1e-2;
+    params.cgTolerance = 1e-3;
+    params.positionTolerance = positionTolerance;
+    FleshSimulation sim(block.mesh, FleshMaterial::FixedCorotated, kLame, params, block.base);
+    int iterations = 0;
+    for (int s = 0; s < 24; ++s)
+      iterations += sim.step(1.0 / 96, block.shifted(Vec3d(0.004, 0.0, 0.0)), zeros(block.mesh.nodes.size())).cgIterations;
+    positions = sim.positions();
+    return iterations;
+  };
+  std::vector<Vec3d> relative, visible;
+  const int relativeIterations = run(0.0, relative), visibleIterations = run(1e-7, visible);
+  EXPECT_LT(largestOffset(relative, visible), 2e-6);
+  EXPECT_LT(visibleIterations, relativeIterations * 3 / 4);
+  std::printf("[ solver ] conjugate-gradient iterations over 24 steps: %d relative, %d with the position tolerance; "
+              "largest difference %.2g m\n", relativeIterations, visibleIterations, largestOffset(relative, visible));
+}
+
 TEST(FleshSimulation, BadArgumentsAreRefused) {
   const RiggedBlock block;
   FleshSimulation sim = block.simulation(0.0, 0.0);

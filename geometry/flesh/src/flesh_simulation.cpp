@@ -1,5 +1,6 @@
 #include "lacrima/flesh/flesh_simulation.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -11,6 +12,12 @@ double dot(const std::vector<Vec3d>& a, const std::vector<Vec3d>& b) {
   double sum = 0.0;
   for (size_t i = 0; i < a.size(); ++i) sum += a[i].dot(b[i]);
   return sum;
+}
+
+double largestNorm(const std::vector<Vec3d>& values) {
+  double largest = 0.0;
+  for (const Vec3d& value : values) largest = std::max(largest, value.squaredNorm());
+  return std::sqrt(largest);
 }
 
 void zero(std::vector<Vec3d>& values) {
@@ -94,7 +101,8 @@ int FleshSimulation::solveNewtonStep(double h, const std::vector<Vec3d>& r, std:
   double rz = dot(residual, z);
   const double stop = params_.cgTolerance * params_.cgTolerance * dot(residual, residual);
   int iteration = 0;
-  for (; iteration < params_.cgIterations && dot(residual, residual) > stop && rz > 0.0; ++iteration) {
+  const auto closeEnough = [&] { return params_.positionTolerance > 0.0 && largestNorm(z) <= params_.positionTolerance; };
+  for (; iteration < params_.cgIterations && dot(residual, residual) > stop && rz > 0.0 && !closeEnough(); ++iteration) {
     applyJacobian(h, p, jp);
     const double curvature = dot(p, jp);
     if (!(curvature > 0.0)) break;
@@ -136,6 +144,7 @@ FleshStepReport FleshSimulation::step(double h, const std::vector<Vec3d>& target
     report.cgIterations += solveNewtonStep(h, r, dx);
     for (size_t i = 0; i < x.size(); ++i) x[i] += dx[i];
     report.newtonIterations = k + 1;
+    if (params_.positionTolerance > 0.0 && largestNorm(dx) <= params_.positionTolerance) break;
   }
   v_ = velocityAt(h, x);
   x_ = std::move(x);

@@ -37,6 +37,11 @@ struct FleshDynamicsParams {
   double newtonTolerance = 1e-6;   // of the residual, relative to the first Newton step's
   int cgIterations = 300;
   double cgTolerance = 1e-8;       // relative residual of each linear solve
+  // Metres; 0: off. A linear solve also stops when its preconditioned residual (about the position
+  // change still to come) is under this at every node, and Newton stops after an update that moved
+  // no node further: a step the rig barely drives is solved to what can be seen, not to a ratio of
+  // its own small residual.
+  double positionTolerance = 0.0;
 };
 
 struct FleshStepReport {
