@@ -51,9 +51,10 @@ Mat3d cauchyStress(const Mat3d& p, const Mat3d& f);
 //   eigenvalues clamped to zero (exact while S is positive semi-definite, i.e. in tension);
 // - fixed corotated: dP = 2 mu (dF - dR) + lambda (cof(F):dF) cof(F). The rotation's differential
 //   in F's singular frame (F = U Sigma V^T, dF^ = U^T dF V) turns each pair's skew part
-//   b = (dF^_ij - dF^_ji) / 2 by 2 b / (s_i + s_j) (Twigg & Kacic-Alesic 2010; Stomakhin et al.
-//   2012, section 4.2), so 2 mu (dF - dR) keeps (1 - 2 / (s_i + s_j)) of it, clamped at zero where
-//   compression makes that negative (Teran et al. 2005's definiteness fix). The cofactor's own
+//   b = (dF^_ij - dF^_ji) / 2 by 2 b / (s_i + s_j) (the polar decomposition's differential, as in
+//   Twigg & Kacic-Alesic 2010), so 2 mu (dF - dR) keeps (1 - 2 / (s_i + s_j)) of it, clamped at
+//   zero where compression makes that negative (in the manner of Teran, Sifakis, Irving & Fedkiw
+//   2005's definiteness fix). The cofactor's own
 //   differential, lambda (J - 1) dcof, is left out: indefinite, and small wherever the flesh keeps
 //   its volume (J near 1). Exact at rest and under pure rotation.
 // What the differential needs of F, computed once per Newton iterate and tetrahedron (the
