@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 
 #include <chrono>
-#include <cmath>
 
 #include "flesh_frame.hpp"
 #include "lacrima/flesh/flesh_volume_cache.hpp"
@@ -22,7 +21,7 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 FleshBenchResult measureFleshFrames(const Shot& shot, double tetSize, int lastFrame) {
   if (shot.flesh.empty() || !shot.flesh.front().run) throw InputError("bench --flesh: the shot simulates no flesh");
   ShotFlesh flesh = shot.flesh.front();
-  flesh.volume.maxTetVolume = std::pow(tetSize, 3) / (6.0 * std::sqrt(2.0));  // as the shot's "tetSize"
+  flesh.volume.maxTetVolume = flesh::regularTetVolume(tetSize);  // as the shot's "tetSize"
   FleshBenchResult result;
   result.tetSize = tetSize;
   const auto volumeStart = std::chrono::steady_clock::now();

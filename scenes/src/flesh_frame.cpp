@@ -5,13 +5,13 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 
 #include "asset_pose.hpp"
 #include "lacrima/flesh/flesh_state_cache.hpp"
 #include "lacrima/flesh/flesh_volume_cache.hpp"
 #include "lacrima/flesh/fnv1a.hpp"
 #include "lacrima/geometry/region_refinement.hpp"
+#include "lacrima/geometry/user_cache.hpp"
 #include "surface_anchor.hpp"
 
 namespace lacrima::shotfile {
@@ -118,11 +118,7 @@ std::optional<FleshProblem> resolveOne(Shot& shot, ShotFlesh& flesh) {
 
 }  // namespace
 
-fs::path fleshCacheDirectory() {
-  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) return fs::path(xdg) / "lacrima/flesh";
-  if (const char* home = std::getenv("HOME"); home && *home) return fs::path(home) / ".cache/lacrima/flesh";
-  return {};
-}
+fs::path fleshCacheDirectory() { return userCacheDirectory("flesh"); }
 
 std::vector<FleshProblem> resolveFleshVolumes(Shot& shot) {
   std::vector<FleshProblem> problems;

@@ -1417,7 +1417,7 @@ class ShotReader {
     if (asset) readFleshRegions(o, *asset, flesh);
     if (auto x = o.number("depth", Range::above(0))) flesh.volume.depth = *x;
     // The largest tetrahedron's edge: TetGen's volume bound is that of a regular tetrahedron.
-    if (auto x = o.number("tetSize", Range::above(0))) flesh.volume.maxTetVolume = std::pow(*x, 3) / (6.0 * std::sqrt(2.0));
+    if (auto x = o.number("tetSize", Range::above(0))) flesh.volume.maxTetVolume = flesh::regularTetVolume(*x);
     if (auto x = o.number("youngsModulus", Range::above(0))) flesh.youngsModulus = *x;
     if (auto x = o.number("poisson", Range::open(-1, 0.5))) flesh.poissonRatio = *x;
     if (auto x = o.number("density", Range::above(0))) flesh.dynamics.density = *x;

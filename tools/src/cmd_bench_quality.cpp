@@ -15,6 +15,7 @@
 #include <unistd.h>
 
 #include "commands.hpp"
+#include "lacrima/geometry/user_cache.hpp"
 #include "lacrima/renderer/render.hpp"
 #include "lacrima/scenes/shot.hpp"
 #include "progress.hpp"
@@ -40,8 +41,7 @@ uint64_t fileHash(const std::string& path) {
 }
 
 fs::path defaultCacheDirectory() {
-  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) return fs::path(xdg) / "lacrima/quality";
-  if (const char* home = std::getenv("HOME"); home && *home) return fs::path(home) / ".cache/lacrima/quality";
+  if (fs::path cache = userCacheDirectory("quality"); !cache.empty()) return cache;
   return fs::temp_directory_path() / "lacrima-quality";
 }
 

@@ -10,6 +10,7 @@
 // pose of the flesh (the simulation's target), and the skin's vertices are the first nodes.
 #include <array>
 #include <stdexcept>
+#include <cmath>
 #include <vector>
 
 #include "lacrima/flesh/tet_mesh.hpp"
@@ -35,6 +36,9 @@ struct FleshVolumeSettings {
   double maxTetVolume = 4e-9;       // m^3 (a regular tetrahedron of 3.3 mm edges)
   double radiusEdgeRatio = 1.5;     // TetGen's -q bound (>= ~1.1; smaller is better shaped)
 };
+
+// The volume of a regular tetrahedron of this edge: a shot's "tetSize" as TetGen's volume bound.
+inline double regularTetVolume(double edge) { return edge * edge * edge / (6.0 * std::sqrt(2.0)); }
 
 // Where a node sits relative to the skin: a triangle of the patch, a point of it (barycentric)
 // and the node's offset from that point in the triangle's frame (edge, in-plane, normal).
