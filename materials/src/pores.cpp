@@ -69,7 +69,10 @@ PoreHeight poreHeight(const Vec3& p, float scale, float depth) {
 
 Vec3 perturbNormalByPores(const Vec3& p, const Vec3& ns, const Vec3& ng, float scale, float depth) {
   if (depth <= 0.0f) return ns;
-  const Vec3 g = poreHeight(p, scale, depth).gradient;
+  return tiltNormalBySlope(poreHeight(p, scale, depth).gradient, ns, ng);
+}
+
+Vec3 tiltNormalBySlope(const Vec3& g, const Vec3& ns, const Vec3& ng) {
   Vec3 slope = g - g.dot(ns) * ns;  // tangential part: the height field lives over ns's tangent plane
   const float slopeLength = slope.norm();
   if (slopeLength > kMaxPoreSlope) slope *= kMaxPoreSlope / slopeLength;

@@ -6,6 +6,7 @@
 #include "lacrima/materials/fresnel.hpp"
 #include "lacrima/materials/pores.hpp"
 #include "lacrima/materials/sampling.hpp"
+#include "lacrima/materials/skin_relief.hpp"
 
 namespace lacrima {
 
@@ -47,7 +48,7 @@ float fresnelHemisphericalReflectance(float eta) {
   return cachedValue[entry];
 }
 
-SkinBsdf::SkinBsdf(const SkinParams& params)
+SkinBsdf::SkinBsdf(const SkinParams& params, std::optional<Vec3> reliefGradientHere)
     : albedo_(params.albedo.max(0.0f).min(kMaxSkinAlbedo)),  // energy margin, see skin.hpp
       ior_(params.ior),
       sharp_(roughnessToAlpha(params.roughness)),
@@ -56,10 +57,20 @@ SkinBsdf::SkinBsdf(const SkinParams& params)
       diffuseNorm_(kInvPi / (1.0f - fresnelHemisphericalReflectance(params.ior))),
       poreScale_(params.poreScale),
       poreDepth_(params.poreDepth > 0.0f && params.poreScale > 0.0f ? params.poreDepth : 0.0f),
+      furrowScale_(params.furrowScale),
+      furrowDepth_(params.furrowDepth > 0.0f && params.furrowScale > 0.0f ? params.furrowDepth : 0.0f),
+      reliefGradientHere_(reliefGradientHere),
       hasDiffuseLobe_(!params.subsurface) {}
 
 Vec3 SkinBsdf::perturbShadingNormal(const Vec3& position, const Vec3& ns, const Vec3& ng) const {
-  return perturbNormalByPores(position, ns, ng, poreScale_, poreDepth_);
+  if (poreDepth_ == 0.0f && furrowDepth_ == 0.0f) return ns;
+  if (reliefGradientHere_) return tiltNormalBySlope(*reliefGradientHere_, ns, ng);
+  SkinParams relief;
+  relief.poreScale = poreScale_;
+  relief.poreDepth = poreDepth_;
+  relief.furrowScale = furrowScale_;
+  relief.furrowDepth = furrowDepth_;
+  return tiltNormalBySlope(skinReliefAt(relief, position).gradient, ns, ng);
 }
 
 float SkinBsdf::specularF(const Vec3& wo, const Vec3& wi) const {

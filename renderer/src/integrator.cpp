@@ -8,6 +8,7 @@
 
 #include "lacrima/materials/diffuse.hpp"
 #include "lacrima/materials/fresnel.hpp"
+#include "lacrima/materials/skin_relief.hpp"
 #include "lacrima/materials/wet_skin.hpp"
 #include "ray_offset.hpp"
 #include "sample_dimensions.hpp"
@@ -59,6 +60,19 @@ const Bsdf* withTextures(const Bsdf* bsdf, const SurfaceTextures& textures, cons
   }
   if (const auto* diffuse = std::get_if<DiffuseParams>(&params)) return &storage.bsdf.emplace<DiffuseBsdf>(*diffuse);
   return bsdf;
+}
+
+// Skin whose relief darkens its hollows (SkinParams::cavity, skin_relief.hpp): the hit shades with
+// the albedo times the cavity factor there, a BSDF built in `storage` (textured parameters kept)
+// that also carries the relief's gradient, so the relief is evaluated once per hit.
+const Bsdf* withSkinCavity(const Bsdf* bsdf, const Material& material, const Vec3& position, TexturedHit& storage) {
+  const auto* skin = std::get_if<SkinParams>(&material.params);
+  if (!skin || !(skin->cavity > 0.0f)) return bsdf;
+  SkinParams params = storage.skin ? *storage.skin : *skin;
+  const SkinRelief relief = skinReliefAt(params, position);
+  params.albedo *= cavityAlbedoFactor(params, relief);
+  storage.skin = params;
+  return &storage.bsdf.emplace<SkinBsdf>(params, relief.gradient);
 }
 
 // The per-type bounce limits (RenderSettings::bounces): how many times a path has scattered of
@@ -372,6 +386,7 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
       v.bsdf = interfaceBsdf(hit.materialId, classifyInterface(media, hit.materialId, frontFacing).otherMaterial);
     TexturedHit textured;  // v.bsdf may point here for this bounce
     v.bsdf = withTextures(v.bsdf, textures_, material, hit, pathLength * pixelSpread_, textured);
+    v.bsdf = withSkinCavity(v.bsdf, material, hit.position, textured);
     std::optional<WetSkinBsdf> wetSkin;  // v.bsdf may point here for this bounce
     v.bsdf = underSkinFilm(v.bsdf, material, inDielectric ? 0.0f : hit.wetness, wetSkin);
     if (!v.bsdf->isTransmissive()) {

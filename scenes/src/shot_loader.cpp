@@ -431,8 +431,8 @@ class ShotReader {
       if (auto x = o.color("emission", Range::atLeast(0))) m.emission = *x;
     } else if (*type == "skin") {
       ObjectReader o(c_, v, pointer,
-                     {"type", "albedo", "roughness", "ior", "roughness2", "lobeMix", "poreScale", "poreDepth", "subsurface",
-                      "emission", "textures"});
+                     {"type", "albedo", "roughness", "ior", "roughness2", "lobeMix", "poreScale", "poreDepth", "furrowScale",
+                      "furrowDepth", "cavity", "subsurface", "emission", "textures"});
       SkinParams p;
       readTextures(o, {"albedo", "roughness", "normal", "meanFreePath"}, m.textures);
       if (m.textures.albedo) p.albedo = Color::Ones();  // with a map the constant is a factor, 1 unless given
@@ -445,6 +445,9 @@ class ShotReader {
         o.error("roughness2", "'roughness2' needs 'lobeMix' (the weight of the second lobe, in [0, 1])", Anchor::Key);
       if (auto x = o.number("poreScale", Range::above(0))) p.poreScale = float(*x);
       if (auto x = o.number("poreDepth", Range::atLeast(0))) p.poreDepth = float(*x);
+      if (auto x = o.number("furrowScale", Range::above(0))) p.furrowScale = float(*x);
+      if (auto x = o.number("furrowDepth", Range::atLeast(0))) p.furrowDepth = float(*x);
+      if (auto x = o.number("cavity", unit)) p.cavity = float(*x);
       if (const Json* sss = o.find("subsurface")) {  // random-walk subsurface scattering (subsurface.hpp)
         ObjectReader so(c_, *sss, o.at("subsurface"), {"meanFreePath", "method"});
         SubsurfaceParams subsurface;

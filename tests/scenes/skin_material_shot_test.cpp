@@ -42,6 +42,18 @@ TEST(SkinMaterialShot, ReadsTheSecondLobeAndThePores) {
   EXPECT_EQ(p.poreDepth, 0.00003f);
 }
 
+TEST(SkinMaterialShot, ReadsTheFurrowsAndTheCavity) {
+  const Shot shot = loadShot(test::writeShot(
+      "skin_relief.json", shotWithSkin(R"(, "furrowScale": 0.0005, "furrowDepth": 0.000012, "cavity": 0.5)")));
+  const SkinParams& p = skinOf(shot);
+  EXPECT_EQ(p.furrowScale, 0.0005f);
+  EXPECT_EQ(p.furrowDepth, 0.000012f);
+  EXPECT_EQ(p.cavity, 0.5f);
+  const SkinParams& defaults = skinOf(loadShot(test::writeShot("skin_relief_defaults.json", shotWithSkin(""))));
+  EXPECT_EQ(defaults.furrowDepth, 0.0f);
+  EXPECT_EQ(defaults.cavity, 0.0f);
+}
+
 TEST(SkinMaterialShot, SecondRoughnessWithoutMixIsAnError) {
   test::expectSingleError("skin_no_mix.json", shotWithSkin(R"(, "roughness2": 0.6)"),
                           "/materials/skin/roughness2: 'roughness2' needs 'lobeMix' (the weight of the second "
@@ -55,6 +67,10 @@ TEST(SkinMaterialShot, OutOfRangeValuesNameTheirKey) {
                           "/materials/skin/poreScale: expected a number > 0, found 0");
   test::expectSingleError("skin_bad_depth.json", shotWithSkin(R"(, "poreDepth": -0.001)"),
                           "/materials/skin/poreDepth: expected a number >= 0, found -0.001");
+  test::expectSingleError("skin_bad_furrow_scale.json", shotWithSkin(R"(, "furrowScale": -1)"),
+                          "/materials/skin/furrowScale: expected a number > 0, found -1");
+  test::expectSingleError("skin_bad_cavity.json", shotWithSkin(R"(, "cavity": 2)"),
+                          "/materials/skin/cavity: expected a number in [0, 1], found 2");
 }
 
 TEST(SkinMaterialShot, SubsurfaceIsOffByDefaultAndReadsItsMeanFreePath) {
@@ -98,6 +114,8 @@ TEST(SkinMaterialShot, DocExampleLoads) {
   const SkinParams& p = skinOf(shot);
   EXPECT_GT(p.lobeMix, 0.0f);
   EXPECT_GT(p.poreDepth, 0.0f);
+  EXPECT_GT(p.furrowDepth, 0.0f);
+  EXPECT_GT(p.cavity, 0.0f);
   ASSERT_TRUE(p.subsurface);
   EXPECT_EQ(p.subsurface->method, SubsurfaceMethod::Diffusion);
 }

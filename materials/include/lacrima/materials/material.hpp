@@ -39,8 +39,9 @@ struct SubsurfaceParams {
 };
 
 // Skin: Lambertian base under one or two GGX specular lobes whose strength follows dielectric
-// Fresnel, optionally with procedural pores that tilt the shading normal (see skin.hpp, pores.hpp).
-// The defaults (lobeMix 0, poreDepth 0) are skin v1: one lobe, no pores.
+// Fresnel, optionally with procedural pores and furrows that tilt the shading normal and darken
+// the albedo in their hollows (see skin.hpp, skin_relief.hpp). The defaults (lobeMix 0, poreDepth 0,
+// furrowDepth 0, cavity 0) are skin v1: one lobe, a smooth surface.
 struct SkinParams {
   Color albedo = Color(0.62f, 0.43f, 0.35f);
   float roughness = 0.35f;   // sharper lobe, GGX alpha = roughness^2
@@ -49,6 +50,9 @@ struct SkinParams {
   float lobeMix = 0.0f;      // weight of the second lobe in [0, 1]; 0 = single lobe (skin v1)
   float poreScale = 3e-4f;   // metres between neighbouring pores (cell size of the pore lattice)
   float poreDepth = 0.0f;    // metres deep; 0 = no pores
+  float furrowScale = 6e-4f;  // metres across a plateau of the furrow network (furrows.hpp)
+  float furrowDepth = 0.0f;   // metres deep; 0 = no furrows
+  float cavity = 0.0f;        // in [0, 1]: how far the pores' and furrows' walls darken the albedo (skin_relief.hpp)
   // Set: the Lambertian base is replaced by a random walk below the surface (subsurface.hpp).
   std::optional<SubsurfaceParams> subsurface;
 };

@@ -37,4 +37,9 @@ PoreHeight poreHeight(const Vec3& p, float scale, float depth);
 // at p; ns itself when depth is 0 or the tilted normal is too close to the geometric horizon.
 Vec3 perturbNormalByPores(const Vec3& p, const Vec3& ns, const Vec3& ng, float scale, float depth);
 
+// Shading normal ns tilted by a height field's gradient (bump mapping as above: the tangential
+// slope clamped to kMaxPoreSlope, ns kept where the result would come within
+// kMinPoreCosToGeometric of the geometric horizon). Shared by every relief of the skin.
+Vec3 tiltNormalBySlope(const Vec3& gradient, const Vec3& ns, const Vec3& ng);
+
 }  // namespace lacrima

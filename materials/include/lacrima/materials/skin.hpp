@@ -8,7 +8,10 @@
 //   roughness2 - broader lobe, GGX alpha2 = roughness2^2 (used only when lobeMix > 0);
 //   lobeMix    - weight w of the broader lobe in [0, 1]; 0 is skin v1 (one lobe, bitwise);
 //   ior        - refractive index of the surface layer; drives the specular Fresnel F;
-//   poreScale, poreDepth - the pore field of pores.hpp (poreDepth 0: no pores, skin v1).
+//   poreScale, poreDepth - the pore field of pores.hpp (poreDepth 0: no pores, skin v1);
+//   furrowScale, furrowDepth - the furrow network of furrows.hpp (furrowDepth 0: none);
+//   cavity     - how far the relief's hollows darken the albedo; applied by the renderer per hit,
+//                which builds the BSDF with the darkened albedo (skin_relief.hpp).
 //
 // f(wo, wi) = f_spec + f_diff, both zero unless wo and wi are above the surface:
 //   f_spec = [(1 - w) D1(wm) G2_1(wo, wi) + w D2(wm) G2_2(wo, wi)] F(wo.wm) / (4 cos_o cos_i),
@@ -58,7 +61,10 @@ float fresnelHemisphericalReflectance(float eta);
 
 class SkinBsdf final : public Bsdf {
  public:
-  explicit SkinBsdf(const SkinParams& params);
+  // reliefGradientHere: the relief's gradient at the hit this BSDF is built for, when the caller
+  // has it already (skin_relief.hpp); perturbShadingNormal then uses it instead of evaluating the
+  // relief at the position it is given.
+  explicit SkinBsdf(const SkinParams& params, std::optional<Vec3> reliefGradientHere = std::nullopt);
 
   Color eval(const Vec3& wo, const Vec3& wi) const override;
   float pdf(const Vec3& wo, const Vec3& wi) const override;
@@ -66,7 +72,8 @@ class SkinBsdf final : public Bsdf {
   Color albedo() const override { return albedo_; }  // clamped base albedo
   float ior() const { return ior_; }                  // index of the surface layer
 
-  // Pores: ns tilted by the pore field at the world position (pores.hpp); ns when poreDepth is 0.
+  // Pores and furrows: ns tilted by the relief at the world position (skin_relief.hpp); ns when
+  // poreDepth and furrowDepth are 0.
   Vec3 perturbShadingNormal(const Vec3& position, const Vec3& ns, const Vec3& ng) const override;
 
   // Probability of sampling the specular lobes (both together) for this wo (exposed for tests).
@@ -84,6 +91,9 @@ class SkinBsdf final : public Bsdf {
   float diffuseNorm_;      // 1 / (pi (1 - Fbar))
   float poreScale_;
   float poreDepth_;
+  float furrowScale_;
+  float furrowDepth_;
+  std::optional<Vec3> reliefGradientHere_;
   bool hasDiffuseLobe_;    // false with subsurface: the renderer's random walk replaces the base
 };
 
