@@ -1,0 +1,232 @@
+// Divergence-free SPH; see dfsph.hpp for the method and its sources.
+#include "lacrima/sph/dfsph.hpp"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace lacrima::sph {
+
+namespace {
+
+constexpr double kSupportPerRadius = 4.0;  // kernel support = 4 particle radii = 2 spacings
+// Particles with fewer neighbours (fluid and boundary) are at the free surface, where the density
+// deficit makes the divergence estimate meaningless; they are left out of the divergence solve
+// (as Bender & Koschier's reference implementation, SPlisHSPlasH, does in 3D).
+constexpr size_t kMinNeighboursForDivergence = 20;
+
+template <typename Body>
+void forEachParticle(size_t count, const Body& body) {
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, count, 256), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t i = r.begin(); i != r.end(); ++i) body(i);
+  });
+}
+
+// The mass that puts a particle inside the initial lattice (spacing 2 r) at the rest density:
+// rho0 / sum_lattice W (the lattice sum of the kernel is close to, not exactly, 1 / (2 r)^3).
+double latticeMass(const CubicSplineKernel& kernel, double spacing, double restDensity) {
+  double sum = 0.0;
+  for (int i = -2; i <= 2; ++i)
+    for (int j = -2; j <= 2; ++j)
+      for (int k = -2; k <= 2; ++k) sum += kernel.value(spacing * Vec3d(i, j, k));
+  return restDensity / sum;
+}
+
+int axisCount(double extent, double spacing) { return int(std::floor(extent / spacing + 1e-9)); }
+
+}  // namespace
+
+BoundaryParticles boundaryFromSamples(std::vector<Vec3d> samples, double particleRadius) {
+  const CubicSplineKernel kernel(kSupportPerRadius * particleRadius);
+  NeighbourGrid grid(kernel.supportRadius());
+  grid.build(samples);
+  BoundaryParticles boundary;
+  boundary.volumes.resize(samples.size());
+  forEachParticle(samples.size(), [&](size_t b) {
+    std::vector<uint32_t> near;
+    grid.pointsNear(samples[b], near);
+    double sum = 0.0;
+    for (uint32_t k : near) sum += kernel.value(samples[b] - samples[k]);
+    boundary.volumes[b] = 1.0 / sum;  // sum >= W(0) > 0: the sample is its own neighbour
+  });
+  boundary.positions = std::move(samples);
+  return boundary;
+}
+
+std::vector<Vec3d> latticeBlock(const Vec3d& lo, const Vec3d& hi, double spacing) {
+  std::vector<Vec3d> points;
+  const Vec3d extent = hi - lo;
+  const int nx = axisCount(extent.x(), spacing), ny = axisCount(extent.y(), spacing), nz = axisCount(extent.z(), spacing);
+  for (int i = 0; i < nx; ++i)
+    for (int j = 0; j < ny; ++j)
+      for (int k = 0; k < nz; ++k) points.push_back(lo + spacing * Vec3d(i + 0.5, j + 0.5, k + 0.5));
+  return points;
+}
+
+std::vector<Vec3d> openBoxWalls(const Vec3d& lo, const Vec3d& hi, double spacing, int layers) {
+  std::vector<Vec3d> points;
+  const Vec3d extent = hi - lo;
+  const int nx = axisCount(extent.x(), spacing), ny = axisCount(extent.y(), spacing), nz = axisCount(extent.z(), spacing);
+  for (int i = -layers; i < nx + layers; ++i)
+    for (int j = -layers; j < ny; ++j)
+      for (int k = -layers; k < nz + layers; ++k) {
+        const bool inside = i >= 0 && i < nx && j >= 0 && k >= 0 && k < nz;
+        if (!inside) points.push_back(lo + spacing * Vec3d(i + 0.5, j + 0.5, k + 0.5));
+      }
+  return points;
+}
+
+DfsphSolver::DfsphSolver(const FluidParams& params, std::vector<Vec3d> fluid, BoundaryParticles boundary)
+    : params_(params),
+      kernel_(kSupportPerRadius * params.particleRadius),
+      mass_(latticeMass(kernel_, 2.0 * params.particleRadius, params.restDensity)),
+      x_(std::move(fluid)),
+      v_(x_.size(), Vec3d::Zero()),
+      rho_(x_.size(), params.restDensity),
+      alpha_(x_.size(), 0.0),
+      pressureKappa_(x_.size(), 0.0),
+      boundary_(std::move(boundary)),
+      fluidGrid_(kernel_.supportRadius()),
+      boundaryGrid_(kernel_.supportRadius()) {
+  boundaryPsi_.resize(boundary_.positions.size());
+  for (size_t b = 0; b < boundaryPsi_.size(); ++b) boundaryPsi_[b] = params_.restDensity * boundary_.volumes[b];
+  boundaryGrid_.build(boundary_.positions);
+  updateNeighbours();
+  computeDensitiesAndFactors();
+}
+
+void DfsphSolver::updateNeighbours() {
+  fluidGrid_.build(x_);
+  fluidNeighbours_ = neighbourLists(fluidGrid_, x_);
+  boundaryNeighbours_ = neighbourLists(boundaryGrid_, x_);
+}
+
+void DfsphSolver::computeDensitiesAndFactors() {
+  forEachParticle(x_.size(), [&](size_t i) {
+    double density = 0.0;
+    Vec3d gradientSum = Vec3d::Zero();
+    double squaredSum = 0.0;
+    for (uint32_t j : fluidNeighbours_[i]) {
+      density += mass_ * kernel_.value(x_[i] - x_[j]);
+      const Vec3d g = mass_ * kernel_.gradient(x_[i] - x_[j]);
+      gradientSum += g;
+      squaredSum += g.squaredNorm();
+    }
+    for (uint32_t b : boundaryNeighbours_[i]) {
+      const Vec3d r = x_[i] - boundary_.positions[b];
+      density += boundaryPsi_[b] * kernel_.value(r);
+      gradientSum += boundaryPsi_[b] * kernel_.gradient(r);
+    }
+    rho_[i] = density;
+    const double denominator = gradientSum.squaredNorm() + squaredSum;
+    // A particle alone (no gradient) cannot be corrected: no stiffness.
+    alpha_[i] = denominator > 1e-9 * mass_ * mass_ / std::pow(kernel_.supportRadius(), 8) ? density / denominator : 0.0;
+  });
+}
+
+double DfsphSolver::adaptedTimeStep() const {
+  double fastest = 0.0;
+  for (const Vec3d& v : v_) fastest = std::max(fastest, v.squaredNorm());
+  fastest = std::sqrt(fastest);
+  const double cfl = fastest > 0.0 ? params_.cflFactor * 2.0 * params_.particleRadius / fastest : params_.maxTimeStep;
+  return std::clamp(cfl, params_.minTimeStep, params_.maxTimeStep);
+}
+
+void DfsphSolver::applyNonPressureForces(double dt) {
+  std::vector<Vec3d> smoothed(v_.size());
+  forEachParticle(x_.size(), [&](size_t i) {
+    Vec3d sum = Vec3d::Zero();
+    for (uint32_t j : fluidNeighbours_[i]) sum += (mass_ / rho_[j]) * (v_[j] - v_[i]) * kernel_.value(x_[i] - x_[j]);
+    smoothed[i] = v_[i] + params_.xsphViscosity * sum + dt * params_.gravity;
+  });
+  v_.swap(smoothed);
+}
+
+double DfsphSolver::densityRate(size_t i) const {
+  double rate = 0.0;
+  for (uint32_t j : fluidNeighbours_[i]) rate += mass_ * (v_[i] - v_[j]).dot(kernel_.gradient(x_[i] - x_[j]));
+  for (uint32_t b : boundaryNeighbours_[i])
+    rate += boundaryPsi_[b] * v_[i].dot(kernel_.gradient(x_[i] - boundary_.positions[b]));
+  return rate;
+}
+
+void DfsphSolver::applyStiffness(const std::vector<double>& kappa, double dt) {
+  std::vector<Vec3d> corrected(v_.size());
+  forEachParticle(x_.size(), [&](size_t i) {
+    const double ki = kappa[i] / rho_[i];
+    Vec3d sum = Vec3d::Zero();
+    for (uint32_t j : fluidNeighbours_[i]) sum += mass_ * (ki + kappa[j] / rho_[j]) * kernel_.gradient(x_[i] - x_[j]);
+    for (uint32_t b : boundaryNeighbours_[i])
+      sum += boundaryPsi_[b] * ki * kernel_.gradient(x_[i] - boundary_.positions[b]);
+    corrected[i] = v_[i] - dt * sum;
+  });
+  v_.swap(corrected);
+}
+
+int DfsphSolver::solveDensity(double dt) {
+  const double rho0 = params_.restDensity;
+  std::vector<double> compression(x_.size()), kappa(x_.size());
+  std::fill(pressureKappa_.begin(), pressureKappa_.end(), 0.0);
+  int iteration = 0;
+  for (;; ++iteration) {
+    forEachParticle(x_.size(), [&](size_t i) {
+      compression[i] = std::max(rho_[i] + dt * densityRate(i) - rho0, 0.0);
+    });
+    double sum = 0.0;
+    for (double c : compression) sum += c;  // in particle order: deterministic
+    stats_.densityError = x_.empty() ? 0.0 : sum / double(x_.size()) / rho0;
+    if (iteration >= params_.maxIterations ||
+        (iteration >= params_.minIterations && stats_.densityError <= params_.maxDensityError))
+      break;
+    forEachParticle(x_.size(), [&](size_t i) {
+      kappa[i] = compression[i] / (dt * dt) * alpha_[i];
+      pressureKappa_[i] += kappa[i];
+    });
+    applyStiffness(kappa, dt);
+  }
+  return iteration;
+}
+
+int DfsphSolver::solveDivergence(double dt) {
+  const double rho0 = params_.restDensity;
+  std::vector<double> rate(x_.size()), kappa(x_.size());
+  int iteration = 0;
+  for (;; ++iteration) {
+    forEachParticle(x_.size(), [&](size_t i) {
+      const size_t neighbours = fluidNeighbours_[i].size() + boundaryNeighbours_[i].size();
+      rate[i] = neighbours < kMinNeighboursForDivergence ? 0.0 : std::max(densityRate(i), 0.0);
+    });
+    double sum = 0.0;
+    for (double r : rate) sum += r;
+    const double error = x_.empty() ? 0.0 : dt * sum / double(x_.size()) / rho0;
+    if (iteration >= params_.maxIterations || (iteration >= 1 && error <= params_.maxDivergenceError)) break;
+    forEachParticle(x_.size(), [&](size_t i) { kappa[i] = rate[i] / dt * alpha_[i]; });
+    applyStiffness(kappa, dt);
+  }
+  return iteration;
+}
+
+void DfsphSolver::step() { advanceTo(time_ + adaptedTimeStep()); }
+
+void DfsphSolver::advanceTo(double time) {
+  while (time_ < time - 1e-12) {
+    const double dt = std::min(adaptedTimeStep(), time - time_);
+    stats_.timeStep = dt;
+    applyNonPressureForces(dt);
+    stats_.densityIterations = solveDensity(dt);
+    for (size_t i = 0; i < x_.size(); ++i) x_[i] += dt * v_[i];
+    updateNeighbours();
+    computeDensitiesAndFactors();
+    stats_.divergenceIterations = solveDivergence(dt);
+    time_ += dt;
+  }
+}
+
+std::vector<double> DfsphSolver::pressures() const {
+  std::vector<double> p(x_.size());
+  for (size_t i = 0; i < p.size(); ++i) p[i] = rho_[i] * pressureKappa_[i];
+  return p;
+}
+
+}  // namespace lacrima::sph
