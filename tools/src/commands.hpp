@@ -62,6 +62,9 @@ struct BenchOptions {
   // --flesh: the shot's simulated flesh per frame at these tetrahedron sizes (cmd_bench_flesh.cpp).
   bool flesh = false;
   std::vector<double> tetSizes = {0.005, 0.0028};
+  // --sph: the SPH liquid's cost on a dam break of this many particles, stepped this often (cmd_bench_sph.cpp).
+  bool sph = false;
+  int sphParticles = 100000, sphSteps = 10;
   // --quality: time to equal error (cmd_bench_quality.cpp).
   bool quality = false;
   std::optional<int> frame;  // default: the shot's first frame
@@ -101,6 +104,7 @@ int runInfo(const std::string& path);
 int runBench(const BenchOptions& options);
 int runBenchQuality(const BenchOptions& options);
 int runBenchFlesh(const BenchOptions& options);
+int runBenchSph(const BenchOptions& options);
 int runExport(const ExportOptions& options);
 int runFarmSubmit(const FarmSubmitOptions& options);
 int runFarmStatus(const FarmStatusOptions& options);

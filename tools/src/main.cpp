@@ -245,6 +245,7 @@ void addBench(CLI::App& app, BenchOptions& o) {
   bench->footer(
       "Renders the default shot (or SHOT) at a fixed small size and reports medians of the repetitions,\n"
       "then per frame (--frames) the milliseconds before the first ray: geometry stages, scene update, set-up.\n"
+      "With --sph, the SPH liquid's particle updates per second on a dam break.\n"
       "With --quality, reports time to equal error, e.g.\n"
       "  lacrima bench --quality --width 160 --height 90 --max-spp 64 --target 0.05");
   bench->add_option("shot", o.shotPath, "Shot file (default: scenes/shots/tear_closeup.json)");
@@ -266,6 +267,11 @@ void addBench(CLI::App& app, BenchOptions& o) {
                     "--flesh: tetrahedron edge bounds in metres (repeatable; default 0.005 0.0028: about 20k and "
                     "100k tetrahedra on the default shot)")
       ->check(CLI::PositiveNumber);
+  bench->add_flag("--sph", o.sph,
+                  "The SPH liquid's cost instead: a dam break of --particles particles (2.5 mm) stepped --steps "
+                  "times; median step, particle updates per second, solver iterations");
+  bench->add_option("--particles", o.sphParticles, "--sph: particles (default 100000)")->check(integerIn(100, 10000000));
+  bench->add_option("--steps", o.sphSteps, "--sph: measured steps (default 10)")->check(integerIn(1, 10000));
   bench->add_option("--frame", o.frame, "--quality: the frame (default: the shot's first); --flesh: the last frame");
   bench->add_option("--reference-spp", o.referenceSpp,
                     "--quality: samples of the reference (its own noise adds in quadrature: 1024 against 64 spp "
@@ -285,7 +291,12 @@ void addBench(CLI::App& app, BenchOptions& o) {
                     "as the shot says); each count is then the pixels' maximum, and the mean is reported")
       ->check(nonNegativeNumber());
   bench->callback(
-      [&o] { throw CLI::RuntimeError(o.quality ? runBenchQuality(o) : o.flesh ? runBenchFlesh(o) : runBench(o)); });
+      [&o] {
+        throw CLI::RuntimeError(o.quality ? runBenchQuality(o)
+                                : o.flesh ? runBenchFlesh(o)
+                                : o.sph   ? runBenchSph(o)
+                                          : runBench(o));
+      });
 }
 
 

@@ -103,20 +103,30 @@ void DfsphSolver::updateNeighbours() {
 }
 
 void DfsphSolver::computeDensitiesAndFactors() {
+  fluidGradients_.resize(x_.size());
+  boundaryGradients_.resize(x_.size());
   forEachParticle(x_.size(), [&](size_t i) {
     double density = 0.0;
     Vec3d gradientSum = Vec3d::Zero();
     double squaredSum = 0.0;
-    for (uint32_t j : fluidNeighbours_[i]) {
+    std::vector<Vec3d>& fluidGradients = fluidGradients_[i];
+    fluidGradients.resize(fluidNeighbours_[i].size());
+    for (size_t n = 0; n < fluidNeighbours_[i].size(); ++n) {
+      const uint32_t j = fluidNeighbours_[i][n];
       density += mass_ * kernel_.value(x_[i] - x_[j]);
-      const Vec3d g = mass_ * kernel_.gradient(x_[i] - x_[j]);
+      fluidGradients[n] = kernel_.gradient(x_[i] - x_[j]);
+      const Vec3d g = mass_ * fluidGradients[n];
       gradientSum += g;
       squaredSum += g.squaredNorm();
     }
-    for (uint32_t b : boundaryNeighbours_[i]) {
+    std::vector<Vec3d>& boundaryGradients = boundaryGradients_[i];
+    boundaryGradients.resize(boundaryNeighbours_[i].size());
+    for (size_t n = 0; n < boundaryNeighbours_[i].size(); ++n) {
+      const uint32_t b = boundaryNeighbours_[i][n];
       const Vec3d r = x_[i] - boundary_.positions[b];
       density += boundaryPsi_[b] * kernel_.value(r);
-      gradientSum += boundaryPsi_[b] * kernel_.gradient(r);
+      boundaryGradients[n] = boundaryPsi_[b] * kernel_.gradient(r);
+      gradientSum += boundaryGradients[n];
     }
     rho_[i] = density;
     const double denominator = gradientSum.squaredNorm() + squaredSum;
@@ -145,9 +155,9 @@ void DfsphSolver::applyNonPressureForces(double dt) {
 
 double DfsphSolver::densityRate(size_t i) const {
   double rate = 0.0;
-  for (uint32_t j : fluidNeighbours_[i]) rate += mass_ * (v_[i] - v_[j]).dot(kernel_.gradient(x_[i] - x_[j]));
-  for (uint32_t b : boundaryNeighbours_[i])
-    rate += boundaryPsi_[b] * v_[i].dot(kernel_.gradient(x_[i] - boundary_.positions[b]));
+  const std::vector<uint32_t>& fluid = fluidNeighbours_[i];
+  for (size_t n = 0; n < fluid.size(); ++n) rate += mass_ * (v_[i] - v_[fluid[n]]).dot(fluidGradients_[i][n]);
+  for (const Vec3d& g : boundaryGradients_[i]) rate += v_[i].dot(g);
   return rate;
 }
 
@@ -156,9 +166,9 @@ void DfsphSolver::applyStiffness(const std::vector<double>& kappa, double dt) {
   forEachParticle(x_.size(), [&](size_t i) {
     const double ki = kappa[i] / rho_[i];
     Vec3d sum = Vec3d::Zero();
-    for (uint32_t j : fluidNeighbours_[i]) sum += mass_ * (ki + kappa[j] / rho_[j]) * kernel_.gradient(x_[i] - x_[j]);
-    for (uint32_t b : boundaryNeighbours_[i])
-      sum += boundaryPsi_[b] * ki * kernel_.gradient(x_[i] - boundary_.positions[b]);
+    const std::vector<uint32_t>& fluid = fluidNeighbours_[i];
+    for (size_t n = 0; n < fluid.size(); ++n) sum += mass_ * (ki + kappa[fluid[n]] / rho_[fluid[n]]) * fluidGradients_[i][n];
+    for (const Vec3d& g : boundaryGradients_[i]) sum += ki * g;
     corrected[i] = v_[i] - dt * sum;
   });
   v_.swap(corrected);

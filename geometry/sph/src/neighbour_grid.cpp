@@ -29,6 +29,28 @@ void NeighbourGrid::build(const std::vector<Vec3d>& points) {
   });
   tbb::parallel_sort(sorted_.begin(), sorted_.end(),
                      [](const Entry& a, const Entry& b) { return a.cell != b.cell ? a.cell < b.cell : a.index < b.index; });
+  ranges_.clear();
+  for (uint32_t n = 0; n < sorted_.size(); ++n) {
+    if (ranges_.empty() || ranges_.back().cell != sorted_[n].cell) ranges_.push_back({sorted_[n].cell, n, n});
+    ranges_.back().end = n + 1;
+  }
+  size_t slots = 16;
+  while (slots < 2 * ranges_.size()) slots *= 2;  // at most half full: short probes
+  table_.assign(slots, -1);
+  for (size_t r = 0; r < ranges_.size(); ++r) {
+    size_t slot = ranges_[r].cell & (slots - 1);
+    while (table_[slot] >= 0) slot = (slot + 1) & (slots - 1);
+    table_[slot] = int32_t(r);
+  }
+}
+
+const NeighbourGrid::CellRange* NeighbourGrid::findCell(uint64_t cell) const {
+  if (table_.empty()) return nullptr;
+  const size_t mask = table_.size() - 1;
+  for (size_t slot = cell & mask;; slot = (slot + 1) & mask) {
+    if (table_[slot] < 0) return nullptr;
+    if (ranges_[size_t(table_[slot])].cell == cell) return &ranges_[size_t(table_[slot])];
+  }
 }
 
 void NeighbourGrid::pointsNear(const Vec3d& p, std::vector<uint32_t>& out) const {
@@ -45,10 +67,10 @@ void NeighbourGrid::pointsNear(const Vec3d& p, std::vector<uint32_t>& out) const
         // Two of the 27 cells hashing alike would list their points twice.
         if (std::find(visited, visited + visitedCount, key) != visited + visitedCount) continue;
         visited[visitedCount++] = key;
-        auto it = std::lower_bound(sorted_.begin(), sorted_.end(), key,
-                                   [](const Entry& e, uint64_t k) { return e.cell < k; });
-        for (; it != sorted_.end() && it->cell == key; ++it)
-          if (((*points_)[it->index] - p).squaredNorm() < radiusSquared) out.push_back(it->index);
+        const CellRange* range = findCell(key);
+        if (!range) continue;
+        for (uint32_t n = range->begin; n < range->end; ++n)
+          if (((*points_)[sorted_[n].index] - p).squaredNorm() < radiusSquared) out.push_back(sorted_[n].index);
       }
   std::sort(out.begin(), out.end());
 }

@@ -102,6 +102,9 @@ class DfsphSolver {
   std::vector<double> boundaryPsi_;
   NeighbourGrid fluidGrid_, boundaryGrid_;
   std::vector<std::vector<uint32_t>> fluidNeighbours_, boundaryNeighbours_;
+  // grad W(x_i - x_j) per neighbour entry (and Psi_b grad W(x_i - x_b) per boundary entry), at the
+  // positions of the last neighbour update: both solves use them in every iteration.
+  std::vector<std::vector<Vec3d>> fluidGradients_, boundaryGradients_;
   double time_ = 0.0;
   StepStats stats_;
 };
