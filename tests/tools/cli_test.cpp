@@ -590,5 +590,15 @@ TEST(CliRender, WarningsComeBeforeRenderingAndFrameStepsAreHonoured) {
   EXPECT_EQ(filesIn(dir), (std::set<std::string>{"warn.json", "out/warn.0001.exr", "out/warn.0003.exr"}));
 }
 
+TEST(CliBench, SphReportsParticleUpdatesPerSecondAndRejectsBadCounts) {
+  auto run = lacrima({"bench", "--sph", "--particles", "2000", "--steps", "2", "--threads", "1"});
+  EXPECT_EQ(run.exitStatus, 0) << run.output;
+  EXPECT_NE(run.output.find("dam break, 2048 particles"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("particle updates/s"), std::string::npos) << run.output;
+  run = lacrima({"bench", "--sph", "--particles", "-5"});
+  EXPECT_EQ(run.exitStatus, 2) << run.output;
+  EXPECT_NE(run.output.find("--particles"), std::string::npos) << run.output;
+}
+
 }  // namespace
 }  // namespace lacrima
