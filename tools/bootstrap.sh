@@ -16,7 +16,7 @@ esac
 
 packages=(cmake ninja-build g++ pkg-config
   libembree-dev libtbb-dev libopenimageio-dev openimageio-tools libopenexr-dev libopencolorio-dev
-  libtinygltf-dev libeigen3-dev nlohmann-json3-dev libcli11-dev libfmt-dev libtet1.5-dev
+  libtinygltf-dev libeigen3-dev nlohmann-json3-dev libcli11-dev libfmt-dev libtet1.5-dev libopenvdb-dev libboost-dev
   libgtest-dev libgmock-dev libbenchmark-dev)
 
 # The farm test brings up a single-node Slurm cluster (tools/slurm/cluster.sh).

@@ -33,3 +33,14 @@ find_library(TETGEN_LIBRARY tet REQUIRED)
 add_library(TetGen::TetGen UNKNOWN IMPORTED)
 set_target_properties(TetGen::TetGen PROPERTIES IMPORTED_LOCATION "${TETGEN_LIBRARY}"
                                                 INTERFACE_INCLUDE_DIRECTORIES "${TETGEN_INCLUDE_DIR}")
+
+# OpenVDB 10 (Debian's libopenvdb-dev): its FindOpenVDB.cmake module brings its own FindTBB and
+# FindOpenEXR, which would shadow the config packages above; the header and the shared library are
+# found by name instead. Debian builds it with Imath's half (OPENVDB_USE_IMATH_HALF) and TBB, which
+# its headers include, as they include Boost headers (libboost-dev, which the package does not pull in).
+find_path(OPENVDB_INCLUDE_DIR openvdb/openvdb.h REQUIRED)
+find_library(OPENVDB_LIBRARY openvdb REQUIRED)
+add_library(OpenVDB::openvdb UNKNOWN IMPORTED)
+set_target_properties(OpenVDB::openvdb PROPERTIES IMPORTED_LOCATION "${OPENVDB_LIBRARY}"
+                                                  INTERFACE_INCLUDE_DIRECTORIES "${OPENVDB_INCLUDE_DIR}"
+                                                  INTERFACE_LINK_LIBRARIES "TBB::tbb;Imath::Imath")

@@ -1,8 +1,8 @@
 // `lacrima bench --sph`: what the SPH liquid costs (issue 19 asks for particle updates per second
 // at 100k particles on 2 cores). A dam break (a water block at one end of a tank three times its
 // length, 2.5 mm particles) is stepped for --steps steps after one unmeasured step; the report gives
-// the median step, the particle updates per second over the measured steps, and the solvers'
-// iterations.
+// the median step, the particle updates per second over the measured steps, the solvers'
+// iterations, and the milliseconds to surface the liquid for a frame (sph_surface.hpp).
 #include <tbb/task_arena.h>
 
 #include <algorithm>
@@ -13,6 +13,7 @@
 
 #include "commands.hpp"
 #include "lacrima/sph/dfsph.hpp"
+#include "lacrima/sph/sph_surface.hpp"
 
 namespace lacrima::cli {
 
@@ -60,6 +61,17 @@ int runBenchSph(const BenchOptions& o) {
                 double(solver.positions().size()) * steps / (1e-3 * total));
     std::printf("iterations a step     %.1f density, %.1f divergence\n", densityIterations / steps,
                 divergenceIterations / steps);
+    // Surfacing, as each rendered frame would (median of 3).
+    std::vector<double> surfaceMs;
+    size_t triangles = 0;
+    for (int k = 0; k < 3; ++k) {
+      const auto start = std::chrono::steady_clock::now();
+      triangles = sph::surfaceOfParticles(solver.positions(), solver.params().particleRadius).triangleCount();
+      surfaceMs.push_back(1e3 * std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    }
+    std::sort(surfaceMs.begin(), surfaceMs.end());
+    std::printf("surfacing ms          %.1f median of 3 (OpenVDB level set, smoothed, meshed: %zu triangles)\n",
+                surfaceMs[1], triangles);
   });
   return kExitOk;
 }
