@@ -64,8 +64,12 @@ TEST(Dfsph, WaterColumnStaysAtRestWithAPressureGrowingAsRhoGH) {
     const double expected = rho0 * kGravity * (top - (layer + 0.5) * spacing);
     std::printf("[ dfsph ] layer %d: p %.0f Pa, rho0 g h %.0f Pa (%.2f)\n", layer, mean, expected, mean / expected);
     // Above the boundary's reach (layers 2 and up) the pressure grows with depth.
-    if (layer > 2) EXPECT_LT(mean, previous) << "pressure grows with depth";
-    if (layer < 8) EXPECT_NEAR(mean / expected, 1.15, 0.15) << "layer " << layer;
+    if (layer > 2) {
+      EXPECT_LT(mean, previous) << "pressure grows with depth";
+    }
+    if (layer < 8) {
+      EXPECT_NEAR(mean / expected, 1.15, 0.15) << "layer " << layer;
+    }
     previous = mean;
   }
 }

@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "lacrima/sph/surface_tension.hpp"
+
 namespace lacrima::sph {
 
 namespace {
@@ -143,12 +145,50 @@ double DfsphSolver::adaptedTimeStep() const {
   return std::clamp(cfl, params_.minTimeStep, params_.maxTimeStep);
 }
 
+std::vector<Vec3d> DfsphSolver::surfaceAccelerations() const {
+  std::vector<Vec3d> acceleration(x_.size(), Vec3d::Zero());
+  if (params_.surfaceTension <= 0.0 && params_.adhesion <= 0.0) return acceleration;
+  const double h = kernel_.supportRadius(), rho0 = params_.restDensity;
+  // Surface normals n_i = h sum_j (m / rho_j) grad W_ij (Akinci et al. 2013 eq. 3).
+  std::vector<Vec3d> normal(x_.size());
+  forEachParticle(x_.size(), [&](size_t i) {
+    Vec3d n = Vec3d::Zero();
+    const std::vector<uint32_t>& fluid = fluidNeighbours_[i];
+    for (size_t k = 0; k < fluid.size(); ++k) n += (mass_ / rho_[fluid[k]]) * fluidGradients_[i][k];
+    normal[i] = h * n;
+  });
+  const CohesionSpline cohesion(h);
+  const AdhesionSpline adhesion(h);
+  forEachParticle(x_.size(), [&](size_t i) {
+    Vec3d force = Vec3d::Zero();  // divided by m_i below: the forces all carry m_i
+    if (params_.surfaceTension > 0.0)
+      for (uint32_t j : fluidNeighbours_[i]) {
+        if (j == i) continue;
+        const Vec3d between = x_[i] - x_[j];
+        const double r = between.norm();
+        if (r < 1e-9 * h) continue;
+        const Vec3d pull = -mass_ * cohesion.value(r) * between / r - (normal[i] - normal[j]);
+        force += params_.surfaceTension * (2.0 * rho0 / (rho_[i] + rho_[j])) * pull;
+      }
+    if (params_.adhesion > 0.0)
+      for (uint32_t b : boundaryNeighbours_[i]) {
+        const Vec3d between = x_[i] - boundary_.positions[b];
+        const double r = between.norm();
+        if (r < 1e-9 * h) continue;
+        force -= params_.adhesion * boundaryPsi_[b] * adhesion.value(r) * between / r;
+      }
+    acceleration[i] = force;
+  });
+  return acceleration;
+}
+
 void DfsphSolver::applyNonPressureForces(double dt) {
+  const std::vector<Vec3d> surface = surfaceAccelerations();
   std::vector<Vec3d> smoothed(v_.size());
   forEachParticle(x_.size(), [&](size_t i) {
     Vec3d sum = Vec3d::Zero();
     for (uint32_t j : fluidNeighbours_[i]) sum += (mass_ / rho_[j]) * (v_[j] - v_[i]) * kernel_.value(x_[i] - x_[j]);
-    smoothed[i] = v_[i] + params_.xsphViscosity * sum + dt * params_.gravity;
+    smoothed[i] = v_[i] + params_.xsphViscosity * sum + dt * (params_.gravity + surface[i]);
   });
   v_.swap(smoothed);
 }

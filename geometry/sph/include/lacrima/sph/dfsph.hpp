@@ -17,6 +17,8 @@
 // Incompressible SPH", ACM TOG 31(4), eqs. 4-5 and 10): each carries Psi_b = rho0 V_b,
 // V_b = 1 / sum_k W_bk over its boundary neighbours, in the fluid's density and, with the fluid
 // particle's own pressure, in the pressure force.
+// Surface tension and adhesion: Akinci, Akinci & Teschner 2013 (surface_tension.hpp), with the
+// non-pressure forces.
 // Viscosity: XSPH (Schechter & Bridson 2012, "Ghost SPH for Animating Water", ACM TOG 31(4), eq. 11:
 // v_i += c sum_j (m_j / rho_j) (v_j - v_i) W_ij). Time step: the CFL condition
 // dt = cfl * 2 r / max |v| (Bender & Koschier 2017, section 5), clamped to [minTimeStep, maxTimeStep].
@@ -35,6 +37,8 @@ struct FluidParams {
   double particleRadius = 0.0025;  // metres; particles start 2 r apart, the kernel reaches 4 r
   double restDensity = 1000.0;     // kg / m^3
   double xsphViscosity = 0.01;     // c above, dimensionless
+  double surfaceTension = 0.0;     // Akinci et al. 2013's gamma (surface_tension.hpp); 0 = none
+  double adhesion = 0.0;           // Akinci et al. 2013's beta, towards boundary particles; 0 = none
   Vec3d gravity = Vec3d(0.0, -9.81, 0.0);
   double cflFactor = 0.4;
   double minTimeStep = 1e-5, maxTimeStep = 2e-3;  // seconds
@@ -86,6 +90,8 @@ class DfsphSolver {
   void computeDensitiesAndFactors();
   double adaptedTimeStep() const;
   void applyNonPressureForces(double dt);
+  // Akinci et al. 2013's cohesion, curvature and adhesion accelerations (surface_tension.hpp).
+  std::vector<Vec3d> surfaceAccelerations() const;
   int solveDensity(double dt);
   int solveDivergence(double dt);
   // v_i -= dt [sum_j m (k_i/rho_i + k_j/rho_j) grad W_ij + sum_b Psi_b (k_i/rho_i) grad W_ib].

@@ -1,0 +1,114 @@
+// Surface tension and adhesion (surface_tension.hpp): the splines have the shape the paper gives
+// them, a cube of liquid in free fall rounds itself into a ball under surface tension (and stays a
+// cube without it), and a drop on a floor spreads wider when the floor adheres.
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "lacrima/sph/dfsph.hpp"
+#include "lacrima/sph/surface_tension.hpp"
+
+namespace lacrima::sph {
+namespace {
+
+TEST(SurfaceTension, SplinesRepelCloseAttractFarAndVanishAtTheSupport) {
+  const double h = 0.004;
+  const CohesionSpline cohesion(h);
+  const AdhesionSpline adhesion(h);
+  EXPECT_LT(cohesion.value(0.1 * h), 0.0);  // repulsive at short range: particles keep apart
+  EXPECT_GT(cohesion.value(0.75 * h), 0.0);
+  EXPECT_EQ(cohesion.value(h), 0.0);
+  EXPECT_EQ(cohesion.value(1.2 * h), 0.0);
+  EXPECT_NEAR(cohesion.value(0.5 * h - 1e-12), cohesion.value(0.5 * h + 1e-12), 1e-6 * cohesion.value(0.75 * h));
+  EXPECT_EQ(adhesion.value(0.4 * h), 0.0);
+  EXPECT_GT(adhesion.value(0.75 * h), 0.0);
+  EXPECT_NEAR(adhesion.value(h), 0.0, 1e-9 * adhesion.value(0.75 * h));
+}
+
+// How far the farthest particle is from the centroid, over the radius of a ball of the
+// particles' volume: about 1.40 for a cube (corner over the equal-volume radius), 1 for a ball.
+double roundness(const std::vector<Vec3d>& x, double spacing) {
+  Vec3d centroid = Vec3d::Zero();
+  for (const Vec3d& p : x) centroid += p / double(x.size());
+  double farthest = 0.0;
+  for (const Vec3d& p : x) farthest = std::max(farthest, (p - centroid).norm());
+  const double ballRadius = std::cbrt(3.0 * double(x.size()) * spacing * spacing * spacing / (4.0 * std::numbers::pi));
+  return (farthest + 0.5 * spacing) / ballRadius;
+}
+
+double roundnessAfter(double surfaceTension, double seconds) {
+  FluidParams params;
+  params.particleRadius = 0.001;
+  params.gravity = Vec3d::Zero();  // free fall: nothing but the liquid itself
+  params.surfaceTension = surfaceTension;
+  params.xsphViscosity = 0.05;
+  DfsphSolver solver(params, latticeBlock(Vec3d::Zero(), Vec3d::Constant(0.016), 0.002), BoundaryParticles{});
+  solver.advanceTo(seconds);
+  return roundness(solver.positions(), 0.002);
+}
+
+TEST(SurfaceTension, ACubeInFreeFallRoundsIntoABall) {
+  const double without = roundnessAfter(0.0, 0.15), with = roundnessAfter(0.2, 0.15);
+  std::printf("[ surface tension ] roundness after 0.15 s: %.3f without, %.3f with (cube %.3f)\n", without, with,
+              roundness(latticeBlock(Vec3d::Zero(), Vec3d::Constant(0.016), 0.002), 0.002));
+  EXPECT_GT(without, 1.3);
+  EXPECT_LT(with, 1.2);
+}
+
+// An 8 x 4 x 8 mm slab of water (0.5 mm particles) on a floor: the radius of its footprint (the
+// farthest particle of the lowest layer from the centre, horizontally) after `seconds`.
+double footprintAfterSettling(double surfaceTension, double adhesion, double seconds) {
+  FluidParams params;
+  params.particleRadius = 0.0005;
+  params.surfaceTension = surfaceTension;
+  params.adhesion = adhesion;
+  params.xsphViscosity = 0.05;
+  const double spacing = 0.001;
+  const Vec3d lo(0.016, 0.0, 0.016);
+  DfsphSolver solver(params, latticeBlock(lo, lo + Vec3d(0.008, 0.004, 0.008), spacing),
+                     boundaryFromSamples(openBoxWalls(Vec3d::Zero(), Vec3d(0.04, 0.02, 0.04), spacing, 2),
+                                         params.particleRadius));
+  solver.advanceTo(seconds);
+  double footprint = 0.0;
+  for (const Vec3d& p : solver.positions())
+    if (p.y() < spacing) footprint = std::max(footprint, std::hypot(p.x() - 0.02, p.z() - 0.02));
+  return footprint;
+}
+
+TEST(SurfaceTension, ADropSpreadsWiderOnAnAdheringFloor) {
+  // gamma 2 holds the slab as a bead; more adhesion spreads it wider, and enough wets the floor
+  // completely (the liquid runs out to the tank's walls, 28 mm from the centre at the corners).
+  const double none = footprintAfterSettling(2.0, 0.0, 0.2), some = footprintAfterSettling(2.0, 10.0, 0.2),
+               strong = footprintAfterSettling(2.0, 50.0, 0.2);
+  std::printf("[ adhesion ] footprint radius after 0.2 s: %.2f mm (beta 0), %.2f mm (10), %.2f mm (50)\n", 1e3 * none,
+              1e3 * some, 1e3 * strong);
+  EXPECT_LT(none, 0.0065);  // a bead: the slab's own half-diagonal is 5.7 mm
+  EXPECT_GT(some, none + 0.001);
+  EXPECT_GT(strong, 0.02);
+}
+
+TEST(SurfaceTension, TheSameRunWithOneThreadOrAll) {
+  const auto run = [] {
+    FluidParams params;
+    params.particleRadius = 0.0005;
+    params.surfaceTension = 2.0;
+    params.adhesion = 10.0;
+    DfsphSolver solver(params, latticeBlock(Vec3d(0.004, 0.0, 0.004), Vec3d(0.01, 0.003, 0.01), 0.001),
+                       boundaryFromSamples(openBoxWalls(Vec3d::Zero(), Vec3d(0.014, 0.01, 0.014), 0.001, 2), 0.0005));
+    solver.advanceTo(0.02);
+    return solver.positions();
+  };
+  std::vector<Vec3d> one;
+  {
+    tbb::global_control single(tbb::global_control::max_allowed_parallelism, 1);
+    one = run();
+  }
+  const std::vector<Vec3d> all = run();
+  ASSERT_EQ(one.size(), all.size());
+  for (size_t i = 0; i < one.size(); ++i) ASSERT_TRUE(one[i] == all[i]) << "particle " << i;
+}
+
+}  // namespace
+}  // namespace lacrima::sph
