@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "lacrima/geometry/sampler.hpp"
+#include "lattice_cell.hpp"
 
 namespace lacrima {
 
@@ -56,10 +57,9 @@ FeaturePoints featurePointsAround(int64_t ci, int64_t cj, int64_t ck, const Vec3
 FurrowHeight furrowHeight(const Vec3& p, float scale, float depth) {
   FurrowHeight result;
   if (depth <= 0.0f) return result;
-  // Lattice coordinates; double for the floor so that large world coordinates keep their cells.
-  const Vec3d q = p.cast<double>() / double(scale);
-  const int64_t ci = int64_t(std::floor(q.x())), cj = int64_t(std::floor(q.y())), ck = int64_t(std::floor(q.z()));
-  const Vec3 local = (q - Vec3d(double(ci), double(cj), double(ck))).cast<float>();
+  const LatticeCell cell = latticeCellOf(p, scale);
+  const int64_t ci = cell.i, cj = cell.j, ck = cell.k;
+  const Vec3& local = cell.local;
   const FeaturePoints f = featurePointsAround(ci, cj, ck, local);
   const int nearest = f.nearest;
   const Vec3& c1 = f.points[nearest];

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "lacrima/geometry/sampler.hpp"
+#include "lattice_cell.hpp"
 
 namespace lacrima {
 
@@ -38,11 +39,9 @@ static_assert(kPoreRadius < 0.5f, "cellsReaching assumes a pore reaches at most 
 PoreHeight poreHeight(const Vec3& p, float scale, float depth) {
   PoreHeight result;
   if (depth <= 0.0f) return result;
-  // Lattice coordinates; double for the floor so that large world coordinates keep their cells.
-  const Vec3d q = p.cast<double>() / double(scale);
-  const int64_t ci = int64_t(std::floor(q.x())), cj = int64_t(std::floor(q.y())), ck = int64_t(std::floor(q.z()));
-  // Relative to the cell corner, so that the float differences below stay small.
-  const Vec3 local = (q - Vec3d(double(ci), double(cj), double(ck))).cast<float>();
+  const LatticeCell cell = latticeCellOf(p, scale);
+  const int64_t ci = cell.i, cj = cell.j, ck = cell.k;
+  const Vec3& local = cell.local;
   constexpr float invR2 = 1.0f / (kPoreRadius * kPoreRadius);
   float sumB = 0.0f;
   Vec3 sumGrad = Vec3::Zero();
