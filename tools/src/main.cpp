@@ -269,7 +269,7 @@ void addBench(CLI::App& app, BenchOptions& o) {
       ->check(CLI::PositiveNumber);
   bench->add_flag("--sph", o.sph,
                   "The SPH liquid's cost instead: a dam break of --particles particles (2.5 mm) stepped --steps "
-                  "times; median step, particle updates per second, solver iterations");
+                  "times; median step, particle updates per second, solver iterations, surfacing milliseconds");
   bench->add_option("--particles", o.sphParticles, "--sph: particles (default 100000)")->check(integerIn(100, 10000000));
   bench->add_option("--steps", o.sphSteps, "--sph: measured steps (default 10)")->check(integerIn(1, 10000));
   bench->add_option("--frame", o.frame, "--quality: the frame (default: the shot's first); --flesh: the last frame");
