@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "lacrima/geometry/math.hpp"
+#include "lacrima/geometry/mesh.hpp"
 #include "lacrima/sph/neighbour_grid.hpp"
 #include "lacrima/sph/sph_kernel.hpp"
 
@@ -56,6 +57,14 @@ BoundaryParticles boundaryFromSamples(std::vector<Vec3d> samples, double particl
 
 // Points on a lattice of spacing `spacing` filling [lo, hi] (from lo + spacing / 2).
 std::vector<Vec3d> latticeBlock(const Vec3d& lo, const Vec3d& hi, double spacing);
+
+// Boundary samples on the surface of a triangle mesh, one layer (Akinci et al. 2012 section 3.1:
+// a single layer of boundary particles suffices, their volumes V_b making up for the missing
+// ones): each triangle's barycentric grid fine enough that no two neighbours are farther apart
+// than `spacing`; samples that neighbouring triangles share (vertices, edges) kept once. Fluid
+// must start at least a particle spacing (2 r) from such a surface: at r, where two or three
+// walls meet, the boundary alone makes the density twice the rest density.
+std::vector<Vec3d> meshSurfaceSamples(const TriangleMesh& mesh, double spacing);
 
 // `layers` layers of boundary samples (spacing `spacing`) outside the walls and floor of the
 // open-top box [lo, hi] (the fluid's container).

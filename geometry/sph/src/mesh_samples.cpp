@@ -1,0 +1,42 @@
+// Boundary samples on a triangle mesh; see meshSurfaceSamples in dfsph.hpp.
+#include <algorithm>
+#include <cmath>
+#include <unordered_set>
+
+#include "lacrima/geometry/sampler.hpp"
+#include "lacrima/sph/dfsph.hpp"
+
+namespace lacrima::sph {
+
+namespace {
+
+// A sample's position rounded to a hundredth of the spacing: the same point reached from two
+// triangles (a shared vertex or edge point) rounds alike whatever float path computed it.
+uint64_t roundedKey(const Vec3d& p, double spacing) {
+  const double unit = 0.01 * spacing;
+  uint64_t key = 0x5eedULL;
+  for (int axis = 0; axis < 3; ++axis) key = hashCombine(key, uint64_t(int64_t(std::llround(p[axis] / unit))));
+  return key;
+}
+
+}  // namespace
+
+std::vector<Vec3d> meshSurfaceSamples(const TriangleMesh& mesh, double spacing) {
+  std::vector<Vec3d> samples;
+  std::unordered_set<uint64_t> seen;
+  for (size_t t = 0; t < mesh.triangleCount(); ++t) {
+    const Vec3d a = mesh.positions[mesh.indices[3 * t]].cast<double>();
+    const Vec3d b = mesh.positions[mesh.indices[3 * t + 1]].cast<double>();
+    const Vec3d c = mesh.positions[mesh.indices[3 * t + 2]].cast<double>();
+    const double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
+    const int n = std::max(1, int(std::ceil(longest / spacing)));
+    for (int i = 0; i <= n; ++i)
+      for (int j = 0; i + j <= n; ++j) {
+        const Vec3d p = a + (double(i) / n) * (b - a) + (double(j) / n) * (c - a);
+        if (seen.insert(roundedKey(p, spacing)).second) samples.push_back(p);
+      }
+  }
+  return samples;
+}
+
+}  // namespace lacrima::sph
