@@ -98,6 +98,14 @@ excluded_tests+=":ClosestPointGrid.MatchesBruteForceOnAClosedEllipsoidAndAFlatSh
 # them in full.
 excluded_tests+=":LiquidTearShot.AFrameAloneEqualsTheSameFrameInASequenceWhenTheFaceMoves"
 excluded_tests+=":DetailSubdivisionShot.KeyedBlendshapeCarriesTheNewVerticesWithTheFace"
+# And the SPH liquid's three validation runs (a water column settling for 1.5 s, the dam break
+# against Martin & Moyce, the column in a one-layer mesh tank): 7 minutes of the sph stage's 2 cores
+# under ASan (2026-12-04), 5 s in Release. The same solver, boundaries and mesh samples run under
+# the sanitizers in the shorter sph tests (both determinism runs, surface tension, adhesion, the
+# mesh samples), and the Release ctest runs the validations in full.
+excluded_tests+=":Dfsph.WaterColumnStaysAtRestWithAPressureGrowingAsRhoGH"
+excluded_tests+=":Dfsph.DamBreakFrontRunsAsMartinAndMoyceMeasured"
+excluded_tests+=":MeshBoundary.OneLayerOfSamplesHoldsWaterInAClosedTank"
 
 # One test executable as JOBS gtest shards side by side (the tests are single-threaded and ASan
 # makes them slow; each shard runs every JOBS-th test), each shard's output printed when it ends.
