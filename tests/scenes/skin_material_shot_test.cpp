@@ -49,7 +49,8 @@ TEST(SkinMaterialShot, ReadsTheFurrowsAndTheCavity) {
   EXPECT_EQ(p.furrowScale, 0.0005f);
   EXPECT_EQ(p.furrowDepth, 0.000012f);
   EXPECT_EQ(p.cavity, 0.5f);
-  const SkinParams& defaults = skinOf(loadShot(test::writeShot("skin_relief_defaults.json", shotWithSkin(""))));
+  const Shot plain = loadShot(test::writeShot("skin_relief_defaults.json", shotWithSkin("")));
+  const SkinParams& defaults = skinOf(plain);
   EXPECT_EQ(defaults.furrowDepth, 0.0f);
   EXPECT_EQ(defaults.cavity, 0.0f);
 }
