@@ -33,14 +33,14 @@ struct FeaturePoints {
   int nearest = 0;
 };
 
-FeaturePoints featurePointsAround(int64_t ci, int64_t cj, int64_t ck, const Vec3& local) {
+FeaturePoints featurePointsAround(const LatticeCell& cell) {
   FeaturePoints f;
   int index = 0;
   for (int di = -1; di <= 1; ++di)
     for (int dj = -1; dj <= 1; ++dj)
       for (int dk = -1; dk <= 1; ++dk, ++index) {
-        f.points[index] = Vec3(float(di), float(dj), float(dk)) + jitterOfCell(ci + di, cj + dj, ck + dk);
-        f.squaredDistances[index] = (local - f.points[index]).squaredNorm();
+        f.points[index] = Vec3(float(di), float(dj), float(dk)) + jitterOfCell(cell.i + di, cell.j + dj, cell.k + dk);
+        f.squaredDistances[index] = (cell.local - f.points[index]).squaredNorm();
       }
   // Select without branches: which point is nearest is unpredictable from hit to hit.
   float best = f.squaredDistances[0];
@@ -57,10 +57,7 @@ FeaturePoints featurePointsAround(int64_t ci, int64_t cj, int64_t ck, const Vec3
 FurrowHeight furrowHeight(const Vec3& p, float scale, float depth) {
   FurrowHeight result;
   if (depth <= 0.0f) return result;
-  const LatticeCell cell = latticeCellOf(p, scale);
-  const int64_t ci = cell.i, cj = cell.j, ck = cell.k;
-  const Vec3& local = cell.local;
-  const FeaturePoints f = featurePointsAround(ci, cj, ck, local);
+  const FeaturePoints f = featurePointsAround(latticeCellOf(p, scale));
   const int nearest = f.nearest;
   const Vec3& c1 = f.points[nearest];
   const float d1Squared = f.squaredDistances[nearest];

@@ -6,7 +6,6 @@
 #include "lacrima/materials/fresnel.hpp"
 #include "lacrima/materials/pores.hpp"
 #include "lacrima/materials/sampling.hpp"
-#include "lacrima/materials/skin_relief.hpp"
 
 namespace lacrima {
 
@@ -55,22 +54,15 @@ SkinBsdf::SkinBsdf(const SkinParams& params, std::optional<Vec3> reliefGradientH
       broad_(roughnessToAlpha(params.roughness2)),
       lobeMix_(std::clamp(params.lobeMix, 0.0f, 1.0f)),
       diffuseNorm_(kInvPi / (1.0f - fresnelHemisphericalReflectance(params.ior))),
-      poreScale_(params.poreScale),
-      poreDepth_(params.poreDepth > 0.0f && params.poreScale > 0.0f ? params.poreDepth : 0.0f),
-      furrowScale_(params.furrowScale),
-      furrowDepth_(params.furrowDepth > 0.0f && params.furrowScale > 0.0f ? params.furrowDepth : 0.0f),
+      relief_{params.poreScale, params.poreDepth > 0.0f && params.poreScale > 0.0f ? params.poreDepth : 0.0f,
+              params.furrowScale, params.furrowDepth > 0.0f && params.furrowScale > 0.0f ? params.furrowDepth : 0.0f},
       reliefGradientHere_(reliefGradientHere),
       hasDiffuseLobe_(!params.subsurface) {}
 
 Vec3 SkinBsdf::perturbShadingNormal(const Vec3& position, const Vec3& ns, const Vec3& ng) const {
-  if (poreDepth_ == 0.0f && furrowDepth_ == 0.0f) return ns;
-  if (reliefGradientHere_) return tiltNormalBySlope(*reliefGradientHere_, ns, ng);
-  SkinParams relief;
-  relief.poreScale = poreScale_;
-  relief.poreDepth = poreDepth_;
-  relief.furrowScale = furrowScale_;
-  relief.furrowDepth = furrowDepth_;
-  return tiltNormalBySlope(skinReliefAt(relief, position).gradient, ns, ng);
+  if (relief_.poreDepth == 0.0f && relief_.furrowDepth == 0.0f) return ns;
+  const Vec3 gradient = reliefGradientHere_ ? *reliefGradientHere_ : skinReliefAt(relief_, position).gradient;
+  return tiltNormalBySlope(gradient, ns, ng);
 }
 
 float SkinBsdf::specularF(const Vec3& wo, const Vec3& wi) const {

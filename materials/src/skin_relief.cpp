@@ -9,7 +9,7 @@
 
 namespace lacrima {
 
-SkinRelief skinReliefAt(const SkinParams& skin, const Vec3& p) {
+SkinRelief skinReliefAt(const ReliefFields& skin, const Vec3& p) {
   SkinRelief relief;
   if (skin.poreDepth > 0.0f && skin.poreScale > 0.0f) {
     const PoreHeight pore = poreHeight(p, skin.poreScale, skin.poreDepth);

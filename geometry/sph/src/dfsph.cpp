@@ -257,20 +257,21 @@ int DfsphSolver::solveDivergence(double dt) {
   return iteration;
 }
 
-void DfsphSolver::step() { advanceTo(time_ + adaptedTimeStep()); }
+void DfsphSolver::step() { advanceBy(adaptedTimeStep()); }
 
 void DfsphSolver::advanceTo(double time) {
-  while (time_ < time - 1e-12) {
-    const double dt = std::min(adaptedTimeStep(), time - time_);
-    stats_.timeStep = dt;
-    applyNonPressureForces(dt);
-    stats_.densityIterations = solveDensity(dt);
-    for (size_t i = 0; i < x_.size(); ++i) x_[i] += dt * v_[i];
-    updateNeighbours();
-    computeDensitiesAndFactors();
-    stats_.divergenceIterations = solveDivergence(dt);
-    time_ += dt;
-  }
+  while (time_ < time - 1e-12) advanceBy(std::min(adaptedTimeStep(), time - time_));
+}
+
+void DfsphSolver::advanceBy(double dt) {
+  stats_.timeStep = dt;
+  applyNonPressureForces(dt);
+  stats_.densityIterations = solveDensity(dt);
+  for (size_t i = 0; i < x_.size(); ++i) x_[i] += dt * v_[i];
+  updateNeighbours();
+  computeDensitiesAndFactors();
+  stats_.divergenceIterations = solveDivergence(dt);
+  time_ += dt;
 }
 
 std::vector<double> DfsphSolver::pressures() const {

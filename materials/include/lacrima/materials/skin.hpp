@@ -49,6 +49,7 @@
 #include "lacrima/materials/bsdf.hpp"
 #include "lacrima/materials/material.hpp"
 #include "lacrima/materials/microfacet.hpp"
+#include "lacrima/materials/skin_relief.hpp"
 
 namespace lacrima {
 
@@ -89,10 +90,7 @@ class SkinBsdf final : public Bsdf {
   GgxDistribution broad_;  // alpha = roughness2^2, weight lobeMix_
   float lobeMix_;          // in [0, 1]; 0 skips the broad lobe everywhere (skin v1, bitwise)
   float diffuseNorm_;      // 1 / (pi (1 - Fbar))
-  float poreScale_;
-  float poreDepth_;
-  float furrowScale_;
-  float furrowDepth_;
+  ReliefFields relief_;  // pores and furrows; depths 0 where their scale or depth is not positive
   std::optional<Vec3> reliefGradientHere_;
   bool hasDiffuseLobe_;    // false with subsurface: the renderer's random walk replaces the base
 };

@@ -27,9 +27,15 @@ struct SkinRelief {
   float visibility = 1.0f;       // F above: the cosine-weighted fraction of the sky seen from here
 };
 
-// The relief of `skin` at world position p (a smooth surface: zero gradient, visibility 1, when
-// both poreDepth and furrowDepth are 0).
-SkinRelief skinReliefAt(const SkinParams& skin, const Vec3& p);
+// The relief of pores (poreScale, poreDepth) and furrows (furrowScale, furrowDepth) at world
+// position p; a smooth surface (zero gradient, visibility 1) where both depths are 0.
+struct ReliefFields {
+  float poreScale, poreDepth, furrowScale, furrowDepth;
+};
+SkinRelief skinReliefAt(const ReliefFields& fields, const Vec3& p);
+inline SkinRelief skinReliefAt(const SkinParams& skin, const Vec3& p) {
+  return skinReliefAt(ReliefFields{skin.poreScale, skin.poreDepth, skin.furrowScale, skin.furrowDepth}, p);
+}
 
 // 1 - cavity (1 - visibility): the factor on the albedo.
 float cavityAlbedoFactor(const SkinParams& skin, const SkinRelief& relief);

@@ -95,6 +95,7 @@ class DfsphSolver {
   const StepStats& lastStep() const { return stats_; }
 
  private:
+  void advanceBy(double dt);  // one step of dt
   void updateNeighbours();
   void computeDensitiesAndFactors();
   double adaptedTimeStep() const;
