@@ -134,6 +134,13 @@ void EnvironmentMap::buildDistribution() {
   }
   marginalCdf_.assign(std::size_t(rows) + 1, 0.0f);
   detail::buildCdf(rowWeights, marginalCdf_);
+  // Guide tables as wide as their CDFs: about one CDF entry per guide cell.
+  marginalGuide_.assign(marginalCdf_.size(), 0);
+  detail::buildGuide(marginalCdf_, marginalGuide_);
+  conditionalGuide_.assign(conditionalCdf_.size(), 0);
+  for (int r = 0; r < rows; ++r)
+    detail::buildGuide(std::span<const float>(conditionalCdf_).subspan(std::size_t(r) * rowStride, rowStride),
+                       std::span<int>(conditionalGuide_).subspan(std::size_t(r) * rowStride, rowStride));
 }
 
 // v at the top of cell row r (0 <= r <= height + 1): the pole, then the rows of texel centres.
@@ -257,10 +264,11 @@ float EnvironmentMap::pdfIn(const Cell& cell, float sinTheta) const {
 }
 
 EnvironmentSample EnvironmentMap::sample(const Vec2& u) const {
-  const detail::CdfSample rowSample = detail::sampleCdf(marginalCdf_, u.y());
-  const std::span<const float> row(&conditionalCdf_[std::size_t(rowSample.index) * (std::size_t(width_) + 1)],
-                                   std::size_t(width_) + 1);
-  const detail::CdfSample columnSample = detail::sampleCdf(row, u.x());
+  const detail::CdfSample rowSample = detail::sampleCdf(marginalCdf_, marginalGuide_, u.y());
+  const std::size_t rowStart = std::size_t(rowSample.index) * (std::size_t(width_) + 1);
+  const std::span<const float> row(&conditionalCdf_[rowStart], std::size_t(width_) + 1);
+  const std::span<const int> rowGuide(&conditionalGuide_[rowStart], std::size_t(width_) + 1);
+  const detail::CdfSample columnSample = detail::sampleCdf(row, rowGuide, u.x());
   const double top = cellRowTop(rowSample.index), bottom = cellRowTop(rowSample.index + 1);
   float su = (float(columnSample.index) + 0.5f + columnSample.offset) / float(width_);
   if (su >= 1.0f) su -= 1.0f;  // the cell across the seam

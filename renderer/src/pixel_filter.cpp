@@ -97,7 +97,7 @@ double filterProfile(const PixelFilter& filter, double x) {
 }
 
 FilterSampler::FilterSampler(const PixelFilter& filter)
-    : radius_(0.5f * filter.width), cdf_(kBins + 1), binWeight_(kBins) {
+    : radius_(0.5f * filter.width), cdf_(kBins + 1), binWeight_(kBins), guide_(kBins + 1) {
   std::vector<double> binIntegral(kBins), magnitude(kBins);
   const double binWidth = double(filter.width) / kBins;
   double sum = 0.0, sumAbs = 0.0;
@@ -109,6 +109,7 @@ FilterSampler::FilterSampler(const PixelFilter& filter)
     sumAbs += magnitude[i];
   }
   detail::buildCdf(magnitude, cdf_);
+  detail::buildGuide(cdf_, guide_);
   // f / p for a sample in bin i: (b_i / binWidth) / (|b_i| / sumAbs / binWidth), divided by the
   // realised filter's integral `sum` so that E[weight] = 1. Without negative lobes sumAbs and sum
   // are the same double, and the weight is exactly 1.
@@ -117,7 +118,7 @@ FilterSampler::FilterSampler(const PixelFilter& filter)
 }
 
 FilterSampler::AxisSample FilterSampler::sampleAxis(float u) const {
-  const detail::CdfSample s = detail::sampleCdf(cdf_, u);
+  const detail::CdfSample s = detail::sampleCdf(cdf_, guide_, u);
   const float x = -radius_ + (float(s.index) + s.offset) * (2.0f * radius_ / float(kBins));
   return {std::clamp(x, -radius_, radius_), binWeight_[s.index]};
 }

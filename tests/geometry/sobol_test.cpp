@@ -53,6 +53,20 @@ TEST(Sobol, ReverseBitsIsAnInvolutionWithKnownValues) {
   for (uint32_t v : {0u, 7u, 0xdeadbeefu, 0xffffffffu}) EXPECT_EQ(reverseBits32(reverseBits32(v)), v);
 }
 
+// The sampler's hot path reads the reversed table and scrambles in reversed order: it must give
+// exactly the points and scrambles of the plain definitions.
+TEST(Sobol, ReversedTableAndScrambleMatchThePlainDefinitions) {
+  EXPECT_EQ(reverseBits32Constexpr(0x12345678u), 0x1E6A2C48u);
+  for (int dimension = 0; dimension < 4; ++dimension)
+    for (uint32_t i = 0; i < 5000; i += (i < 1100 ? 1 : 37)) {
+      ASSERT_EQ(sobolSampleReversed(i, dimension), reverseBits32(sobolSample(i, dimension))) << dimension << " " << i;
+      const uint32_t seed = 0x9e3779b9u * (i + 1) + uint32_t(dimension);
+      ASSERT_EQ(reverseBits32(owenScrambleReversed(sobolSampleReversed(i, dimension), seed)),
+                owenScramble(sobolSample(i, dimension), seed));
+    }
+  EXPECT_EQ(sobolSample(0xffffffffu, 0), 0xffffffffu);  // every direction number of dimension 0
+}
+
 // The first eight points of the Sobol sequence's first two dimensions in natural (not Gray-code) order
 // (Sobol' 1967; Joe & Kuo 2008).
 TEST(Sobol, FirstPointsMatchTheSequence) {

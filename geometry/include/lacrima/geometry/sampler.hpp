@@ -122,7 +122,9 @@ class PixelSampler {
     uint64_t scramble = hash;
     for (int i = 0; i < count; ++i) {
       scramble = mix64(scramble);
-      u[i] = fractionBitsToUnitFloat(owenScramble(sobolSample(index, i), uint32_t(scramble >> 32)));
+      // owenScramble(sobolSample(index, i), seed) with the first reversal folded into the table.
+      const uint32_t scrambled = owenScrambleReversed(sobolSampleReversed(index, i), uint32_t(scramble >> 32));
+      u[i] = fractionBitsToUnitFloat(reverseBits32(scrambled));
     }
   }
 

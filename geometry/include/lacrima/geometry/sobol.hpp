@@ -23,12 +23,12 @@
 
 namespace lacrima {
 
+// The bytes reversed by one instruction, then the bits within each byte.
 inline uint32_t reverseBits32(uint32_t v) {
+  v = __builtin_bswap32(v);
   v = ((v >> 1) & 0x55555555u) | ((v & 0x55555555u) << 1);
   v = ((v >> 2) & 0x33333333u) | ((v & 0x33333333u) << 2);
-  v = ((v >> 4) & 0x0F0F0F0Fu) | ((v & 0x0F0F0F0Fu) << 4);
-  v = ((v >> 8) & 0x00FF00FFu) | ((v & 0x00FF00FFu) << 8);
-  return (v >> 16) | (v << 16);
+  return ((v >> 4) & 0x0F0F0F0Fu) | ((v & 0x0F0F0F0Fu) << 4);
 }
 
 // The direction numbers of the Sobol sequence's first four dimensions, as 32-bit fractions:
@@ -66,13 +66,40 @@ constexpr SobolDirections makeSobolDirections() {
 
 inline constexpr SobolDirections kSobolDirections = makeSobolDirections();
 
-// Point `index` of Sobol dimension `dimension` (0-3), as 32 fraction bits: the xor of the
-// direction numbers of index's set bits (natural order, not Gray code).
-inline uint32_t sobolSample(uint32_t index, int dimension) {
+constexpr uint32_t reverseBits32Constexpr(uint32_t v) {
+  uint32_t r = 0;
+  for (int k = 0; k < 32; ++k) r |= ((v >> k) & 1u) << (31 - k);
+  return r;
+}
+
+// The same direction numbers with their bits reversed (least significant = first fraction bit):
+// the order Owen scrambling works in (owenScrambleReversed), so the sampler's hot path skips a
+// reversal. Bit reversal commutes with xor, so a point built from these is the reversed point.
+constexpr SobolDirections makeReversedSobolDirections() {
+  SobolDirections d = kSobolDirections;
+  for (auto& dimension : d.v)
+    for (uint32_t& v : dimension) v = reverseBits32Constexpr(v);
+  return d;
+}
+
+inline constexpr SobolDirections kReversedSobolDirections = makeReversedSobolDirections();
+
+// The xor of the direction numbers of index's set bits (natural order, not Gray code), without
+// a branch per bit (the bits of a shuffled index are unpredictable).
+inline uint32_t xorOfDirections(const uint32_t (&directions)[32], uint32_t index) {
   uint32_t result = 0;
-  for (int k = 0; index != 0; index >>= 1, ++k)
-    if (index & 1u) result ^= kSobolDirections.v[dimension][k];
+  for (int k = 0; index != 0; index >>= 1, ++k) result ^= directions[k] & (0u - (index & 1u));
   return result;
+}
+
+// Point `index` of Sobol dimension `dimension` (0-3), as 32 fraction bits.
+inline uint32_t sobolSample(uint32_t index, int dimension) {
+  return xorOfDirections(kSobolDirections.v[dimension], index);
+}
+
+// The same point with its bits reversed: reverseBits32(sobolSample(index, dimension)).
+inline uint32_t sobolSampleReversed(uint32_t index, int dimension) {
+  return xorOfDirections(kReversedSobolDirections.v[dimension], index);
 }
 
 // Dimension 0 directly: the base-2 radical inverse of index.
@@ -80,14 +107,19 @@ inline uint32_t sobolDimension0(uint32_t index) { return reverseBits32(index); }
 
 // Nested uniform scramble of 32 fraction bits (Burley 2020): each output bit is its input bit
 // flipped by a hash of the bits above it (more significant), so the scramble keeps nets nets.
-inline uint32_t owenScramble(uint32_t bits, uint32_t seed) {
-  uint32_t v = reverseBits32(bits);
+// owenScrambleReversed works on the bits in reversed order (the first fraction bit least
+// significant), where a multiply carries each bit's influence to the bits after it.
+inline uint32_t owenScrambleReversed(uint32_t v, uint32_t seed) {
   v ^= v * 0x3d20adeau;
   v += seed;
   v *= (seed >> 16) | 1u;
   v ^= v * 0x05526c56u;
   v ^= v * 0x53a22864u;
-  return reverseBits32(v);
+  return v;
+}
+
+inline uint32_t owenScramble(uint32_t bits, uint32_t seed) {
+  return reverseBits32(owenScrambleReversed(reverseBits32(bits), seed));
 }
 
 // Element i of a random permutation of [0, n) chosen by seed (Kensler 2013, Listing 3; cycle

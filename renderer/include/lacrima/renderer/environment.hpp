@@ -45,6 +45,8 @@ class EnvironmentMap {
   float rotation_ = 0.0f;
   std::vector<float> marginalCdf_;      // height + 2 (height + 1 cell rows)
   std::vector<float> conditionalCdf_;   // (height + 1) * (width + 1)
+  std::vector<int> marginalGuide_;      // guide tables of the CDFs (distribution.hpp): height + 2
+  std::vector<int> conditionalGuide_;   // (height + 1) * (width + 1)
   std::size_t clampedTexels_ = 0;
 
   // The cell between texel centres that holds (u, v) and the position in it: the bilinear

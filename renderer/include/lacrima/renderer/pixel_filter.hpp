@@ -65,6 +65,7 @@ class FilterSampler {
   float radius_;
   std::vector<float> cdf_;         // kBins + 1, over [-radius, radius], proportional to |bin integral|
   std::vector<float> binWeight_;   // kBins: sign(bin integral) * integral |f1| / integral f1
+  std::vector<int> guide_;         // kBins + 1: the CDF's guide table (distribution.hpp)
 };
 
 }  // namespace lacrima
