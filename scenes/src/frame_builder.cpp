@@ -11,6 +11,7 @@
 #include "asset_pose.hpp"
 #include "eye_frame.hpp"
 #include "flesh_frame.hpp"
+#include "sph_liquid.hpp"
 #include "lacrima/geometry/detail_patterns.hpp"
 #include "lacrima/geometry/dripping_tear.hpp"
 #include "lacrima/geometry/mesh.hpp"
@@ -386,6 +387,11 @@ Frame buildFrame(const Shot& shot, int frameNumber, FrameBuildTimes* times) {
       shotfile::addLiquidTear(tear, liquidRuns[i], open[tear.asset], closePtr ? &(*closePtr)[tear.asset] : nullptr,
                               assetMeshIndex(shot, open, tear.asset, tear.sourcePoint.primitive), frame);
     }
+  }
+
+  {
+    const StageClock clock(&t.liquidSeconds);
+    shotfile::addSphLiquids(shot, shutter.open, shutter.close, frame);
   }
 
   const StageClock clock(&t.otherSeconds);

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "lacrima/sph/surface_tension.hpp"
 
@@ -261,6 +262,26 @@ void DfsphSolver::step() { advanceBy(adaptedTimeStep()); }
 
 void DfsphSolver::advanceTo(double time) {
   while (time_ < time - 1e-12) advanceBy(std::min(adaptedTimeStep(), time - time_));
+}
+
+void DfsphSolver::setState(std::vector<Vec3d> positions, std::vector<Vec3d> velocities, double time) {
+  if (positions.size() != velocities.size())
+    throw std::invalid_argument("DfsphSolver::setState: positions and velocities differ in count");
+  x_ = std::move(positions);
+  v_ = std::move(velocities);
+  time_ = time;
+  rho_.assign(x_.size(), params_.restDensity);
+  alpha_.assign(x_.size(), 0.0);
+  pressureKappa_.assign(x_.size(), 0.0);
+  updateNeighbours();
+  computeDensitiesAndFactors();
+}
+
+void DfsphSolver::addParticles(const std::vector<Vec3d>& positions, const std::vector<Vec3d>& velocities) {
+  std::vector<Vec3d> x = x_, v = v_;
+  x.insert(x.end(), positions.begin(), positions.end());
+  v.insert(v.end(), velocities.begin(), velocities.end());
+  setState(std::move(x), std::move(v), time_);
 }
 
 void DfsphSolver::advanceBy(double dt) {

@@ -28,6 +28,7 @@
 #include "lacrima/materials/material.hpp"
 #include "lacrima/renderer/environment.hpp"
 #include "lacrima/renderer/frame.hpp"
+#include "lacrima/sph/dfsph.hpp"
 #include "lacrima/scenes/animated_value.hpp"
 #include "lacrima/scenes/shot.hpp"  // Diagnostic (shot.hpp includes this file after defining it)
 
@@ -355,6 +356,7 @@ struct ShotEye {
 
 namespace shotfile {
 class FleshRun;  // scenes/src/flesh_frame.hpp: a flesh's simulation, advanced as frames are built
+class SphRun;  // scenes/src/sph_liquid.hpp: an SPH liquid's simulation, advanced as frames are built
 }
 
 // A sphere of the skin the flesh is simulated under (all of the part's triangles whose corners lie
@@ -410,6 +412,41 @@ struct ShotFlesh {
   std::shared_ptr<shotfile::FleshRun> run;
 };
 
+// SPH liquid (docs/shot-format.md "sph"): fluid released as drops and blocks, simulated by DFSPH
+// (lacrima/sph/dfsph.hpp) from its start frame against static colliders (shapes and asset parts
+// at their pose of that frame), surfaced per frame (sph_surface.hpp) and rendered in
+// its material, blurred by the particles' velocities.
+struct ShotSphRelease {
+  enum class Kind { Drop, Block };
+  Kind kind = Kind::Drop;
+  Vec3d center = Vec3d::Zero();  // Drop: a ball of particles
+  double radius = 0.0;
+  Vec3d min = Vec3d::Zero(), max = Vec3d::Zero();  // Block: a box of particles
+  Vec3d velocity = Vec3d::Zero();  // m/s
+  int frame = 0;                   // released at this frame (the simulation's start by default)
+};
+
+struct ShotSph {
+  std::string material;
+  uint32_t materialId = 0;
+  sph::FluidParams fluid;
+  // The frame the simulation starts at: the shot's first frame by default, or earlier (a pre-roll,
+  // so that the shot opens on liquid already in motion). Colliders are posed there.
+  int startFrame = 0;
+  std::vector<ShotSphRelease> releases;
+  std::vector<size_t> colliderShapes;  // indices into Shot::shapes
+  struct Part {
+    size_t asset = 0;
+    std::string part;
+  };
+  std::vector<Part> colliderParts;
+  double voxelsPerRadius = 2.0;  // surfacing resolution (sph::SurfaceParams)
+  int smoothing = 16;  // mean-curvature steps: a drop a dozen particles across needs many to read as smooth water
+  std::string pointer;  // "/sph/0"
+  // Made by loadShot (scenes/src/sph_liquid.hpp): the simulation, advanced as frames are built.
+  std::shared_ptr<shotfile::SphRun> run;
+};
+
 struct Shot {
   std::filesystem::path path;  // the shot file, as given to loadShot
   int version = 1;
@@ -445,6 +482,7 @@ struct Shot {
   std::vector<ShotDetail> details;
   std::vector<ShotEye> eyes;
   std::vector<ShotFlesh> flesh;
+  std::vector<ShotSph> sph;
 
   // Things that load but deserve a look (glTF loader caveats, environment texels that were
   // NaN/Inf/negative and set to 0). Each message starts with "warning: ". The tool prints them.

@@ -84,6 +84,12 @@ class DfsphSolver {
   // Steps until `time`, the last step shortened to land on it.
   void advanceTo(double time);
 
+  // Replaces the fluid by `positions` moving at `velocities` (the same count) at `time`: initial
+  // velocities, or a state read back from disk. The boundary stays.
+  void setState(std::vector<Vec3d> positions, std::vector<Vec3d> velocities, double time);
+  // Adds particles (an emitted drop) at the current time, after the existing ones.
+  void addParticles(const std::vector<Vec3d>& positions, const std::vector<Vec3d>& velocities);
+
   double time() const { return time_; }
   double particleMass() const { return mass_; }
   const FluidParams& params() const { return params_; }

@@ -1,0 +1,73 @@
+#pragma once
+// A shot's SPH liquids (ShotSph, docs/shot-format.md "sph"), frame by frame: the colliders sampled
+// into boundary particles at the liquid's start frame, the fluid released as drops and blocks at
+// their frames and simulated from that start (so any frame renders alone), surfaced at
+// shutter open and added to the frame as closed meshes of the liquid's material, each vertex moved
+// at shutter close by the velocity of the particles around it (motion blur).
+#include <mutex>
+#include <optional>
+#include <utility>
+#include <string>
+#include <vector>
+
+#include "lacrima/renderer/frame.hpp"
+#include "lacrima/scenes/shot_model.hpp"
+#include "lacrima/sph/dfsph.hpp"
+
+namespace lacrima::shotfile {
+
+struct SphProblem {
+  std::string pointer;
+  std::string message;
+};
+
+// Makes each liquid's simulation (SphRun); the problems found (a release too small to hold a
+// particle, a collider with no surface to sample).
+std::vector<SphProblem> resolveSphLiquids(Shot& shot);
+
+struct SphParticles {
+  std::vector<Vec3d> positions, velocities;
+};
+
+// The particles a release puts in the liquid: a lattice of spacing 2 r filling the drop's ball or
+// the block's box, all at the release's velocity.
+SphParticles releasedParticles(const ShotSphRelease& release, double particleRadius);
+
+// One liquid's simulation, advanced on demand. It keeps the particles at the latest whole frame
+// reached (a checkpoint) and steps from checkpoint to checkpoint, each step run by a solver seeded
+// with the checkpoint's particles alone (DfsphSolver::setState, no warm start carried over), and a
+// release due at a frame added at its checkpoint. A time between checkpoints is reached by a solver
+// seeded at the checkpoint before it, which the run does not keep. So the particles at any time are
+// a function of that time alone, whatever was asked before: a frame built alone, in a sequence or
+// after a later frame (which starts again from the liquid's start) gets the same particles, bit for
+// bit. Thread-safe.
+class SphRun {
+ public:
+  SphRun(const Shot& shot, const ShotSph& liquid);
+
+  // The particles at a (fractional) frame; none before the first release.
+  SphParticles particlesAt(double frame);
+  size_t boundaryParticleCount() const { return boundary_.positions.size(); }
+
+ private:
+  // The particles of the releases at whole frame `index` (frames since the start).
+  void addReleasesAt(long index, SphParticles& particles) const;
+  // The checkpoint after `particles` at whole frame `index`: stepped one frame, then released.
+  SphParticles nextCheckpoint(const SphParticles& particles, long index) const;
+  // `particles` at whole frame `index` stepped on to `seconds` (within the frame after it).
+  SphParticles steppedTo(const SphParticles& particles, long index, double seconds) const;
+
+  sph::FluidParams params_;
+  sph::BoundaryParticles boundary_;
+  std::vector<std::pair<long, SphParticles>> releases_;  // (whole frame since the start, particles)
+  double startFrame_, fps_;
+
+  std::mutex mutex_;
+  long checkpointIndex_ = -1;  // none yet
+  SphParticles checkpoint_;
+};
+
+// The liquids' surfaces at shutter open (and their motion to shutter close) added to `frame`.
+void addSphLiquids(const Shot& shot, double openFrame, double closeFrame, Frame& frame);
+
+}  // namespace lacrima::shotfile

@@ -1,0 +1,123 @@
+// The shot format's SPH liquids (docs/shot-format.md "sph", scenes/src/sph_liquid.hpp): the
+// surfaced liquid in the frame (closed, in its material, blurred by the particles' velocities, at
+// rest on its collider), any frame built alone equal to the same frame built in a sequence or
+// after a later one, and bad input reported at its JSON path.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+
+#include "lacrima/geometry/mesh.hpp"
+#include "lacrima/scenes/shot.hpp"
+#include "scenes/shot_test_support.hpp"
+
+namespace lacrima {
+namespace {
+
+using test::expectSingleError;
+using test::replaced;
+using test::writeShot;
+
+// A 1.5 mm drop of 0.25 mm particles (about 110) released 2.6 mm above a table at 0.3 m/s, at
+// 240 fps from frame 1; the shot renders frames 2-4 (or from `firstFrame`).
+std::string dropShot(const std::string& sphExtra = "", int firstFrame = 2) {
+  return R"({
+  "version": 1,
+  "frames": {"start": )" + std::to_string(firstFrame) + R"(, "end": 4, "fps": 240},
+  "output": "out.####.exr",
+  "render": {"width": 8, "height": 8, "spp": 1},
+  "camera": {"position": [0, 0.01, 0.03], "lookAt": [0, 0, 0], "fov": 30, "shutter": {"open": -0.25, "close": 0.25}},
+  "materials": {"table": {"type": "diffuse"}, "water": {"type": "water"}},
+  "shapes": [{"type": "rectangle", "center": [0, 0, 0], "size": [0.02, 0.02], "normal": [0, 1, 0], "material": "table"}],
+  "sph": [{"material": "water", "start": 1, "particleRadius": 0.00025,
+           "drops": [{"center": [0, 0.0041, 0], "radius": 0.0015, "velocity": [0, -0.3, 0]}],
+           "colliders": [{"shape": 0}], "surfaceTension": 20)" + sphExtra + R"(}]
+})";
+}
+
+const MeshInstance* liquidMesh(const Frame& frame) {
+  const auto it = std::find_if(frame.meshes.begin(), frame.meshes.end(),
+                               [](const MeshInstance& m) { return m.mesh.name == "sph 0"; });
+  return it == frame.meshes.end() ? nullptr : &*it;
+}
+
+TEST(SphShot, TheSurfacedDropIsAClosedWaterMeshBlurredByItsMotionAboveTheTable) {
+  const Shot shot = loadShot(writeShot("sph_drop.json", dropShot()));
+  ASSERT_EQ(shot.sph.size(), 1u);
+  const Frame frame = buildFrame(shot, 2);
+  const MeshInstance* liquid = liquidMesh(frame);
+  ASSERT_NE(liquid, nullptr);
+  EXPECT_EQ(frame.materials[liquid->materialId].name, "water");
+  EXPECT_GT(liquid->mesh.triangleCount(), 100u);
+  EXPECT_EQ(countBoundaryEdges(liquid->mesh), 0u) << "a water surface must bound its volume";
+  ASSERT_EQ(liquid->positionsAtClose.size(), liquid->mesh.positions.size());
+  // Falling at 0.33 m/s at shutter open, over half a frame (1/480 s): the surface moves down ~0.7 mm.
+  float meanDrop = 0.0f, lowest = 1.0f;
+  for (size_t i = 0; i < liquid->mesh.positions.size(); ++i) {
+    meanDrop += liquid->mesh.positions[i].y() - liquid->positionsAtClose[i].y();
+    lowest = std::min(lowest, liquid->mesh.positions[i].y());
+  }
+  meanDrop /= float(liquid->mesh.positions.size());
+  EXPECT_GT(meanDrop, 0.5e-3f);
+  EXPECT_LT(meanDrop, 0.9e-3f);
+  // Later the drop lies on the table: nothing of it below the table's boundary layer.
+  const Frame later = buildFrame(shot, 4);
+  const MeshInstance* landed = liquidMesh(later);
+  ASSERT_NE(landed, nullptr);
+  for (const Vec3& p : landed->mesh.positions) ASSERT_GT(p.y(), -0.5e-3f);
+}
+
+TEST(SphShot, AFrameBuiltAloneEqualsTheSameFrameInASequenceOrAfterALaterOne) {
+  const Shot sequence = loadShot(writeShot("sph_sequence.json", dropShot()));
+  buildFrame(sequence, 2);
+  const Frame inSequence = buildFrame(sequence, 3);
+  const Shot alone = loadShot(writeShot("sph_alone.json", dropShot()));
+  const Frame builtAlone = buildFrame(alone, 3);
+  ASSERT_NE(liquidMesh(inSequence), nullptr);
+  ASSERT_NE(liquidMesh(builtAlone), nullptr);
+  EXPECT_EQ(liquidMesh(inSequence)->mesh.positions, liquidMesh(builtAlone)->mesh.positions);
+  // Backwards: frame 2 after frame 4 starts the simulation again.
+  buildFrame(alone, 4);
+  const Frame again = buildFrame(alone, 2);
+  const Frame first = buildFrame(sequence, 2);
+  EXPECT_EQ(liquidMesh(again)->mesh.positions, liquidMesh(first)->mesh.positions);
+}
+
+TEST(SphShot, ALaterReleaseAddsItsDropAtItsFrame) {
+  const std::string text = replaced(dropShot(), R"("velocity": [0, -0.3, 0]}])",
+                                    R"("velocity": [0, -0.3, 0]}, {"center": [0.006, 0.004, 0], "radius": 0.0012, "frame": 3}])");
+  const Shot shot = loadShot(writeShot("sph_two_drops.json", text));
+  const auto xExtent = [](const MeshInstance& m) {
+    float hi = -1.0f;
+    for (const Vec3& p : m.mesh.positions) hi = std::max(hi, p.x());
+    return hi;
+  };
+  EXPECT_LT(xExtent(*liquidMesh(buildFrame(shot, 2))), 0.004f);  // only the first drop
+  EXPECT_GT(xExtent(*liquidMesh(buildFrame(shot, 4))), 0.006f);  // the second one is there
+}
+
+TEST(SphShot, BadInputIsReportedAtItsPath) {
+  expectSingleError("sph_no_material.json", replaced(dropShot(), R"("material": "water", )", ""),
+                    "/sph/0: missing required key 'material' (the name of a material in 'materials' (e.g. one of type "
+                    "'water'))");
+  expectSingleError("sph_tiny_drop.json", replaced(dropShot(), R"("radius": 0.0015)", R"("radius": 0.0001)"),
+                    "/sph/0/drops/0: holds no particle: make it larger than the particle spacing (0.0005 m = 2 x "
+                    "particleRadius)");
+  expectSingleError("sph_bad_shape.json", replaced(dropShot(), R"({"shape": 0})", R"({"shape": 3})"),
+                    "/sph/0/colliders/0/shape: expected an integer in [0, 0], found 3");
+  expectSingleError("sph_early_release.json", replaced(dropShot(), R"("velocity": [0, -0.3, 0]})",
+                                                       R"("velocity": [0, -0.3, 0], "frame": 0})"),
+                    "/sph/0/drops/0/frame: expected an integer in [1, 4], found 0");
+  expectSingleError("sph_late_start.json", replaced(dropShot(), R"("start": 1)", R"("start": 3)"),
+                    "/sph/0/start: expected an integer <= 2, found 3");
+  expectSingleError("sph_negative_radius.json", replaced(dropShot(), R"("particleRadius": 0.00025)", R"("particleRadius": -1)"),
+                    "/sph/0/particleRadius: expected a number > 0, found -1");
+  expectSingleError("sph_unknown_key.json", dropShot(R"(, "viscocity": 0.1)"),
+                    "/sph/0/viscocity: unknown key 'viscocity'; did you mean 'viscosity'?");
+  expectSingleError("sph_no_fluid.json",
+                    replaced(dropShot(), R"("drops": [{"center": [0, 0.0041, 0], "radius": 0.0015, "velocity": [0, -0.3, 0]}],)", ""),
+                    "/sph/0/drops: an SPH liquid needs at least one of 'drops' or 'blocks' (the fluid it releases)");
+}
+
+}  // namespace
+}  // namespace lacrima
