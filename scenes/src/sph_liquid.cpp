@@ -6,7 +6,10 @@
 #include <cmath>
 
 #include "asset_pose.hpp"
+#include "lacrima/flesh/flesh_state_cache.hpp"
+#include "lacrima/flesh/fnv1a.hpp"
 #include "lacrima/geometry/shapes.hpp"
+#include "lacrima/geometry/user_cache.hpp"
 #include "lacrima/sph/neighbour_grid.hpp"
 #include "lacrima/sph/sph_kernel.hpp"
 #include "lacrima/sph/sph_surface.hpp"
@@ -75,7 +78,39 @@ std::vector<Vec3d> vertexVelocities(const TriangleMesh& mesh, const SphParticles
   return velocities;
 }
 
+template <typename T>
+void hashVector(flesh::Fnv1a& hash, const std::vector<T>& values) {
+  hash.add(uint64_t(values.size()));
+  if (!values.empty()) hash.add(values.data(), values.size() * sizeof(T));
+}
+
+// The key of a simulation: its fluid parameters, boundary, releases and frame rate.
+uint64_t simulationKey(const sph::FluidParams& p, const sph::BoundaryParticles& boundary,
+                       const std::vector<std::pair<long, SphParticles>>& releases, double fps) {
+  flesh::Fnv1a hash;
+  hash.add(uint64_t(0x5048'0001));  // the checkpoint format: bump when the solver's results change
+  for (double x : {p.particleRadius, p.restDensity, p.xsphViscosity, p.surfaceTension, p.adhesion, p.gravity.x(),
+                   p.gravity.y(), p.gravity.z(), p.cflFactor, p.minTimeStep, p.maxTimeStep, p.maxDensityError,
+                   p.maxDivergenceError, fps})
+    hash.add(x);
+  hash.add(p.minIterations);
+  hash.add(p.maxIterations);
+  hashVector(hash, boundary.positions);
+  hashVector(hash, boundary.volumes);
+  for (const auto& [frame, particles] : releases) {
+    hash.add(frame);
+    hashVector(hash, particles.positions);
+    hashVector(hash, particles.velocities);
+  }
+  return hash.value();
+}
+
 }  // namespace
+
+std::filesystem::path sphStateDirectory() {
+  const std::filesystem::path cache = userCacheDirectory("sph");
+  return cache.empty() ? cache : cache / "states";
+}
 
 SphParticles releasedParticles(const ShotSphRelease& release, double particleRadius) {
   const double spacing = 2.0 * particleRadius;
@@ -99,6 +134,44 @@ SphRun::SphRun(const Shot& shot, const ShotSph& liquid)
       fps_(shot.fps) {
   for (const ShotSphRelease& release : liquid.releases)
     releases_.emplace_back(long(release.frame - liquid.startFrame), releasedParticles(release, params_.particleRadius));
+  key_ = simulationKey(params_, boundary_, releases_, fps_);
+  stateDirectory_ = sphStateDirectory();
+}
+
+uint64_t SphRun::checkpointKey(long index) const {
+  flesh::Fnv1a hash(key_);
+  hash.add(index);
+  return hash.value();
+}
+
+size_t SphRun::particleCountAt(long index) const {
+  size_t count = 0;
+  for (const auto& [frame, particles] : releases_)
+    if (frame <= index) count += particles.positions.size();
+  return count;
+}
+
+// Checkpoints are filed in the flesh's state format (positions and velocities under a key).
+std::optional<SphParticles> SphRun::readCheckpoint(long index) const {
+  if (stateDirectory_.empty()) return std::nullopt;
+  const uint64_t key = checkpointKey(index);
+  std::optional<flesh::FleshState> state =
+      flesh::readFleshState(flesh::fleshStateFile(stateDirectory_, index, key), key, particleCountAt(index));
+  if (!state) return std::nullopt;
+  return SphParticles{std::move(state->positions), std::move(state->velocities)};
+}
+
+void SphRun::fileCheckpoint() const {
+  if (stateDirectory_.empty() || checkpoint_.positions.empty()) return;
+  try {
+    std::error_code ec;
+    std::filesystem::create_directories(stateDirectory_, ec);
+    const uint64_t key = checkpointKey(checkpointIndex_);
+    flesh::writeFleshState(flesh::fleshStateFile(stateDirectory_, checkpointIndex_, key),
+                           flesh::FleshState{checkpoint_.positions, checkpoint_.velocities}, key);
+  } catch (const std::exception&) {
+    // Not filed (a full or read-only disk): a later frame built alone simulates more.
+  }
 }
 
 void SphRun::addReleasesAt(long index, SphParticles& particles) const {
@@ -134,7 +207,17 @@ SphParticles SphRun::particlesAt(double frame) {
     checkpoint_ = {};
     addReleasesAt(0, checkpoint_);
   }
-  for (; checkpointIndex_ < index; ++checkpointIndex_) checkpoint_ = nextCheckpoint(checkpoint_, checkpointIndex_);
+  for (long k = index; k > checkpointIndex_; --k)  // the latest filed checkpoint ahead, if any
+    if (std::optional<SphParticles> filed = readCheckpoint(k)) {
+      checkpoint_ = std::move(*filed);
+      checkpointIndex_ = k;
+      break;
+    }
+  while (checkpointIndex_ < index) {
+    checkpoint_ = nextCheckpoint(checkpoint_, checkpointIndex_);
+    ++checkpointIndex_;
+    fileCheckpoint();
+  }
   if (seconds <= double(index) / fps_) return checkpoint_;
   return steppedTo(checkpoint_, index, seconds);
 }

@@ -4,6 +4,7 @@
 // their frames and simulated from that start (so any frame renders alone), surfaced at
 // shutter open and added to the frame as closed meshes of the liquid's material, each vertex moved
 // at shutter close by the velocity of the particles around it (motion blur).
+#include <filesystem>
 #include <mutex>
 #include <optional>
 #include <utility>
@@ -33,6 +34,10 @@ struct SphParticles {
 // the block's box, all at the release's velocity.
 SphParticles releasedParticles(const ShotSphRelease& release, double particleRadius);
 
+// Where SPH checkpoints are filed: $XDG_CACHE_HOME/lacrima/sph/states, else
+// ~/.cache/lacrima/sph/states; empty (not filed) when neither is set.
+std::filesystem::path sphStateDirectory();
+
 // One liquid's simulation, advanced on demand. It keeps the particles at the latest whole frame
 // reached (a checkpoint) and steps from checkpoint to checkpoint, each step run by a solver seeded
 // with the checkpoint's particles alone (DfsphSolver::setState, no warm start carried over), and a
@@ -40,7 +45,9 @@ SphParticles releasedParticles(const ShotSphRelease& release, double particleRad
 // seeded at the checkpoint before it, which the run does not keep. So the particles at any time are
 // a function of that time alone, whatever was asked before: a frame built alone, in a sequence or
 // after a later frame (which starts again from the liquid's start) gets the same particles, bit for
-// bit. Thread-safe.
+// bit. Each checkpoint is filed on disk (sphStateDirectory()) under a key of everything the
+// simulation depends on (fluid, colliders, releases, frame rate) and its frame, so a frame built
+// alone (a farm task) continues from the latest filed checkpoint before it. Thread-safe.
 class SphRun {
  public:
   SphRun(const Shot& shot, const ShotSph& liquid);
@@ -57,10 +64,18 @@ class SphRun {
   // `particles` at whole frame `index` stepped on to `seconds` (within the frame after it).
   SphParticles steppedTo(const SphParticles& particles, long index, double seconds) const;
 
+  // The filed checkpoint at whole frame `index`, when one is filed under its key.
+  std::optional<SphParticles> readCheckpoint(long index) const;
+  void fileCheckpoint() const;
+  uint64_t checkpointKey(long index) const;
+  size_t particleCountAt(long index) const;
+
   sph::FluidParams params_;
   sph::BoundaryParticles boundary_;
   std::vector<std::pair<long, SphParticles>> releases_;  // (whole frame since the start, particles)
   double startFrame_, fps_;
+  uint64_t key_;                          // of everything the simulation depends on
+  std::filesystem::path stateDirectory_;  // empty: checkpoints are not filed
 
   std::mutex mutex_;
   long checkpointIndex_ = -1;  // none yet

@@ -23,6 +23,8 @@
 namespace lacrima {
 namespace {
 
+using test::ScopedCacheHome;
+
 using test::expectSingleError;
 using test::ictFaceShot;
 using test::writeShot;
@@ -100,23 +102,6 @@ TEST(FleshShot, AStillFaceIsLeftBitwiseAsTheRigMadeIt) {
   const Shot rig = loadShot(writeShot("flesh_still_rig.json", ictFaceShot("", "", still, 6)));
   for (int f : {1, 6}) EXPECT_EQ(difference(faceSkin(buildFrame(flesh, f)), faceSkin(buildFrame(rig, f))).moved, 0u) << f;
 }
-
-// Points $XDG_CACHE_HOME (where flesh volumes and states are filed) at a folder of the test's own
-// for its lifetime.
-class ScopedCacheHome {
- public:
-  explicit ScopedCacheHome(const std::filesystem::path& dir) {
-    if (const char* old = std::getenv("XDG_CACHE_HOME")) old_ = old;
-    setenv("XDG_CACHE_HOME", dir.c_str(), 1);
-  }
-  ~ScopedCacheHome() {
-    if (old_) setenv("XDG_CACHE_HOME", old_->c_str(), 1);
-    else unsetenv("XDG_CACHE_HOME");
-  }
-
- private:
-  std::optional<std::string> old_;
-};
 
 TEST(FleshShot, AFrameBuiltAloneIsTheFrameBuiltInSequenceWithAnyThreadCount) {
   // States filed by the sequence are not where the frame built alone looks: it simulates from the start.

@@ -2,7 +2,9 @@
 // Helpers shared by the shot-file tests.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <filesystem>
+#include <optional>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -91,5 +93,24 @@ inline void expectSingleError(const std::string& name, const std::string& text, 
   ASSERT_EQ(diagnostics.size(), 1u) << shotErrorOf(path);
   EXPECT_EQ(diagnostics[0].jsonPath + ": " + firstLineOf(diagnostics[0].message), pointerAndMessage);
 }
+
+// Points $XDG_CACHE_HOME (where flesh volumes and flesh and SPH states are filed) at a folder of
+// the test's own for its lifetime.
+class ScopedCacheHome {
+ public:
+  explicit ScopedCacheHome(const std::filesystem::path& dir) {
+    if (const char* old = std::getenv("XDG_CACHE_HOME")) old_ = old;
+    setenv("XDG_CACHE_HOME", dir.c_str(), 1);
+  }
+  ~ScopedCacheHome() {
+    if (old_) setenv("XDG_CACHE_HOME", old_->c_str(), 1);
+    else unsetenv("XDG_CACHE_HOME");
+  }
+  ScopedCacheHome(const ScopedCacheHome&) = delete;
+  ScopedCacheHome& operator=(const ScopedCacheHome&) = delete;
+
+ private:
+  std::optional<std::string> old_;
+};
 
 }  // namespace lacrima::test

@@ -5,6 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <optional>
 #include <string>
 
 #include "lacrima/geometry/mesh.hpp"
@@ -68,9 +71,14 @@ TEST(SphShot, TheSurfacedDropIsAClosedWaterMeshBlurredByItsMotionAboveTheTable) 
 }
 
 TEST(SphShot, AFrameBuiltAloneEqualsTheSameFrameInASequenceOrAfterALaterOne) {
+  // Each in a cache of its own: the frame built alone must not find the sequence's checkpoints.
+  const std::filesystem::path home = test::testDirectory("sph_alone_cache", true);
+  std::optional<test::ScopedCacheHome> cache(std::in_place, home / "sequence");
   const Shot sequence = loadShot(writeShot("sph_sequence.json", dropShot()));
   buildFrame(sequence, 2);
   const Frame inSequence = buildFrame(sequence, 3);
+  cache.reset();
+  cache.emplace(home / "alone");
   const Shot alone = loadShot(writeShot("sph_alone.json", dropShot()));
   const Frame builtAlone = buildFrame(alone, 3);
   ASSERT_NE(liquidMesh(inSequence), nullptr);
@@ -81,6 +89,33 @@ TEST(SphShot, AFrameBuiltAloneEqualsTheSameFrameInASequenceOrAfterALaterOne) {
   const Frame again = buildFrame(alone, 2);
   const Frame first = buildFrame(sequence, 2);
   EXPECT_EQ(liquidMesh(again)->mesh.positions, liquidMesh(first)->mesh.positions);
+}
+
+size_t filesIn(const std::filesystem::path& dir) {
+  std::error_code ec;
+  size_t count = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) count += entry.is_regular_file() ? 1 : 0;
+  return count;
+}
+
+TEST(SphShot, CheckpointsAreFiledAndAFrameBuiltLaterResumesFromThemEvenPastACorruptOne) {
+  const std::filesystem::path home = test::testDirectory("sph_cache", true);
+  const test::ScopedCacheHome cache(home);
+  const std::filesystem::path states = home / "lacrima" / "sph" / "states";
+  const Shot first = loadShot(writeShot("sph_filing.json", dropShot()));
+  const Frame simulated = buildFrame(first, 4);
+  EXPECT_EQ(filesIn(states), 2u) << "frame 4 opens at 3.75: checkpoints at frames 2 and 3 (frame 1 holds only the release)";
+  // Another load (a farm task) finds them; one of them corrupt is simulated again, to the same bits.
+  for (const auto& entry : std::filesystem::directory_iterator(states))
+    if (entry.path().filename().string().rfind("frame00002", 0) == 0) std::ofstream(entry.path()) << "garbage";
+  const Shot second = loadShot(writeShot("sph_filing.json", dropShot()));
+  EXPECT_EQ(liquidMesh(buildFrame(second, 4))->mesh.positions, liquidMesh(simulated)->mesh.positions);
+  const Shot third = loadShot(writeShot("sph_filing.json", dropShot()));
+  EXPECT_EQ(liquidMesh(buildFrame(third, 3))->mesh.positions, liquidMesh(buildFrame(first, 3))->mesh.positions);
+  // A change of the fluid files its checkpoints under other keys.
+  const Shot changed = loadShot(writeShot("sph_filing_changed.json", dropShot(R"(, "adhesion": 3)")));
+  buildFrame(changed, 3);
+  EXPECT_EQ(filesIn(states), 3u) << "frame 3 opens at 2.75: the changed fluid files its checkpoint at frame 2";
 }
 
 TEST(SphShot, ALaterReleaseAddsItsDropAtItsFrame) {
