@@ -1487,7 +1487,7 @@ class ShotReader {
       ObjectReader r(c_, *s, o.at("surface"), {"voxelsPerRadius", "smoothing"});
       if (r.ok()) {
         if (auto x = r.number("voxelsPerRadius", Range::closed(0.5, 8))) liquid.voxelsPerRadius = *x;
-        if (auto x = r.integer("smoothing", Range::closed(0, 40))) liquid.smoothing = int(*x);
+        if (auto x = r.integer("smoothing", Range::closed(0, 64))) liquid.smoothing = int(*x);
       }
     }
     if (c_.errorCount() == before) shot_.sph.push_back(liquid);

@@ -29,7 +29,7 @@ const char* kDescription =
     "      every 2nd frame of 1-48, at a quick preview quality\n"
     "  lacrima check shot.json         validate a shot file, report every problem\n"
     "  lacrima export shot.json --frames 1-48 --format obj\n"
-    "      the face, shape and tear meshes of each frame, for other tools\n"
+    "      the face, shape, tear and SPH liquid meshes of each frame, for other tools\n"
     "  lacrima info face.glb           list primitives, blendshapes and cameras of a glTF\n"
     "  lacrima info frame.0001.exr     list channels and lacrima metadata of a rendered frame\n"
     "  lacrima bench                   renderer and raw Embree throughput on the default shot\n"
@@ -158,7 +158,7 @@ const char* kExportExamples =
     "Exit status: 0 success, 2 bad input (shot, asset, options) or an output that cannot be written.";
 
 void addExport(CLI::App& app, ExportOptions& o) {
-  auto* exportCommand = app.add_subcommand("export", "Write each frame's face, shape and tear meshes (glTF or OBJ)");
+  auto* exportCommand = app.add_subcommand("export", "Write each frame's face, shape, tear and SPH liquid meshes (glTF or OBJ)");
   exportCommand->footer(kExportExamples);
   exportCommand->add_option("shot", o.shotPath, "Shot file (JSON)")->required();
   exportCommand->add_option("--frames,-f", o.frames, "Frames to export: 12, 1-48, 1-48x2 or lists like 1,5,10-12");

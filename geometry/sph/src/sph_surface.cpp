@@ -2,6 +2,8 @@
 #include "lacrima/sph/sph_surface.hpp"
 
 #include <openvdb/openvdb.h>
+#include <openvdb/tools/GridOperators.h>
+#include <openvdb/tools/Interpolation.h>
 #include <openvdb/tools/LevelSetFilter.h>
 #include <openvdb/tools/ParticlesToLevelSet.h>
 #include <openvdb/tools/VolumeToMesh.h>
@@ -53,6 +55,21 @@ TriangleMesh meshOfLevelSet(const openvdb::FloatGrid& grid) {
   return mesh;
 }
 
+// Vertex normals from the level set's gradient (trilinear between voxel centres): smooth across
+// the mesh's voxel-sized facets, whose own normals would show the voxel grid as glitter in
+// reflections and refraction.
+void setNormalsFromGradient(const openvdb::FloatGrid& grid, TriangleMesh& mesh) {
+  const openvdb::Vec3SGrid::Ptr gradient = openvdb::tools::gradient(grid);
+  const openvdb::tools::GridSampler<openvdb::Vec3SGrid, openvdb::tools::BoxSampler> sampler(*gradient);
+  computeSmoothNormals(mesh, false);  // the fallback where the gradient vanishes
+  for (size_t i = 0; i < mesh.positions.size(); ++i) {
+    const Vec3& p = mesh.positions[i];
+    const openvdb::Vec3s g = sampler.wsSample(openvdb::Vec3R(p.x(), p.y(), p.z()));
+    const Vec3 n(g.x(), g.y(), g.z());
+    if (n.norm() > 0.0f) mesh.normals[i] = n.normalized();
+  }
+}
+
 }  // namespace
 
 TriangleMesh surfaceOfParticles(const std::vector<Vec3d>& positions, double particleRadius, const SurfaceParams& params) {
@@ -68,7 +85,7 @@ TriangleMesh surfaceOfParticles(const std::vector<Vec3d>& positions, double part
   for (int i = 0; i < params.smoothingIterations; ++i) filter.meanCurvature();
   filter.offset(float(particleRadius));  // positive: the surface moves inwards by r
   TriangleMesh mesh = meshOfLevelSet(*grid);
-  computeSmoothNormals(mesh, false);
+  setNormalsFromGradient(*grid, mesh);
   return mesh;
 }
 

@@ -440,8 +440,8 @@ struct ShotSph {
     std::string part;
   };
   std::vector<Part> colliderParts;
-  double voxelsPerRadius = 2.0;  // surfacing resolution (sph::SurfaceParams)
-  int smoothing = 16;  // mean-curvature steps: a drop a dozen particles across needs many to read as smooth water
+  double voxelsPerRadius = 1.5;  // surfacing resolution (sph::SurfaceParams)
+  int smoothing = 32;  // mean-curvature steps: a drop a dozen particles across needs many to read as smooth water
   std::string pointer;  // "/sph/0"
   // Made by loadShot (scenes/src/sph_liquid.hpp): the simulation, advanced as frames are built.
   std::shared_ptr<shotfile::SphRun> run;
