@@ -38,23 +38,6 @@ TriangleMesh shapeSurface(const ShotShape& shape, double frame) {
   return makeRectangle(center, shape.edgeU, shape.edgeV);
 }
 
-// The liquid's colliders at its start frame, as one layer of boundary samples each.
-std::vector<Vec3d> colliderSamples(const Shot& shot, const ShotSph& liquid, double spacing) {
-  std::vector<Vec3d> samples;
-  const auto add = [&](const TriangleMesh& mesh) {
-    const std::vector<Vec3d> s = sph::meshSurfaceSamples(mesh, spacing);
-    samples.insert(samples.end(), s.begin(), s.end());
-  };
-  for (size_t index : liquid.colliderShapes) add(shapeSurface(shot.shapes[index], liquid.startFrame));
-  for (const ShotSph::Part& part : liquid.colliderParts) {
-    const ShotAsset& asset = shot.assets[part.asset];
-    const AssetPose pose = assetPoseAt(asset, liquid.startFrame);
-    for (size_t p = 0; p < asset.gltf->primitives.size(); ++p)
-      if (asset.gltf->primitives[p].part == part.part) add(posedPrimitive(asset, pose, p));
-  }
-  return samples;
-}
-
 // Per vertex, the kernel-weighted mean velocity of the particles within the kernel's support
 // (zero where none is: the surface lies up to a particle radius or so off the particles).
 std::vector<Vec3d> vertexVelocities(const TriangleMesh& mesh, const SphParticles& particles, double particleRadius) {
@@ -127,21 +110,75 @@ SphParticles releasedParticles(const ShotSphRelease& release, double particleRad
 }
 
 SphRun::SphRun(const Shot& shot, const ShotSph& liquid)
-    : params_(liquid.fluid),
-      boundary_(sph::boundaryFromSamples(colliderSamples(shot, liquid, 2.0 * liquid.fluid.particleRadius),
-                                         liquid.fluid.particleRadius)),
-      startFrame_(liquid.startFrame),
-      fps_(shot.fps) {
+    : params_(liquid.fluid), startFrame_(liquid.startFrame), fps_(shot.fps) {
+  for (size_t index : liquid.colliderShapes) {
+    Collider collider;
+    collider.shape = shot.shapes[index];
+    collider.moves = bool(collider.shape->centerCurve);
+    colliders_.push_back(std::move(collider));
+  }
+  for (const ShotSph::Part& part : liquid.colliderParts) {
+    Collider collider;
+    collider.asset = shot.assets[part.asset];
+    for (size_t p = 0; p < collider.asset->gltf->primitives.size(); ++p)
+      if (collider.asset->gltf->primitives[p].part == part.part) collider.primitives.push_back(p);
+    collider.moves = collider.asset->animated();
+    colliders_.push_back(std::move(collider));
+  }
+  std::vector<Vec3d> samples;
+  for (Collider& collider : colliders_) {
+    collidersMove_ = collidersMove_ || collider.moves;
+    for (const TriangleMesh& mesh : colliderMeshes(collider, startFrame_)) {
+      collider.sites.push_back(sph::meshSurfaceSites(mesh, 2.0 * params_.particleRadius));
+      const std::vector<Vec3d> positions = sph::sitePositions(mesh, collider.sites.back());
+      samples.insert(samples.end(), positions.begin(), positions.end());
+    }
+  }
+  boundary_ = sph::boundaryFromSamples(std::move(samples), params_.particleRadius);
   for (const ShotSphRelease& release : liquid.releases)
     releases_.emplace_back(long(release.frame - liquid.startFrame), releasedParticles(release, params_.particleRadius));
   key_ = simulationKey(params_, boundary_, releases_, fps_);
   stateDirectory_ = sphStateDirectory();
 }
 
+std::vector<TriangleMesh> SphRun::colliderMeshes(const Collider& collider, double frame) const {
+  if (collider.shape) return {shapeSurface(*collider.shape, frame)};
+  std::vector<TriangleMesh> meshes;
+  const AssetPose pose = assetPoseAt(*collider.asset, frame);
+  for (size_t p : collider.primitives) meshes.push_back(posedPrimitive(*collider.asset, pose, p));
+  return meshes;
+}
+
+const std::vector<Vec3d>& SphRun::boundaryAt(long index) const {
+  if (const auto it = posedBoundaries_.find(index); it != posedBoundaries_.end()) return it->second;
+  std::vector<Vec3d> positions;
+  for (const Collider& collider : colliders_) {
+    const std::vector<TriangleMesh> meshes = colliderMeshes(collider, startFrame_ + double(index));
+    for (size_t m = 0; m < meshes.size(); ++m) {
+      const std::vector<Vec3d> p = sph::sitePositions(meshes[m], collider.sites[m]);
+      positions.insert(positions.end(), p.begin(), p.end());
+    }
+  }
+  if (posedBoundaries_.size() >= 4) posedBoundaries_.erase(posedBoundaries_.begin());  // a sequence asks in order
+  return posedBoundaries_.emplace(index, std::move(positions)).first->second;
+}
+
+// Still colliders: the simulation's key and the frame. Moving ones: a chain, each frame's key the
+// one before combined with the colliders' pose there (flesh_state_cache.hpp's scheme), so a change
+// of the animation up to a frame files that frame under another key.
 uint64_t SphRun::checkpointKey(long index) const {
-  flesh::Fnv1a hash(key_);
-  hash.add(index);
-  return hash.value();
+  if (!collidersMove_) {
+    flesh::Fnv1a hash(key_);
+    hash.add(index);
+    return hash.value();
+  }
+  while (long(keys_.size()) <= index) {
+    flesh::Fnv1a hash(keys_.empty() ? key_ : keys_.back());
+    hash.add(long(keys_.size()));
+    hashVector(hash, boundaryAt(long(keys_.size())));
+    keys_.push_back(hash.value());
+  }
+  return keys_[size_t(index)];
 }
 
 size_t SphRun::particleCountAt(long index) const {
@@ -186,6 +223,13 @@ SphParticles SphRun::steppedTo(const SphParticles& particles, long index, double
   if (particles.positions.empty()) return particles;
   sph::DfsphSolver solver(params_, particles.positions, boundary_);
   solver.setState(particles.positions, particles.velocities, double(index) / fps_);
+  if (collidersMove_) {  // in a straight line from this frame's pose to the next one's
+    const std::vector<Vec3d> from = boundaryAt(index);  // copies: boundaryAt may drop old frames
+    const std::vector<Vec3d> to = boundaryAt(index + 1);
+    std::vector<Vec3d> velocities(from.size());
+    for (size_t b = 0; b < from.size(); ++b) velocities[b] = (to[b] - from[b]) * fps_;
+    solver.moveBoundary(from, std::move(velocities));
+  }
   solver.advanceTo(seconds);
   return {solver.positions(), solver.velocities()};
 }

@@ -5,6 +5,7 @@
 // shutter open and added to the frame as closed meshes of the liquid's material, each vertex moved
 // at shutter close by the velocity of the particles around it (motion blur).
 #include <filesystem>
+#include <map>
 #include <mutex>
 #include <optional>
 #include <utility>
@@ -45,7 +46,9 @@ std::filesystem::path sphStateDirectory();
 // seeded at the checkpoint before it, which the run does not keep. So the particles at any time are
 // a function of that time alone, whatever was asked before: a frame built alone, in a sequence or
 // after a later frame (which starts again from the liquid's start) gets the same particles, bit for
-// bit. Each checkpoint is filed on disk (sphStateDirectory()) under a key of everything the
+// bit. Colliders that move (a keyed shape, an animated asset part) move their boundary particles
+// (the same sites on their triangles) from their pose at one whole frame to the next in a straight
+// line within the frame. Each checkpoint is filed on disk (sphStateDirectory()) under a key of everything the
 // simulation depends on (fluid, colliders, releases, frame rate) and its frame, so a frame built
 // alone (a farm task) continues from the latest filed checkpoint before it. Thread-safe.
 class SphRun {
@@ -64,6 +67,18 @@ class SphRun {
   // `particles` at whole frame `index` stepped on to `seconds` (within the frame after it).
   SphParticles steppedTo(const SphParticles& particles, long index, double seconds) const;
 
+  // A collider as the run keeps it: a copy of its shape or asset, and its boundary particles' sites.
+  struct Collider {
+    std::optional<ShotShape> shape;
+    std::optional<ShotAsset> asset;  // its meshes and rig shared with the shot's
+    std::vector<size_t> primitives;   // of the asset, in its part
+    std::vector<std::vector<sph::SurfaceSite>> sites;  // per mesh (one for a shape)
+    bool moves = false;
+  };
+  // The collider's meshes at a (whole) frame.
+  std::vector<TriangleMesh> colliderMeshes(const Collider& collider, double frame) const;
+  // Every boundary particle's position at whole frame `index` (frames since the start).
+  const std::vector<Vec3d>& boundaryAt(long index) const;
   // The filed checkpoint at whole frame `index`, when one is filed under its key.
   std::optional<SphParticles> readCheckpoint(long index) const;
   void fileCheckpoint() const;
@@ -71,13 +86,17 @@ class SphRun {
   size_t particleCountAt(long index) const;
 
   sph::FluidParams params_;
-  sph::BoundaryParticles boundary_;
+  std::vector<Collider> colliders_;
+  bool collidersMove_ = false;
+  sph::BoundaryParticles boundary_;  // at the start
   std::vector<std::pair<long, SphParticles>> releases_;  // (whole frame since the start, particles)
   double startFrame_, fps_;
   uint64_t key_;                          // of everything the simulation depends on
   std::filesystem::path stateDirectory_;  // empty: checkpoints are not filed
 
   std::mutex mutex_;
+  mutable std::map<long, std::vector<Vec3d>> posedBoundaries_;  // boundaryAt's last few frames
+  mutable std::vector<uint64_t> keys_;  // checkpointKey's chain, per whole frame (moving colliders)
   long checkpointIndex_ = -1;  // none yet
   SphParticles checkpoint_;
 };

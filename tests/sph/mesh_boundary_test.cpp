@@ -1,9 +1,11 @@
 // Boundaries from triangle meshes (meshSurfaceSamples, dfsph.hpp): samples cover every triangle
 // within the spacing, shared points once; a single layer of them holds water in a closed tank
-// (Akinci et al. 2012's volumes make up for the missing layers).
+// (Akinci et al. 2012's volumes make up for the missing layers); the same sites on a moved mesh
+// are a moving boundary that carries the water with it.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "lacrima/sph/dfsph.hpp"
@@ -36,6 +38,36 @@ TEST(MeshBoundary, SamplesCoverEachTriangleWithinTheSpacingAndOnce) {
   for (size_t a = 0; a < samples.size(); ++a)
     for (size_t b = a + 1; b < samples.size(); ++b) ASSERT_GT((samples[a] - samples[b]).norm(), 1e-3 * spacing);
   EXPECT_GT(samples.size(), 600u);  // at least the 6 faces' 10 x 10 grids
+}
+
+TEST(MeshBoundary, SitesAreTheSamplesAndFollowTheMeshTheyWereFoundOn) {
+  const TriangleMesh box = boxMesh(Vec3d::Zero(), Vec3d(0.1, 0.05, 0.1));
+  const std::vector<SurfaceSite> sites = meshSurfaceSites(box, 0.01);
+  EXPECT_EQ(sitePositions(box, sites), meshSurfaceSamples(box, 0.01));
+  TriangleMesh moved = box;
+  for (Vec3& p : moved.positions) p += Vec3(0.0f, 0.25f, 0.0f);
+  const std::vector<Vec3d> before = sitePositions(box, sites), after = sitePositions(moved, sites);
+  for (size_t i = 0; i < sites.size(); ++i) ASSERT_NEAR((after[i] - before[i]).y(), 0.25, 1e-6);
+}
+
+// A floor rising at 0.2 m/s under a resting layer of water: the boundary moves with each step and
+// the layer rides on it (a floor that jumped without moveBoundary's velocities would leave the
+// water behind, below it).
+TEST(MeshBoundary, AMovingFloorLiftsTheWaterOnIt) {
+  FluidParams params;
+  params.particleRadius = 0.0025;
+  const double spacing = 2.0 * params.particleRadius;
+  const TriangleMesh floor = boxMesh(Vec3d(-0.05, -0.01, -0.05), Vec3d(0.05, 0.0, 0.05));
+  BoundaryParticles boundary = boundaryFromSamples(meshSurfaceSamples(floor, spacing), params.particleRadius);
+  DfsphSolver solver(params, latticeBlock(Vec3d(-0.02, spacing, -0.02), Vec3d(0.02, 0.02, 0.02), spacing), boundary);
+  const Vec3d rise(0.0, 0.2, 0.0);
+  solver.moveBoundary(boundary.positions, std::vector<Vec3d>(boundary.positions.size(), rise));
+  solver.advanceTo(0.1);  // the floor's top is now at 0.02
+  double lowest = 1.0;  // of the water over the floor (the layer spreads, some of it off the edges)
+  for (const Vec3d& x : solver.positions())
+    if (std::abs(x.x()) < 0.045 && std::abs(x.z()) < 0.045) lowest = std::min(lowest, x.y());
+  EXPECT_GT(lowest, 0.02) << "water below the moved floor's top";
+  EXPECT_LT(lowest, 0.02 + 2.0 * spacing);
 }
 
 TEST(MeshBoundary, OneLayerOfSamplesHoldsWaterInAClosedTank) {

@@ -141,6 +141,8 @@ void DfsphSolver::computeDensitiesAndFactors() {
 double DfsphSolver::adaptedTimeStep() const {
   double fastest = 0.0;
   for (const Vec3d& v : v_) fastest = std::max(fastest, v.squaredNorm());
+  // A moving boundary must not cross a particle spacing in a step either.
+  for (const Vec3d& v : boundaryVelocities_) fastest = std::max(fastest, v.squaredNorm());
   fastest = std::sqrt(fastest);
   const double cfl = fastest > 0.0 ? params_.cflFactor * 2.0 * params_.particleRadius / fastest : params_.maxTimeStep;
   return std::clamp(cfl, params_.minTimeStep, params_.maxTimeStep);
@@ -198,7 +200,13 @@ double DfsphSolver::densityRate(size_t i) const {
   double rate = 0.0;
   const std::vector<uint32_t>& fluid = fluidNeighbours_[i];
   for (size_t n = 0; n < fluid.size(); ++n) rate += mass_ * (v_[i] - v_[fluid[n]]).dot(fluidGradients_[i][n]);
-  for (const Vec3d& g : boundaryGradients_[i]) rate += v_[i].dot(g);
+  const std::vector<Vec3d>& boundary = boundaryGradients_[i];
+  if (boundaryVelocities_.empty()) {
+    for (const Vec3d& g : boundary) rate += v_[i].dot(g);
+  } else {
+    for (size_t n = 0; n < boundary.size(); ++n)
+      rate += (v_[i] - boundaryVelocities_[boundaryNeighbours_[i][n]]).dot(boundary[n]);
+  }
   return rate;
 }
 
@@ -284,11 +292,25 @@ void DfsphSolver::addParticles(const std::vector<Vec3d>& positions, const std::v
   setState(std::move(x), std::move(v), time_);
 }
 
+void DfsphSolver::moveBoundary(std::vector<Vec3d> positions, std::vector<Vec3d> velocities) {
+  if (positions.size() != boundary_.positions.size() || velocities.size() != positions.size())
+    throw std::invalid_argument("DfsphSolver::moveBoundary: not one position and velocity per boundary particle");
+  boundary_.positions = std::move(positions);
+  boundaryVelocities_ = std::move(velocities);
+  boundaryGrid_.build(boundary_.positions);
+  updateNeighbours();
+  computeDensitiesAndFactors();
+}
+
 void DfsphSolver::advanceBy(double dt) {
   stats_.timeStep = dt;
   applyNonPressureForces(dt);
   stats_.densityIterations = solveDensity(dt);
   for (size_t i = 0; i < x_.size(); ++i) x_[i] += dt * v_[i];
+  if (!boundaryVelocities_.empty()) {
+    for (size_t b = 0; b < boundary_.positions.size(); ++b) boundary_.positions[b] += dt * boundaryVelocities_[b];
+    boundaryGrid_.build(boundary_.positions);
+  }
   updateNeighbours();
   computeDensitiesAndFactors();
   stats_.divergenceIterations = solveDivergence(dt);

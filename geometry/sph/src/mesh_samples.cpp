@@ -21,8 +21,8 @@ uint64_t roundedKey(const Vec3d& p, double spacing) {
 
 }  // namespace
 
-std::vector<Vec3d> meshSurfaceSamples(const TriangleMesh& mesh, double spacing) {
-  std::vector<Vec3d> samples;
+std::vector<SurfaceSite> meshSurfaceSites(const TriangleMesh& mesh, double spacing) {
+  std::vector<SurfaceSite> sites;
   std::unordered_set<uint64_t> seen;
   for (size_t t = 0; t < mesh.triangleCount(); ++t) {
     const Vec3d a = mesh.positions[mesh.indices[3 * t]].cast<double>();
@@ -32,11 +32,29 @@ std::vector<Vec3d> meshSurfaceSamples(const TriangleMesh& mesh, double spacing) 
     const int n = std::max(1, int(std::ceil(longest / spacing)));
     for (int i = 0; i <= n; ++i)
       for (int j = 0; i + j <= n; ++j) {
-        const Vec3d p = a + (double(i) / n) * (b - a) + (double(j) / n) * (c - a);
-        if (seen.insert(roundedKey(p, spacing)).second) samples.push_back(p);
+        const SurfaceSite site{uint32_t(t), double(i) / n, double(j) / n};
+        const Vec3d p = a + site.towardsSecond * (b - a) + site.towardsThird * (c - a);
+        if (seen.insert(roundedKey(p, spacing)).second) sites.push_back(site);
       }
   }
-  return samples;
+  return sites;
+}
+
+std::vector<Vec3d> sitePositions(const TriangleMesh& mesh, const std::vector<SurfaceSite>& sites) {
+  std::vector<Vec3d> positions;
+  positions.reserve(sites.size());
+  for (const SurfaceSite& site : sites) {
+    const size_t t = site.triangle;
+    const Vec3d a = mesh.positions[mesh.indices[3 * t]].cast<double>();
+    const Vec3d b = mesh.positions[mesh.indices[3 * t + 1]].cast<double>();
+    const Vec3d c = mesh.positions[mesh.indices[3 * t + 2]].cast<double>();
+    positions.push_back(a + site.towardsSecond * (b - a) + site.towardsThird * (c - a));
+  }
+  return positions;
+}
+
+std::vector<Vec3d> meshSurfaceSamples(const TriangleMesh& mesh, double spacing) {
+  return sitePositions(mesh, meshSurfaceSites(mesh, spacing));
 }
 
 }  // namespace lacrima::sph

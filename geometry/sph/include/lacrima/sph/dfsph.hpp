@@ -66,6 +66,18 @@ std::vector<Vec3d> latticeBlock(const Vec3d& lo, const Vec3d& hi, double spacing
 // walls meet, the boundary alone makes the density twice the rest density.
 std::vector<Vec3d> meshSurfaceSamples(const TriangleMesh& mesh, double spacing);
 
+// Where meshSurfaceSamples puts its samples: a triangle and the fractions along its edges from its
+// first corner to the other two. The same sites on the mesh deformed (a posed face, a moved shape,
+// the same triangles) are the moving boundary's particles.
+struct SurfaceSite {
+  uint32_t triangle;
+  double towardsSecond, towardsThird;
+};
+std::vector<SurfaceSite> meshSurfaceSites(const TriangleMesh& mesh, double spacing);
+// The sites' positions on `mesh` (meshSurfaceSamples(mesh, s) is sitePositions(mesh,
+// meshSurfaceSites(mesh, s)), bitwise).
+std::vector<Vec3d> sitePositions(const TriangleMesh& mesh, const std::vector<SurfaceSite>& sites);
+
 // `layers` layers of boundary samples (spacing `spacing`) outside the walls and floor of the
 // open-top box [lo, hi] (the fluid's container).
 std::vector<Vec3d> openBoxWalls(const Vec3d& lo, const Vec3d& hi, double spacing, int layers);
@@ -89,6 +101,14 @@ class DfsphSolver {
   void setState(std::vector<Vec3d> positions, std::vector<Vec3d> velocities, double time);
   // Adds particles (an emitted drop) at the current time, after the existing ones.
   void addParticles(const std::vector<Vec3d>& positions, const std::vector<Vec3d>& velocities);
+  // Moving boundaries (a keyed collider, the posed face): puts the boundary particles at
+  // `positions` now, moving at `velocities` (metres per second, the same count as the boundary)
+  // until the next call: each step moves them with the fluid, and the density's rate of change
+  // counts the fluid's velocity relative to theirs (Akinci et al. 2012 eq. 10 with v_b). Their
+  // volumes V_b stay those of the start (the boundary is assumed to move locally rigidly).
+  void moveBoundary(std::vector<Vec3d> positions, std::vector<Vec3d> velocities);
+  // The step the next step() takes (the CFL condition).
+  double nextTimeStep() const { return adaptedTimeStep(); }
 
   double time() const { return time_; }
   double particleMass() const { return mass_; }
@@ -121,6 +141,7 @@ class DfsphSolver {
   std::vector<Vec3d> x_, v_;
   std::vector<double> rho_, alpha_, pressureKappa_;
   BoundaryParticles boundary_;
+  std::vector<Vec3d> boundaryVelocities_;  // empty: a static boundary
   std::vector<double> boundaryPsi_;
   NeighbourGrid fluidGrid_, boundaryGrid_;
   std::vector<std::vector<uint32_t>> fluidNeighbours_, boundaryNeighbours_;
