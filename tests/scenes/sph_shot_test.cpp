@@ -137,7 +137,8 @@ TEST(SphShot, ARisingTableLiftsTheLiquidOnIt) {
       R"("surfaceTension": 20)", R"("surfaceTension": 0, "surface": {"smoothing": 3})");
   const test::ScopedCacheHome cache(test::testDirectory("sph_rising_cache", true));  // simulated here
   const Shot shot = loadShot(writeShot("sph_rising_table.json", text));
-  const MeshInstance* liquid = liquidMesh(buildFrame(shot, 4));
+  const Frame frame = buildFrame(shot, 4);  // kept: liquid points into it
+  const MeshInstance* liquid = liquidMesh(frame);
   ASSERT_NE(liquid, nullptr);
   // At shutter open (frame 3.75) the table is at 3.67 mm: the liquid (spreading into a layer a few
   // particles thick, lightly smoothed so that it stays) lies on it, none of it left below.
