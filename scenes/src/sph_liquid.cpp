@@ -125,20 +125,24 @@ SphRun::SphRun(const Shot& shot, const ShotSph& liquid)
     collider.moves = collider.asset->animated();
     colliders_.push_back(std::move(collider));
   }
+  for (const Collider& collider : colliders_) collidersMove_ = collidersMove_ || collider.moves;
+  for (const ShotSphRelease& release : liquid.releases)
+    releases_.emplace_back(long(release.frame - liquid.startFrame), releasedParticles(release, params_.particleRadius));
+  stateDirectory_ = sphStateDirectory();
+}
+
+void SphRun::prepareBoundary() {
+  if (prepared_) return;
   std::vector<Vec3d> samples;
-  for (Collider& collider : colliders_) {
-    collidersMove_ = collidersMove_ || collider.moves;
+  for (Collider& collider : colliders_)
     for (const TriangleMesh& mesh : colliderMeshes(collider, startFrame_)) {
       collider.sites.push_back(sph::meshSurfaceSites(mesh, 2.0 * params_.particleRadius));
       const std::vector<Vec3d> positions = sph::sitePositions(mesh, collider.sites.back());
       samples.insert(samples.end(), positions.begin(), positions.end());
     }
-  }
   boundary_ = sph::boundaryFromSamples(std::move(samples), params_.particleRadius);
-  for (const ShotSphRelease& release : liquid.releases)
-    releases_.emplace_back(long(release.frame - liquid.startFrame), releasedParticles(release, params_.particleRadius));
   key_ = simulationKey(params_, boundary_, releases_, fps_);
-  stateDirectory_ = sphStateDirectory();
+  prepared_ = true;
 }
 
 std::vector<TriangleMesh> SphRun::colliderMeshes(const Collider& collider, double frame) const {
@@ -246,6 +250,7 @@ SphParticles SphRun::particlesAt(double frame) {
   // The whole frame at or before `seconds` (a time within a nanosecond of a frame counts as it).
   const long index = long(std::floor(seconds * fps_ + 1e-6));
   std::lock_guard<std::mutex> lock(mutex_);
+  prepareBoundary();
   if (checkpointIndex_ > index || checkpointIndex_ < 0) {
     checkpointIndex_ = 0;
     checkpoint_ = {};

@@ -57,7 +57,6 @@ class SphRun {
 
   // The particles at a (fractional) frame; none before the first release.
   SphParticles particlesAt(double frame);
-  size_t boundaryParticleCount() const { return boundary_.positions.size(); }
 
  private:
   // The particles of the releases at whole frame `index` (frames since the start).
@@ -67,6 +66,10 @@ class SphRun {
   // `particles` at whole frame `index` stepped on to `seconds` (within the frame after it).
   SphParticles steppedTo(const SphParticles& particles, long index, double seconds) const;
 
+  // Samples the colliders into boundary particles at the start frame, once, on the first frame
+  // asked for (not at load: `lacrima check` and a shot's loading stay cheap; a 10 cm table at
+  // 0.2 mm spacing is a quarter of a million particles).
+  void prepareBoundary();
   // A collider as the run keeps it: a copy of its shape or asset, and its boundary particles' sites.
   struct Collider {
     std::optional<ShotShape> shape;
@@ -88,6 +91,7 @@ class SphRun {
   sph::FluidParams params_;
   std::vector<Collider> colliders_;
   bool collidersMove_ = false;
+  bool prepared_ = false;            // prepareBoundary has run
   sph::BoundaryParticles boundary_;  // at the start
   std::vector<std::pair<long, SphParticles>> releases_;  // (whole frame since the start, particles)
   double startFrame_, fps_;
