@@ -77,6 +77,7 @@ class SphRun {
     std::vector<size_t> primitives;   // of the asset, in its part
     std::vector<std::vector<sph::SurfaceSite>> sites;  // per mesh (one for a shape)
     bool moves = false;
+    std::string pointer;  // "/sph/0/colliders/1", for errors
   };
   // The collider's meshes at a (whole) frame.
   std::vector<TriangleMesh> colliderMeshes(const Collider& collider, double frame) const;
@@ -95,6 +96,7 @@ class SphRun {
   sph::BoundaryParticles boundary_;  // at the start
   std::vector<std::pair<long, SphParticles>> releases_;  // (whole frame since the start, particles)
   double startFrame_, fps_;
+  std::filesystem::path shotPath_;  // for errors
   uint64_t key_;                          // of everything the simulation depends on
   std::filesystem::path stateDirectory_;  // empty: checkpoints are not filed
 

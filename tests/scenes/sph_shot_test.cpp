@@ -10,6 +10,7 @@
 #include <optional>
 #include <string>
 
+#include "lacrima/geometry/error.hpp"
 #include "lacrima/geometry/mesh.hpp"
 #include "lacrima/scenes/shot.hpp"
 #include "scenes/shot_test_support.hpp"
@@ -182,6 +183,29 @@ TEST(SphShot, BadInputIsReportedAtItsPath) {
   expectSingleError("sph_no_fluid.json",
                     replaced(dropShot(), R"("drops": [{"center": [0, 0.0041, 0], "radius": 0.0015, "velocity": [0, -0.3, 0]}],)", ""),
                     "/sph/0/drops: an SPH liquid needs at least one of 'drops' or 'blocks' (the fluid it releases)");
+}
+
+TEST(SphShot, AParticleRadiusFarTooSmallForTheDropIsAnErrorNotAnExhaustedMemory) {
+  // 1.5 mm drop at 1 um particles: 1501^3 = 3.4e9 lattice points.
+  expectSingleError("sph_too_many_particles.json",
+                    replaced(dropShot(), R"("particleRadius": 0.00025)", R"("particleRadius": 0.000001)"),
+                    "/sph/0/drops/0: the liquid's releases up to this one fill 3.38e+09 particles at particleRadius "
+                    "1e-06 m, more than the 4 million allowed: make particleRadius larger or the releases smaller");
+}
+
+TEST(SphShot, AColliderFarTooLargeForTheParticleSpacingIsAnErrorNamingIt) {
+  // A 100 m table under 0.25 mm particles: some 10^11 boundary particles.
+  const std::filesystem::path path =
+      writeShot("sph_huge_table.json", replaced(dropShot(), R"("size": [0.02, 0.02])", R"("size": [100, 100])"));
+  const Shot shot = loadShot(path);  // loading stays cheap: colliders are sampled on the first frame built
+  try {
+    buildFrame(shot, 2);
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find(path.string() + ": /sph/0/colliders/0: sampling this collider"), std::string::npos) << message;
+    EXPECT_NE(message.find("more than the 8 million allowed"), std::string::npos) << message;
+  }
 }
 
 }  // namespace
