@@ -105,7 +105,7 @@ void hashVector(flesh::Fnv1a& hash, const std::vector<T>& values) {
 uint64_t simulationKey(const sph::FluidParams& p, const sph::BoundaryParticles& boundary,
                        const std::vector<std::pair<long, SphParticles>>& releases, double fps) {
   flesh::Fnv1a hash;
-  hash.add(uint64_t(0x5048'0001));  // the checkpoint format: bump when the solver's results change
+  hash.add(uint64_t(0x5048'0002));  // the checkpoint format: bump when the solver's results change
   for (double x : {p.particleRadius, p.restDensity, p.xsphViscosity, p.surfaceTension, p.adhesion, p.gravity.x(),
                    p.gravity.y(), p.gravity.z(), p.cflFactor, p.minTimeStep, p.maxTimeStep, p.maxDensityError,
                    p.maxDivergenceError, fps})

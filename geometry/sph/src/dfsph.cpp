@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "lacrima/sph/surface_tension.hpp"
@@ -138,6 +139,12 @@ void DfsphSolver::computeDensitiesAndFactors() {
   });
 }
 
+double capillaryTimeStep(const FluidParams& params) {
+  if (params.surfaceTension <= 0.0) return std::numeric_limits<double>::infinity();
+  const double support = 4.0 * params.particleRadius;
+  return kCapillaryStepFactor * std::sqrt(support / (params.surfaceTension * params.restDensity));
+}
+
 double DfsphSolver::adaptedTimeStep() const {
   double fastest = 0.0;
   for (const Vec3d& v : v_) fastest = std::max(fastest, v.squaredNorm());
@@ -145,7 +152,7 @@ double DfsphSolver::adaptedTimeStep() const {
   for (const Vec3d& v : boundaryVelocities_) fastest = std::max(fastest, v.squaredNorm());
   fastest = std::sqrt(fastest);
   const double cfl = fastest > 0.0 ? params_.cflFactor * 2.0 * params_.particleRadius / fastest : params_.maxTimeStep;
-  return std::clamp(cfl, params_.minTimeStep, params_.maxTimeStep);
+  return std::clamp(std::min(cfl, capillaryTimeStep(params_)), params_.minTimeStep, params_.maxTimeStep);
 }
 
 std::vector<Vec3d> DfsphSolver::surfaceAccelerations() const {
