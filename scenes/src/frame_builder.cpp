@@ -15,7 +15,6 @@
 #include "lacrima/geometry/detail_patterns.hpp"
 #include "lacrima/geometry/dripping_tear.hpp"
 #include "lacrima/geometry/mesh.hpp"
-#include "lacrima/geometry/shapes.hpp"
 #include "lacrima/geometry/shedding_tear.hpp"
 #include "lacrima/materials/material.hpp"
 #include "lacrima/scenes/frame_build_times.hpp"
@@ -120,11 +119,11 @@ Vec3 shapeCenterAt(const ShotShape& shape, double frame, const PosedAssets& pose
 }
 
 MeshInstance shapeMesh(const Frame& frame, const ShotShape& shape, const Vec3& center) {
-  if (shape.type == ShotShape::Type::Ellipsoid)
-    return MeshInstance(makeEllipsoid(center, Mat3(shape.rotation * shape.radii.asDiagonal())), shape.materialId);
-  MeshInstance rectangle(makeRectangle(center, shape.edgeU, shape.edgeV), shape.materialId);
-  rectangle.thinSheet = dielectricMedium(frame.materials.at(shape.materialId).params).has_value();  // bounds nothing
-  return rectangle;
+  MeshInstance mesh(shotfile::shapeTriangles(shape, center), shape.materialId);
+  // A rectangle bounds nothing: as a dielectric it is a thin sheet.
+  if (shape.type == ShotShape::Type::Rectangle)
+    mesh.thinSheet = dielectricMedium(frame.materials.at(shape.materialId).params).has_value();
+  return mesh;
 }
 
 void addShape(const ShotShape& shape, const ShutterTimes& shutter, const PosedAssets& open,

@@ -1,5 +1,7 @@
 #include "shot_geometry.hpp"
 
+#include "lacrima/geometry/shapes.hpp"
+
 namespace lacrima::shotfile {
 
 Mat3 eulerXyzDegrees(const Vec3& degrees) {
@@ -41,6 +43,18 @@ RectangleEdges rectangleFacing(const Vec3& normal, const Vec3& up, const Vec2& s
   const Vec3 inPlaneUp = right.cross(n);
   // right x (-inPlaneUp) = n (right, inPlaneUp, -n is a right-handed frame).
   return {right * size.x(), -inPlaneUp * size.y()};
+}
+
+TriangleMesh shapeTriangles(const ShotShape& shape, const Vec3& center) {
+  switch (shape.type) {
+    case ShotShape::Type::Sphere:
+      return makeEllipsoid(center, Mat3(shape.radius * Mat3::Identity()));
+    case ShotShape::Type::Ellipsoid:
+      return makeEllipsoid(center, Mat3(shape.rotation * shape.radii.asDiagonal()));
+    case ShotShape::Type::Rectangle:
+      break;
+  }
+  return makeRectangle(center, shape.edgeU, shape.edgeV);
 }
 
 }  // namespace lacrima::shotfile

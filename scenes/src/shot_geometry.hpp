@@ -3,6 +3,8 @@
 #include <optional>
 
 #include "lacrima/geometry/math.hpp"
+#include "lacrima/geometry/mesh.hpp"
+#include "lacrima/scenes/shot_model.hpp"
 
 namespace lacrima::shotfile {
 
@@ -26,5 +28,10 @@ struct RectangleEdges {
   Vec3 edgeU, edgeV;
 };
 RectangleEdges rectangleFacing(const Vec3& normal, const Vec3& up, const Vec2& size);
+
+// A shape's triangles with its centre at `center`: an ellipsoid's (and a sphere's, tessellated as
+// an ellipsoid: the renderer traces spheres analytically, the SPH colliders need triangles) or a
+// rectangle's two.
+TriangleMesh shapeTriangles(const ShotShape& shape, const Vec3& center);
 
 }  // namespace lacrima::shotfile

@@ -6,10 +6,10 @@
 #include <cmath>
 
 #include "asset_pose.hpp"
+#include "shot_geometry.hpp"
 #include "lacrima/flesh/flesh_state_cache.hpp"
 #include "lacrima/flesh/fnv1a.hpp"
 #include "lacrima/geometry/error.hpp"
-#include "lacrima/geometry/shapes.hpp"
 #include "lacrima/geometry/user_cache.hpp"
 #include "lacrima/sph/neighbour_grid.hpp"
 #include "lacrima/sph/sph_kernel.hpp"
@@ -58,18 +58,9 @@ double candidateSurfaceSites(const TriangleMesh& mesh, double spacing) {
 // The seconds since the simulation's start of a (fractional) frame.
 double secondsAt(double frame, double startFrame, double fps) { return (frame - startFrame) / fps; }
 
-// A shape's surface at a frame (a sphere tessellated as an ellipsoid).
+// A shape's surface at a frame, at its keyed centre (an `attach` to an asset is not followed).
 TriangleMesh shapeSurface(const ShotShape& shape, double frame) {
-  const Vec3 center = shape.centerCurve ? shape.centerCurve->evaluate(float(frame)) : shape.center;
-  switch (shape.type) {
-    case ShotShape::Type::Sphere:
-      return makeEllipsoid(center, Mat3(shape.radius * Mat3::Identity()));
-    case ShotShape::Type::Ellipsoid:
-      return makeEllipsoid(center, Mat3(shape.rotation * shape.radii.asDiagonal()));
-    case ShotShape::Type::Rectangle:
-      break;
-  }
-  return makeRectangle(center, shape.edgeU, shape.edgeV);
+  return shapeTriangles(shape, shape.centerCurve ? shape.centerCurve->evaluate(float(frame)) : shape.center);
 }
 
 // Per vertex, the kernel-weighted mean velocity of the particles within the kernel's support

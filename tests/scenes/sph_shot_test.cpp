@@ -44,6 +44,8 @@ const MeshInstance* liquidMesh(const Frame& frame) {
                                [](const MeshInstance& m) { return m.mesh.name == "sph 0"; });
   return it == frame.meshes.end() ? nullptr : &*it;
 }
+// A pointer into a temporary Frame would dangle (an ASan find of 2026-12-04): keep the frame.
+const MeshInstance* liquidMesh(Frame&&) = delete;
 
 TEST(SphShot, TheSurfacedDropIsAClosedWaterMeshBlurredByItsMotionAboveTheTable) {
   const Shot shot = loadShot(writeShot("sph_drop.json", dropShot()));
@@ -110,9 +112,11 @@ TEST(SphShot, CheckpointsAreFiledAndAFrameBuiltLaterResumesFromThemEvenPastACorr
   for (const auto& entry : std::filesystem::directory_iterator(states))
     if (entry.path().filename().string().rfind("frame00002", 0) == 0) std::ofstream(entry.path()) << "garbage";
   const Shot second = loadShot(writeShot("sph_filing.json", dropShot()));
-  EXPECT_EQ(liquidMesh(buildFrame(second, 4))->mesh.positions, liquidMesh(simulated)->mesh.positions);
+  const Frame resumed = buildFrame(second, 4);
+  EXPECT_EQ(liquidMesh(resumed)->mesh.positions, liquidMesh(simulated)->mesh.positions);
   const Shot third = loadShot(writeShot("sph_filing.json", dropShot()));
-  EXPECT_EQ(liquidMesh(buildFrame(third, 3))->mesh.positions, liquidMesh(buildFrame(first, 3))->mesh.positions);
+  const Frame fromFiled = buildFrame(third, 3), fromFirst = buildFrame(first, 3);
+  EXPECT_EQ(liquidMesh(fromFiled)->mesh.positions, liquidMesh(fromFirst)->mesh.positions);
   // A change of the fluid files its checkpoints under other keys.
   const Shot changed = loadShot(writeShot("sph_filing_changed.json", dropShot(R"(, "adhesion": 3)")));
   buildFrame(changed, 3);
@@ -158,8 +162,9 @@ TEST(SphShot, ALaterReleaseAddsItsDropAtItsFrame) {
     for (const Vec3& p : m.mesh.positions) hi = std::max(hi, p.x());
     return hi;
   };
-  EXPECT_LT(xExtent(*liquidMesh(buildFrame(shot, 2))), 0.004f);  // only the first drop
-  EXPECT_GT(xExtent(*liquidMesh(buildFrame(shot, 4))), 0.006f);  // the second one is there
+  const Frame before = buildFrame(shot, 2), after = buildFrame(shot, 4);
+  EXPECT_LT(xExtent(*liquidMesh(before)), 0.004f);  // only the first drop
+  EXPECT_GT(xExtent(*liquidMesh(after)), 0.006f);   // the second one is there
 }
 
 TEST(SphShot, BadInputIsReportedAtItsPath) {
