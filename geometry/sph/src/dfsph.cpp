@@ -276,7 +276,15 @@ int DfsphSolver::solveDivergence(double dt) {
 void DfsphSolver::step() { advanceBy(adaptedTimeStep()); }
 
 void DfsphSolver::advanceTo(double time) {
-  while (time_ < time - 1e-12) advanceBy(std::min(adaptedTimeStep(), time - time_));
+  while (time_ < time - 1e-12) {
+    // Equal steps to the target, not full steps and a sliver: the density solve turns the
+    // compression a step starts with into a velocity of compression / dt, which a sliver makes
+    // huge and the next full step then carries a long way (measured: a 1 mm drop at gamma 40,
+    // sampled every 82.8 us against an 80 us step, lost particles 80 radii away within 50 ms).
+    const double remaining = time - time_;
+    const double steps = std::max(1.0, std::ceil(remaining / adaptedTimeStep() - 1e-9));
+    advanceBy(remaining / steps);
+  }
 }
 
 void DfsphSolver::setState(std::vector<Vec3d> positions, std::vector<Vec3d> velocities, double time) {
