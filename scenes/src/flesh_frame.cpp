@@ -35,27 +35,11 @@ std::vector<Vec3d> patchPositions(const flesh::SkinPatch& patch, const TriangleM
   return out;
 }
 
-// The skin triangles of the primitive whose three corners lie within some region's radius.
-std::vector<bool> trianglesInRegions(const TriangleMesh& skin, const std::vector<ShotFleshRegion>& regions) {
-  std::vector<bool> inside(skin.triangleCount(), false);
-  for (size_t t = 0; t < inside.size(); ++t)
-    for (const ShotFleshRegion& region : regions) {
-      bool all = true;
-      for (int c = 0; c < 3; ++c)
-        all = all && (skin.positions[skin.indices[3 * t + size_t(c)]] - region.centerPoint.reference).norm() <= region.radius;
-      if (all) {
-        inside[t] = true;
-        break;
-      }
-    }
-  return inside;
-}
-
 // The patch of the skin in the regions, its vertices welded by position first (glTF splits
 // vertices along uv seams: unwelded, a seam would be a border inside the patch, with walls on both
 // sides of it), triangles of no area left out.
 std::shared_ptr<const flesh::SkinPatch> skinPatchOf(const TriangleMesh& skin, const std::vector<uint32_t>& weld,
-                                                    const std::vector<ShotFleshRegion>& regions) {
+                                                    const std::vector<ShotSkinRegion>& regions) {
   TriangleMesh withNormals = skin;
   if (withNormals.normals.size() != withNormals.positions.size()) computeSmoothNormals(withNormals, weld);
   std::vector<Vec3d> positions, normals;
@@ -63,7 +47,7 @@ std::shared_ptr<const flesh::SkinPatch> skinPatchOf(const TriangleMesh& skin, co
     positions.push_back(skin.positions[v].cast<double>());
     normals.push_back(withNormals.normals[v].cast<double>());
   }
-  std::vector<bool> selected = trianglesInRegions(skin, regions);
+  std::vector<bool> selected = trianglesWithinRegions(skin, regions);
   std::vector<std::array<uint32_t, 3>> triangles;
   for (size_t t = 0; t < skin.triangleCount(); ++t) {
     const std::array<uint32_t, 3> corners{weld[skin.indices[3 * t]], weld[skin.indices[3 * t + 1]],
@@ -93,7 +77,7 @@ uint64_t baseStateKey(const ShotFlesh& flesh, const flesh::SkinPatch& patch, dou
 }
 
 std::optional<FleshProblem> resolveOne(Shot& shot, ShotFlesh& flesh) {
-  for (ShotFleshRegion& region : flesh.regions)
+  for (ShotSkinRegion& region : flesh.regions)
     region.centerPoint = resolveSurfaceAnchor(shot, flesh.asset, flesh.part, region.center);
   flesh.primitive = flesh.regions.front().centerPoint.primitive;
   for (size_t i = 1; i < flesh.regions.size(); ++i)

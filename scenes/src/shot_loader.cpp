@@ -1421,7 +1421,12 @@ class ShotReader {
     flesh.pointer = pointer;
     const auto asset = readAssetPart(o, flesh.part);
     if (asset) flesh.asset = *asset;
-    if (asset) readFleshRegions(o, *asset, flesh);
+    if (asset) {
+      if (o.has("regions"))
+        readSkinRegions(o, *asset, flesh.part, flesh.regions);
+      else
+        o.missing("regions", "an array of regions {\"center\", \"radius\"} of the skin to simulate the flesh under");
+    }
     if (auto x = o.number("depth", Range::above(0))) flesh.volume.depth = *x;
     // The largest tetrahedron's edge: TetGen's volume bound is that of a regular tetrahedron.
     if (auto x = o.number("tetSize", Range::above(0))) flesh.volume.maxTetVolume = flesh::regularTetVolume(*x);
@@ -1532,22 +1537,21 @@ class ShotReader {
         liquid.colliderShapes.push_back(size_t(*x));
       return;
     }
-    ObjectReader r(c_, v, pointer, {"asset", "part"});
+    ObjectReader r(c_, v, pointer, {"asset", "part", "regions"});
     if (!r.ok()) return;
     ShotSph::Part part;
     if (const auto asset = readAssetPart(r, part.part)) {
       part.asset = *asset;
+      readSkinRegions(r, *asset, part.part, part.regions);
       liquid.colliderParts.push_back(part);
     }
   }
 
-  // "regions": [{"center": anchor on the part, "radius": m > 0}, ...], at least one.
-  void readFleshRegions(ObjectReader& o, size_t asset, ShotFlesh& flesh) {
+  // "regions": [{"center": anchor on the part, "radius": m > 0}, ...], at least one (the caller
+  // checks that the key is there when it must be).
+  void readSkinRegions(ObjectReader& o, size_t asset, const std::string& part, std::vector<ShotSkinRegion>& regions) {
     const Json* v = o.find("regions");
-    if (!v) {
-      o.missing("regions", "an array of regions {\"center\", \"radius\"} of the skin to simulate the flesh under");
-      return;
-    }
+    if (!v) return;
     if (!v->is_array() || v->empty()) {
       o.error("regions", "expected a non-empty array of regions {\"center\", \"radius\"}, found " + describeValue(*v));
       return;
@@ -1555,10 +1559,10 @@ class ShotReader {
     for (size_t i = 0; i < v->size(); ++i) {
       ObjectReader r(c_, (*v)[i], childPointer(o.at("regions"), i), {"center", "radius"});
       if (!r.ok()) continue;
-      ShotFleshRegion region;
-      readAnchor(r, "center", asset, flesh.part, region.center);
+      ShotSkinRegion region;
+      readAnchor(r, "center", asset, part, region.center);
       if (auto x = r.number("radius", Range::above(0), true)) region.radius = *x;
-      flesh.regions.push_back(region);
+      regions.push_back(region);
     }
   }
 

@@ -7,6 +7,7 @@
 
 #include "asset_pose.hpp"
 #include "shot_geometry.hpp"
+#include "surface_anchor.hpp"
 #include "lacrima/flesh/flesh_state_cache.hpp"
 #include "lacrima/flesh/fnv1a.hpp"
 #include "lacrima/geometry/error.hpp"
@@ -42,10 +43,12 @@ double latticePointsOfRelease(const ShotSphRelease& release, double particleRadi
 }
 
 // The candidate sites sph::meshSurfaceSites tries on a mesh (before merging shared edges): per
-// triangle, a triangular lattice with its longest edge cut into pieces of at most `spacing`.
-double candidateSurfaceSites(const TriangleMesh& mesh, double spacing) {
+// triangle (of those `selected` marks, when it has one entry per triangle), a triangular lattice
+// with its longest edge cut into pieces of at most `spacing`.
+double candidateSurfaceSites(const TriangleMesh& mesh, double spacing, const std::vector<bool>& selected) {
   double sites = 0.0;
   for (size_t t = 0; t < mesh.triangleCount(); ++t) {
+    if (selected.size() == mesh.triangleCount() && !selected[t]) continue;
     const Vec3d a = mesh.positions[mesh.indices[3 * t]].cast<double>();
     const Vec3d b = mesh.positions[mesh.indices[3 * t + 1]].cast<double>();
     const Vec3d c = mesh.positions[mesh.indices[3 * t + 2]].cast<double>();
@@ -151,6 +154,7 @@ SphRun::SphRun(const Shot& shot, const ShotSph& liquid)
     collider.asset = shot.assets[part.asset];
     for (size_t p = 0; p < collider.asset->gltf->primitives.size(); ++p)
       if (collider.asset->gltf->primitives[p].part == part.part) collider.primitives.push_back(p);
+    collider.regions = part.regions;
     collider.moves = collider.asset->animated();
     colliders_.push_back(std::move(collider));
   }
@@ -163,21 +167,39 @@ SphRun::SphRun(const Shot& shot, const ShotSph& liquid)
 void SphRun::prepareBoundary() {
   if (prepared_) return;
   std::vector<Vec3d> samples;
-  for (Collider& collider : colliders_)
-    for (const TriangleMesh& mesh : colliderMeshes(collider, startFrame_)) {
-      const double candidates = candidateSurfaceSites(mesh, 2.0 * params_.particleRadius);
-      if (candidates > kMaxBoundarySites)
-        throw InputError(fmt::format(
-            "{}: {}: sampling this collider at the particle spacing ({} m) would take {:.3g} boundary particles, "
-            "more than the {:.0f} million allowed: make particleRadius larger or the collider smaller",
-            shotPath_.string(), collider.pointer, 2.0 * params_.particleRadius, candidates, kMaxBoundarySites / 1e6));
-      collider.sites.push_back(sph::meshSurfaceSites(mesh, 2.0 * params_.particleRadius));
-      const std::vector<Vec3d> positions = sph::sitePositions(mesh, collider.sites.back());
-      samples.insert(samples.end(), positions.begin(), positions.end());
-    }
+  for (Collider& collider : colliders_) {
+    const std::vector<Vec3d> positions = sampleCollider(collider);
+    samples.insert(samples.end(), positions.begin(), positions.end());
+  }
   boundary_ = sph::boundaryFromSamples(std::move(samples), params_.particleRadius);
   key_ = simulationKey(params_, boundary_, releases_, fps_);
   prepared_ = true;
+}
+
+std::vector<Vec3d> SphRun::sampleCollider(Collider& collider) const {
+  const double spacing = 2.0 * params_.particleRadius;
+  std::vector<Vec3d> samples;
+  bool anySelected = false;
+  for (const TriangleMesh& mesh : colliderMeshes(collider, startFrame_)) {
+    const std::vector<bool> selected =
+        collider.regions.empty() ? std::vector<bool>{} : trianglesWithinRegions(mesh, collider.regions);
+    anySelected = anySelected || std::find(selected.begin(), selected.end(), true) != selected.end();
+    const double candidates = candidateSurfaceSites(mesh, spacing, selected);
+    if (candidates > kMaxBoundarySites)
+      throw InputError(fmt::format(
+          "{}: {}: sampling this collider at the particle spacing ({} m) would take {:.3g} boundary particles, "
+          "more than the {:.0f} million allowed: make particleRadius larger or the collider smaller{}",
+          shotPath_.string(), collider.pointer, spacing, candidates, kMaxBoundarySites / 1e6,
+          collider.asset ? " (e.g. with 'regions')" : ""));
+    collider.sites.push_back(sph::meshSurfaceSites(mesh, spacing, selected));
+    const std::vector<Vec3d> positions = sph::sitePositions(mesh, collider.sites.back());
+    samples.insert(samples.end(), positions.begin(), positions.end());
+  }
+  if (!collider.regions.empty() && !anySelected)
+    throw InputError(fmt::format("{}: {}/regions: no triangle of the part lies wholly within the regions: give "
+                                 "larger radii",
+                                 shotPath_.string(), collider.pointer));
+  return samples;
 }
 
 std::vector<TriangleMesh> SphRun::colliderMeshes(const Collider& collider, double frame) const {
@@ -338,6 +360,9 @@ std::vector<SphProblem> resolveSphLiquids(Shot& shot) {
       problems.push_back(*tooMany);
       continue;
     }
+    for (ShotSph::Part& part : liquid.colliderParts)
+      for (ShotSkinRegion& region : part.regions)
+        region.centerPoint = resolveSurfaceAnchor(shot, part.asset, part.part, region.center);
     for (size_t i = 0; i < liquid.releases.size(); ++i)
       if (releasedParticles(liquid.releases[i], liquid.fluid.particleRadius).positions.empty())
         problems.push_back({releasePointer(liquid, i),

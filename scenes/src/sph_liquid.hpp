@@ -75,10 +75,14 @@ class SphRun {
     std::optional<ShotShape> shape;
     std::optional<ShotAsset> asset;  // its meshes and rig shared with the shot's
     std::vector<size_t> primitives;   // of the asset, in its part
+    std::vector<ShotSkinRegion> regions;  // the stretch of the part sampled; none: all of it
     std::vector<std::vector<sph::SurfaceSite>> sites;  // per mesh (one for a shape)
     bool moves = false;
     std::string pointer;  // "/sph/0/colliders/1", for errors
   };
+  // Puts boundary sites on the collider (its regions only, when it has some) at the start frame;
+  // their positions. Throws InputError when it would take too many or its regions hold nothing.
+  std::vector<Vec3d> sampleCollider(Collider& collider) const;
   // The collider's meshes at a (whole) frame.
   std::vector<TriangleMesh> colliderMeshes(const Collider& collider, double frame) const;
   // Every boundary particle's position at whole frame `index` (frames since the start).

@@ -142,4 +142,19 @@ ShotSurfacePoint resolveSurfaceAnchor(const Shot& shot, size_t assetIndex, const
   return resolved;
 }
 
+std::vector<bool> trianglesWithinRegions(const TriangleMesh& mesh, const std::vector<ShotSkinRegion>& regions) {
+  std::vector<bool> inside(mesh.triangleCount(), false);
+  for (size_t t = 0; t < inside.size(); ++t)
+    for (const ShotSkinRegion& region : regions) {
+      bool all = true;
+      for (int c = 0; c < 3; ++c)
+        all = all && (mesh.positions[mesh.indices[3 * t + size_t(c)]] - region.centerPoint.reference).norm() <= region.radius;
+      if (all) {
+        inside[t] = true;
+        break;
+      }
+    }
+  return inside;
+}
+
 }  // namespace lacrima::shotfile

@@ -5,6 +5,7 @@
 // final (after any refinement of their meshes).
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "lacrima/scenes/shot_model.hpp"
 #include "shot_checker.hpp"
@@ -22,5 +23,9 @@ std::optional<ShotSurfaceAnchor> readSurfaceAnchor(Checker& c, const Json& value
 // A point is snapped to the nearest surface point of the part (asset posed at the first frame).
 ShotSurfacePoint resolveSurfaceAnchor(const Shot& shot, size_t asset, const std::string& part,
                                       const ShotSurfaceAnchor& anchor);
+
+// Per triangle of `mesh`: whether its three corners lie within some region's radius of the
+// region's resolved centre (centerPoint.reference).
+std::vector<bool> trianglesWithinRegions(const TriangleMesh& mesh, const std::vector<ShotSkinRegion>& regions);
 
 }  // namespace lacrima::shotfile

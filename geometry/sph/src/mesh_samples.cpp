@@ -21,10 +21,12 @@ uint64_t roundedKey(const Vec3d& p, double spacing) {
 
 }  // namespace
 
-std::vector<SurfaceSite> meshSurfaceSites(const TriangleMesh& mesh, double spacing) {
+std::vector<SurfaceSite> meshSurfaceSites(const TriangleMesh& mesh, double spacing, const std::vector<bool>& selected) {
   std::vector<SurfaceSite> sites;
   std::unordered_set<uint64_t> seen;
+  const bool all = selected.size() != mesh.triangleCount();
   for (size_t t = 0; t < mesh.triangleCount(); ++t) {
+    if (!all && !selected[t]) continue;
     const Vec3d a = mesh.positions[mesh.indices[3 * t]].cast<double>();
     const Vec3d b = mesh.positions[mesh.indices[3 * t + 1]].cast<double>();
     const Vec3d c = mesh.positions[mesh.indices[3 * t + 2]].cast<double>();

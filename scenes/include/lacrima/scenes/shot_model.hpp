@@ -359,9 +359,10 @@ class FleshRun;  // scenes/src/flesh_frame.hpp: a flesh's simulation, advanced a
 class SphRun;  // scenes/src/sph_liquid.hpp: an SPH liquid's simulation, advanced as frames are built
 }
 
-// A sphere of the skin the flesh is simulated under (all of the part's triangles whose corners lie
-// within `radius` of the centre, on the first frame's pose).
-struct ShotFleshRegion {
+// A sphere of a part's surface: all of the part's triangles whose corners lie within `radius` of
+// the centre, on the first frame's pose (the skin a flesh is simulated under, the stretch of a face
+// an SPH liquid collides with).
+struct ShotSkinRegion {
   ShotSurfaceAnchor center;  // as written, on the flesh's part
   double radius = 0.0;       // metres, > 0
   ShotSurfacePoint centerPoint;  // resolved by loadShot
@@ -393,7 +394,7 @@ inline flesh::FleshDynamicsParams defaultShotFleshDynamics() {
 struct ShotFlesh {
   size_t asset = 0;
   std::string part;
-  std::vector<ShotFleshRegion> regions;
+  std::vector<ShotSkinRegion> regions;
   flesh::FleshVolumeSettings volume;
   flesh::FleshMaterial material = flesh::FleshMaterial::FixedCorotated;
   double youngsModulus = 3000.0;  // Pa
@@ -438,6 +439,7 @@ struct ShotSph {
   struct Part {
     size_t asset = 0;
     std::string part;
+    std::vector<ShotSkinRegion> regions;  // none: the whole part
   };
   std::vector<Part> colliderParts;
   double voxelsPerRadius = 1.5;  // surfacing resolution (sph::SurfaceParams)

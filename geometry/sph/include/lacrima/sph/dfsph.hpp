@@ -85,7 +85,9 @@ struct SurfaceSite {
   uint32_t triangle;
   double towardsSecond, towardsThird;
 };
-std::vector<SurfaceSite> meshSurfaceSites(const TriangleMesh& mesh, double spacing);
+// Only the triangles `selected` marks, when it has one entry per triangle (a stretch of a face).
+std::vector<SurfaceSite> meshSurfaceSites(const TriangleMesh& mesh, double spacing,
+                                          const std::vector<bool>& selected = {});
 // The sites' positions on `mesh` (meshSurfaceSamples(mesh, s) is sitePositions(mesh,
 // meshSurfaceSites(mesh, s)), bitwise).
 std::vector<Vec3d> sitePositions(const TriangleMesh& mesh, const std::vector<SurfaceSite>& sites);
