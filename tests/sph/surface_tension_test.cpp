@@ -57,22 +57,30 @@ TEST(SurfaceTension, ACubeInFreeFallRoundsIntoABall) {
   EXPECT_LT(with, 1.2);
 }
 
-// An 8 x 4 x 8 mm slab of water (0.5 mm particles) on a floor: the radius of its footprint (the
-// farthest particle of the lowest layer from the centre, horizontally) after `seconds`.
-double footprintAfterSettling(double surfaceTension, double adhesion, double seconds) {
+// An 8 x 4 x 8 mm slab of water (0.5 mm particles, spacing 1 mm) on the floor of a 40 mm tank,
+// centred at x = z = 20 mm: its particles after `seconds`.
+std::vector<Vec3d> slabAfter(double surfaceTension, double adhesion, const Vec3d& gravity, double seconds) {
   FluidParams params;
   params.particleRadius = 0.0005;
   params.surfaceTension = surfaceTension;
   params.adhesion = adhesion;
   params.xsphViscosity = 0.05;
+  params.gravity = gravity;
   const double spacing = 0.001;
   const Vec3d lo(0.016, 0.0, 0.016);
   DfsphSolver solver(params, latticeBlock(lo, lo + Vec3d(0.008, 0.004, 0.008), spacing),
                      boundaryFromSamples(openBoxWalls(Vec3d::Zero(), Vec3d(0.04, 0.02, 0.04), spacing, 2),
                                          params.particleRadius));
   solver.advanceTo(seconds);
+  return solver.positions();
+}
+
+// The slab's footprint under gravity: the farthest particle of the lowest layer from the centre,
+// horizontally, after `seconds`.
+double footprintAfterSettling(double surfaceTension, double adhesion, double seconds) {
+  const double spacing = 0.001;
   double footprint = 0.0;
-  for (const Vec3d& p : solver.positions())
+  for (const Vec3d& p : slabAfter(surfaceTension, adhesion, FluidParams{}.gravity, seconds))
     if (p.y() < spacing) footprint = std::max(footprint, std::hypot(p.x() - 0.02, p.z() - 0.02));
   return footprint;
 }
@@ -161,21 +169,11 @@ struct Cap {
   double degrees, baseRadius;
 };
 Cap capInZeroGravity(double surfaceTension, double adhesion, double seconds) {
-  FluidParams params;
-  params.particleRadius = 0.0005;
-  params.surfaceTension = surfaceTension;
-  params.adhesion = adhesion;
-  params.xsphViscosity = 0.05;
-  params.gravity = Vec3d::Zero();
   const double spacing = 0.001;
-  const Vec3d lo(0.016, 0.0, 0.016);
-  DfsphSolver solver(params, latticeBlock(lo, lo + Vec3d(0.008, 0.004, 0.008), spacing),
-                     boundaryFromSamples(openBoxWalls(Vec3d::Zero(), Vec3d(0.04, 0.02, 0.04), spacing, 2),
-                                         params.particleRadius));
-  solver.advanceTo(seconds);
+  const std::vector<Vec3d> particles = slabAfter(surfaceTension, adhesion, Vec3d::Zero(), seconds);
   double lowest = 1.0, top = 0.0, foot = 0.0;
-  for (const Vec3d& p : solver.positions()) lowest = std::min(lowest, p.y());
-  for (const Vec3d& p : solver.positions()) {
+  for (const Vec3d& p : particles) lowest = std::min(lowest, p.y());
+  for (const Vec3d& p : particles) {
     top = std::max(top, p.y());
     if (p.y() < lowest + 0.5 * spacing) foot = std::max(foot, std::hypot(p.x() - 0.02, p.z() - 0.02));
   }
