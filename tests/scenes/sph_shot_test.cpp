@@ -221,6 +221,47 @@ TEST(SphShot, AStretchOfTheFaceIsAColliderTheDropLandsOn) {
   EXPECT_GT(depthWithout, 0.0008f);
 }
 
+// A 1.2 mm drop of 0.2 mm particles floating (no gravity) 1.2 mm under the ICT face's chin while the
+// jaw opens over 50 ms (jawOpen keyed 0 -> 1, frames 1-13 at 240 fps); `collider` is the liquid's
+// colliders entry (or empty).
+std::string dropUnderAnOpeningJaw(const std::string& collider) {
+  return replaced(test::ictFaceShot(R"("sph": [{"material": "water", "particleRadius": 0.0002, "surfaceTension": 20,
+    "gravity": [0, 0, 0], "drops": [{"center": [0, -0.0847, 0.0817], "radius": 0.0012}])" +
+                                        (collider.empty() ? "" : R"(, "colliders": [)" + collider + "]") + "}]",
+                                    "", R"("blendshapes": {"jawOpen": {"keys": [[1, 0], [13, 1]], "interpolation": "linear"}})", 13),
+                  R"("fps": 24)", R"("fps": 240)");
+}
+
+// The highest point of the liquid's surface.
+float liquidTop(const Frame& frame) {
+  float top = -1.0f;
+  for (const Vec3& p : liquidMesh(frame)->mesh.positions) top = std::max(top, p.y());
+  return top;
+}
+
+TEST(SphShot, TheChinOfAnOpeningJawPushesTheDropUnderIt) {
+  const std::string chin = R"({"asset": "face", "part": "M_Face", "regions": [{"center": [0, -0.0823, 0.0817], "radius": 0.008}]})";
+  const Shot shot = loadShot(writeShot("sph_under_the_jaw.json", dropUnderAnOpeningJaw(chin)));
+  const Shot alone = loadShot(writeShot("sph_under_no_jaw.json", dropUnderAnOpeningJaw("")));
+  const Frame start = buildFrame(shot, 1), pushed = buildFrame(shot, 13), left = buildFrame(alone, 13);
+  // The chin's underside: the lowest skin point within 3 mm of the midline, in front of the neck.
+  const auto chinBottom = [](const Frame& frame) {
+    float lowest = 1.0f;
+    for (const Vec3& p : faceSkin(frame).mesh.positions)
+      if (std::abs(p.x()) < 0.003f && p.z() > 0.07f && p.y() > -0.13f) lowest = std::min(lowest, p.y());
+    return lowest;
+  };
+  std::printf("[ moving face collider ] chin %.2f -> %.2f mm; drop top %.2f -> %.2f mm (%.2f mm without the collider)\n",
+              1e3 * chinBottom(start), 1e3 * chinBottom(pushed), 1e3 * liquidTop(start), 1e3 * liquidTop(pushed),
+              1e3 * liquidTop(left));
+  EXPECT_LT(chinBottom(pushed), chinBottom(start) - 0.015f) << "the jaw must open";
+  // Measured: the chin 83.6 -> 105.7 mm down, the drop's top 83.6 -> 109.9 mm (pushed ahead of it,
+  // and moving on in zero gravity); left alone it stays (83.7).
+  EXPECT_LT(liquidTop(pushed), liquidTop(start) - 0.015f);
+  EXPECT_LT(liquidTop(pushed), chinBottom(pushed)) << "the drop stays under the chin";
+  EXPECT_NEAR(liquidTop(left), liquidTop(start), 0.0005f);
+}
+
 TEST(SphShot, AColliderRegionHoldingNoTriangleIsAnErrorNamingIt) {
   const std::filesystem::path path = writeShot(
       "sph_empty_region.json",
