@@ -1533,13 +1533,16 @@ class ShotReader {
         r.error("shape", "the shot has no 'shapes' to collide with (a shape is named by its index in 'shapes')");
         return;
       }
-      if (auto x = r.integer("shape", Range::closed(0, double(shot_.shapes.size()) - 1), true))
+      if (auto x = r.integer("shape", Range::closed(0, double(shot_.shapes.size()) - 1), true)) {
         liquid.colliderShapes.push_back(size_t(*x));
+        liquid.colliderShapePointers.push_back(pointer);
+      }
       return;
     }
     ObjectReader r(c_, v, pointer, {"asset", "part", "regions"});
     if (!r.ok()) return;
     ShotSph::Part part;
+    part.pointer = pointer;
     if (const auto asset = readAssetPart(r, part.part)) {
       part.asset = *asset;
       readSkinRegions(r, *asset, part.part, part.regions);

@@ -142,7 +142,7 @@ SphRun::SphRun(const Shot& shot, const ShotSph& liquid)
   for (size_t c = 0; c < liquid.colliderShapes.size(); ++c) {
     const size_t index = liquid.colliderShapes[c];
     Collider collider;
-    collider.pointer = fmt::format("{}/colliders/{}", liquid.pointer, c);
+    collider.pointer = liquid.colliderShapePointers[c];
     collider.shape = shot.shapes[index];
     collider.moves = bool(collider.shape->centerCurve);
     colliders_.push_back(std::move(collider));
@@ -150,7 +150,7 @@ SphRun::SphRun(const Shot& shot, const ShotSph& liquid)
   for (size_t c = 0; c < liquid.colliderParts.size(); ++c) {
     const ShotSph::Part& part = liquid.colliderParts[c];
     Collider collider;
-    collider.pointer = fmt::format("{}/colliders/{}", liquid.pointer, liquid.colliderShapes.size() + c);
+    collider.pointer = part.pointer;
     collider.asset = shot.assets[part.asset];
     for (size_t p = 0; p < collider.asset->gltf->primitives.size(); ++p)
       if (collider.asset->gltf->primitives[p].part == part.part) collider.primitives.push_back(p);
@@ -178,27 +178,31 @@ void SphRun::prepareBoundary() {
 
 std::vector<Vec3d> SphRun::sampleCollider(Collider& collider) const {
   const double spacing = 2.0 * params_.particleRadius;
-  std::vector<Vec3d> samples;
+  const std::vector<TriangleMesh> meshes = colliderMeshes(collider, startFrame_);
+  std::vector<std::vector<bool>> selected(meshes.size());  // empty: every triangle
+  double candidates = 0.0;
   bool anySelected = false;
-  for (const TriangleMesh& mesh : colliderMeshes(collider, startFrame_)) {
-    const std::vector<bool> selected =
-        collider.regions.empty() ? std::vector<bool>{} : trianglesWithinRegions(mesh, collider.regions);
-    anySelected = anySelected || std::find(selected.begin(), selected.end(), true) != selected.end();
-    const double candidates = candidateSurfaceSites(mesh, spacing, selected);
-    if (candidates > kMaxBoundarySites)
-      throw InputError(fmt::format(
-          "{}: {}: sampling this collider at the particle spacing ({} m) would take {:.3g} boundary particles, "
-          "more than the {:.0f} million allowed: make particleRadius larger or the collider smaller{}",
-          shotPath_.string(), collider.pointer, spacing, candidates, kMaxBoundarySites / 1e6,
-          collider.asset ? " (e.g. with 'regions')" : ""));
-    collider.sites.push_back(sph::meshSurfaceSites(mesh, spacing, selected));
-    const std::vector<Vec3d> positions = sph::sitePositions(mesh, collider.sites.back());
-    samples.insert(samples.end(), positions.begin(), positions.end());
+  for (size_t m = 0; m < meshes.size(); ++m) {
+    if (!collider.regions.empty()) selected[m] = trianglesWithinRegions(meshes[m], collider.regions);
+    anySelected = anySelected || std::find(selected[m].begin(), selected[m].end(), true) != selected[m].end();
+    candidates += candidateSurfaceSites(meshes[m], spacing, selected[m]);
   }
   if (!collider.regions.empty() && !anySelected)
     throw InputError(fmt::format("{}: {}/regions: no triangle of the part lies wholly within the regions: give "
                                  "larger radii",
                                  shotPath_.string(), collider.pointer));
+  if (candidates > kMaxBoundarySites)
+    throw InputError(fmt::format(
+        "{}: {}: sampling this collider at the particle spacing ({} m) would take {:.3g} boundary particles, more "
+        "than the {:.0f} million allowed: make particleRadius larger or the collider smaller{}",
+        shotPath_.string(), collider.pointer, spacing, candidates, kMaxBoundarySites / 1e6,
+        collider.asset ? " (e.g. with 'regions')" : ""));
+  std::vector<Vec3d> samples;
+  for (size_t m = 0; m < meshes.size(); ++m) {
+    collider.sites.push_back(sph::meshSurfaceSites(meshes[m], spacing, selected[m]));
+    const std::vector<Vec3d> positions = sph::sitePositions(meshes[m], collider.sites.back());
+    samples.insert(samples.end(), positions.begin(), positions.end());
+  }
   return samples;
 }
 

@@ -435,11 +435,13 @@ struct ShotSph {
   // so that the shot opens on liquid already in motion). Colliders are posed there.
   int startFrame = 0;
   std::vector<ShotSphRelease> releases;
-  std::vector<size_t> colliderShapes;  // indices into Shot::shapes
+  std::vector<size_t> colliderShapes;               // indices into Shot::shapes
+  std::vector<std::string> colliderShapePointers;  // each one's place in the file ("/sph/0/colliders/1")
   struct Part {
     size_t asset = 0;
     std::string part;
     std::vector<ShotSkinRegion> regions;  // none: the whole part
+    std::string pointer;                  // "/sph/0/colliders/0"
   };
   std::vector<Part> colliderParts;
   double voxelsPerRadius = 1.5;  // surfacing resolution (sph::SurfaceParams)
