@@ -266,6 +266,7 @@ int DfsphSolver::solveDivergence(double dt) {
     double sum = 0.0;
     for (double r : rate) sum += r;
     const double error = x_.empty() ? 0.0 : dt * sum / double(x_.size()) / rho0;
+    stats_.divergenceError = error;
     if (iteration >= params_.maxIterations || (iteration >= 1 && error <= params_.maxDivergenceError)) break;
     forEachParticle(x_.size(), [&](size_t i) { kappa[i] = rate[i] / dt * alpha_[i]; });
     applyStiffness(kappa, dt);

@@ -99,7 +99,8 @@ std::vector<Vec3d> openBoxWalls(const Vec3d& lo, const Vec3d& hi, double spacing
 struct StepStats {
   double timeStep = 0.0;
   int densityIterations = 0, divergenceIterations = 0;
-  double densityError = 0.0;  // average relative compression after the density solve
+  double densityError = 0.0;     // average relative compression after the density solve
+  double divergenceError = 0.0;  // dt times the average relative density rate after the divergence solve
 };
 
 class DfsphSolver {
