@@ -34,28 +34,10 @@ constexpr double kMaxBoundarySites = 8e6;
 // The lattice points a release's bounding box holds (what releasedParticles walks; a drop keeps
 // about half of them).
 double latticePointsOfRelease(const ShotSphRelease& release, double particleRadius) {
-  const double spacing = 2.0 * particleRadius;
-  const Vec3d extent = release.kind == ShotSphRelease::Kind::Block ? Vec3d(release.max - release.min)
-                                                                   : Vec3d::Constant(2.0 * release.radius);
-  double points = 1.0;
-  for (int axis = 0; axis < 3; ++axis) points *= std::floor(extent[axis] / spacing) + 1.0;
-  return points;
-}
-
-// The candidate sites sph::meshSurfaceSites tries on a mesh (before merging shared edges): per
-// triangle (of those `selected` marks, when it has one entry per triangle), a triangular lattice
-// with its longest edge cut into pieces of at most `spacing`.
-double candidateSurfaceSites(const TriangleMesh& mesh, double spacing, const std::vector<bool>& selected) {
-  double sites = 0.0;
-  for (size_t t = 0; t < mesh.triangleCount(); ++t) {
-    if (selected.size() == mesh.triangleCount() && !selected[t]) continue;
-    const Vec3d a = mesh.positions[mesh.indices[3 * t]].cast<double>();
-    const Vec3d b = mesh.positions[mesh.indices[3 * t + 1]].cast<double>();
-    const Vec3d c = mesh.positions[mesh.indices[3 * t + 2]].cast<double>();
-    const double n = std::max(1.0, std::ceil(std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()}) / spacing));
-    sites += 0.5 * (n + 1.0) * (n + 2.0);
-  }
-  return sites;
+  if (release.kind == ShotSphRelease::Kind::Block)
+    return sph::latticeBlockCount(release.min, release.max, 2.0 * particleRadius);
+  const Vec3d extent = Vec3d::Constant(release.radius);
+  return sph::latticeBlockCount(release.center - extent, release.center + extent, 2.0 * particleRadius);
 }
 
 // The seconds since the simulation's start of a (fractional) frame.
@@ -185,7 +167,7 @@ std::vector<Vec3d> SphRun::sampleCollider(Collider& collider) const {
   for (size_t m = 0; m < meshes.size(); ++m) {
     if (!collider.regions.empty()) selected[m] = trianglesWithinRegions(meshes[m], collider.regions);
     anySelected = anySelected || std::find(selected[m].begin(), selected[m].end(), true) != selected[m].end();
-    candidates += candidateSurfaceSites(meshes[m], spacing, selected[m]);
+    candidates += sph::meshSurfaceSiteCandidates(meshes[m], spacing, selected[m]);
   }
   if (!collider.regions.empty() && !anySelected)
     throw InputError(fmt::format("{}: {}/regions: no triangle of the part lies wholly within the regions: give "

@@ -300,7 +300,7 @@ TEST(SphShot, BadInputIsReportedAtItsPath) {
 }
 
 TEST(SphShot, AParticleRadiusFarTooSmallForTheDropIsAnErrorNotAnExhaustedMemory) {
-  // 1.5 mm drop at 1 um particles: 1501^3 = 3.4e9 lattice points.
+  // 1.5 mm drop at 1 um particles: 1500^3 = 3.4e9 lattice points in its bounding box.
   expectSingleError("sph_too_many_particles.json",
                     replaced(dropShot(), R"("particleRadius": 0.00025)", R"("particleRadius": 0.000001)"),
                     "/sph/0/drops/0: the liquid's releases up to this one fill 3.38e+09 particles at particleRadius "

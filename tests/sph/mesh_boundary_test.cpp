@@ -50,6 +50,22 @@ TEST(MeshBoundary, SitesAreTheSamplesAndFollowTheMeshTheyWereFoundOn) {
   for (size_t i = 0; i < sites.size(); ++i) ASSERT_NEAR((after[i] - before[i]).y(), 0.25, 1e-6);
 }
 
+TEST(MeshBoundary, SelectedTrianglesAloneAreSampledAndTheCandidatesCountTheCost) {
+  const TriangleMesh box = boxMesh(Vec3d::Zero(), Vec3d(0.1, 0.05, 0.1));
+  // The two triangles of the face z = 0 (the first two of boxMesh).
+  std::vector<bool> floor(box.triangleCount(), false);
+  floor[0] = floor[1] = true;
+  for (const Vec3d& p : sitePositions(box, meshSurfaceSites(box, 0.01, floor))) ASSERT_EQ(p.z(), 0.0);
+  // Each triangle's grid of (n + 1)(n + 2) / 2 candidates, n = ceil(longest edge / spacing): the
+  // face's diagonal 0.112 m -> n = 12, 91 each; sampling keeps fewer (the shared diagonal once).
+  EXPECT_EQ(meshSurfaceSiteCandidates(box, 0.01, floor), 2 * 91.0);
+  EXPECT_LT(double(meshSurfaceSites(box, 0.01, floor).size()), meshSurfaceSiteCandidates(box, 0.01, floor));
+  EXPECT_GE(meshSurfaceSiteCandidates(box, 0.01), double(meshSurfaceSites(box, 0.01).size()));
+  // The lattice count without the lattice.
+  EXPECT_EQ(latticeBlockCount(Vec3d::Zero(), Vec3d(0.1, 0.05, 0.03), 0.01),
+            double(latticeBlock(Vec3d::Zero(), Vec3d(0.1, 0.05, 0.03), 0.01).size()));
+}
+
 // A floor rising at 0.2 m/s under a resting layer of water: the boundary moves with each step and
 // the layer rides on it (a floor that jumped without moveBoundary's velocities would leave the
 // water behind, below it).

@@ -68,6 +68,12 @@ std::vector<Vec3d> latticeBlock(const Vec3d& lo, const Vec3d& hi, double spacing
   return points;
 }
 
+double latticeBlockCount(const Vec3d& lo, const Vec3d& hi, double spacing) {
+  const Vec3d extent = hi - lo;
+  return double(axisCount(extent.x(), spacing)) * double(axisCount(extent.y(), spacing)) *
+         double(axisCount(extent.z(), spacing));
+}
+
 std::vector<Vec3d> openBoxWalls(const Vec3d& lo, const Vec3d& hi, double spacing, int layers) {
   std::vector<Vec3d> points;
   const Vec3d extent = hi - lo;

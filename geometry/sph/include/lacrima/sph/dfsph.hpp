@@ -69,6 +69,9 @@ BoundaryParticles boundaryFromSamples(std::vector<Vec3d> samples, double particl
 
 // Points on a lattice of spacing `spacing` filling [lo, hi] (from lo + spacing / 2).
 std::vector<Vec3d> latticeBlock(const Vec3d& lo, const Vec3d& hi, double spacing);
+// How many points latticeBlock(lo, hi, spacing) makes, without making them (as a double: a shot's
+// slip can ask for more than fit in memory, or in an int).
+double latticeBlockCount(const Vec3d& lo, const Vec3d& hi, double spacing);
 
 // Boundary samples on the surface of a triangle mesh, one layer (Akinci et al. 2012 section 3.1:
 // a single layer of boundary particles suffices, their volumes V_b making up for the missing
@@ -88,6 +91,9 @@ struct SurfaceSite {
 // Only the triangles `selected` marks, when it has one entry per triangle (a stretch of a face).
 std::vector<SurfaceSite> meshSurfaceSites(const TriangleMesh& mesh, double spacing,
                                           const std::vector<bool>& selected = {});
+// How many sites meshSurfaceSites tries on the (selected) triangles before merging those that
+// neighbouring triangles share: what sampling a mesh would cost, without sampling it.
+double meshSurfaceSiteCandidates(const TriangleMesh& mesh, double spacing, const std::vector<bool>& selected = {});
 // The sites' positions on `mesh` (meshSurfaceSamples(mesh, s) is sitePositions(mesh,
 // meshSurfaceSites(mesh, s)), bitwise).
 std::vector<Vec3d> sitePositions(const TriangleMesh& mesh, const std::vector<SurfaceSite>& sites);
