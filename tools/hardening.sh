@@ -105,6 +105,7 @@ excluded_tests+=":DetailSubdivisionShot.KeyedBlendshapeCarriesTheNewVerticesWith
 # mesh samples), and the Release ctest runs the validations in full.
 excluded_tests+=":Dfsph.WaterColumnStaysAtRestWithAPressureGrowingAsRhoGH"
 excluded_tests+=":Dfsph.DamBreakFrontRunsAsMartinAndMoyceMeasured"
+excluded_tests+=":RayleighOscillation.*Rings*:RayleighOscillation.PeriodGrows*"
 excluded_tests+=":MeshBoundary.OneLayerOfSamplesHoldsWaterInAClosedTank"
 
 # One test executable as JOBS gtest shards side by side (the tests are single-threaded and ASan

@@ -22,6 +22,7 @@
 #include "detail_refinement.hpp"
 #include "eye_resolve.hpp"
 #include "flesh_frame.hpp"
+#include "lacrima/sph/surface_tension.hpp"
 #include "sph_liquid.hpp"
 #include "suggest.hpp"
 #include "liquid_tear_resolve.hpp"
@@ -1456,7 +1457,7 @@ class ShotReader {
   void readSph(const Json& v, const std::string& pointer) {
     ObjectReader o(c_, v, pointer,
                    {"material", "start", "particleRadius", "drops", "blocks", "colliders", "restDensity", "viscosity",
-                    "surfaceTension", "adhesion", "gravity", "surface"});
+                    "surfaceTension", "sigma", "adhesion", "gravity", "surface"});
     if (!o.ok()) return;
     const size_t before = c_.errorCount();
     ShotSph liquid;
@@ -1478,6 +1479,11 @@ class ShotReader {
     if (auto x = o.number("restDensity", Range::above(0))) f.restDensity = *x;
     if (auto x = o.number("viscosity", Range::closed(0, 1))) f.xsphViscosity = *x;
     if (auto x = o.number("surfaceTension", Range::atLeast(0))) f.surfaceTension = *x;
+    if (auto x = o.number("sigma", Range::atLeast(0))) {
+      if (o.has("surfaceTension"))
+        o.error("sigma", "give one of 'sigma' (N/m) and 'surfaceTension' (Akinci et al.'s gamma), not both", Anchor::Key);
+      f.surfaceTension = sph::akinciGammaForSigma(*x, f.restDensity, f.particleRadius);
+    }
     if (auto x = o.number("adhesion", Range::atLeast(0))) f.adhesion = *x;
     if (auto x = o.vec3("gravity")) f.gravity = x->cast<double>();
     if (const Json* d = o.find("drops"))

@@ -14,6 +14,7 @@
 #include "lacrima/geometry/error.hpp"
 #include "lacrima/geometry/mesh.hpp"
 #include "lacrima/scenes/shot.hpp"
+#include "lacrima/sph/surface_tension.hpp"
 #include "scenes/shot_test_support.hpp"
 
 namespace lacrima {
@@ -297,6 +298,21 @@ TEST(SphShot, BadInputIsReportedAtItsPath) {
   expectSingleError("sph_no_fluid.json",
                     replaced(dropShot(), R"("drops": [{"center": [0, 0.0041, 0], "radius": 0.0015, "velocity": [0, -0.3, 0]}],)", ""),
                     "/sph/0/drops: an SPH liquid needs at least one of 'drops' or 'blocks' (the fluid it releases)");
+  expectSingleError("sph_sigma_and_gamma.json", dropShot(R"(, "sigma": 0.072)"),
+                    "/sph/0/sigma: give one of 'sigma' (N/m) and 'surfaceTension' (Akinci et al.'s gamma), not both");
+  expectSingleError("sph_negative_sigma.json", replaced(dropShot(), R"("surfaceTension": 20)", R"("sigma": -0.07)"),
+                    "/sph/0/sigma: expected a number >= 0, found -0.07");
+}
+
+TEST(SphShot, SigmaInNewtonsPerMetreSetsTheCohesionForTheParticleSize) {
+  // 0.25 mm particles of water at 0.072 N/m: gamma = sigma / (c rho0^2 r^2) (surface_tension.hpp).
+  const Shot shot = loadShot(writeShot("sph_sigma.json", replaced(dropShot(), R"("surfaceTension": 20)", R"("sigma": 0.072)")));
+  ASSERT_EQ(shot.sph.size(), 1u);
+  EXPECT_NEAR(shot.sph[0].fluid.surfaceTension, 0.072 / (sph::kSigmaPerGamma * 1e6 * 0.00025 * 0.00025), 1e-9);
+  // The same sigma at twice the rest density (read after it) needs a quarter of the gamma.
+  const Shot dense = loadShot(writeShot(
+      "sph_sigma_dense.json", replaced(dropShot(), R"("surfaceTension": 20)", R"("sigma": 0.072, "restDensity": 2000)")));
+  EXPECT_NEAR(dense.sph[0].fluid.surfaceTension, shot.sph[0].fluid.surfaceTension / 4.0, 1e-9);
 }
 
 TEST(SphShot, AParticleRadiusFarTooSmallForTheDropIsAnErrorNotAnExhaustedMemory) {

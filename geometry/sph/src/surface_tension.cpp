@@ -24,4 +24,12 @@ double AdhesionSpline::value(double r) const {
   return scale_ * std::pow(std::max(0.0, -4.0 * r * r / h_ + 6.0 * r - 2.0 * h_), 0.25);
 }
 
+double akinciGammaForSigma(double sigma, double restDensity, double particleRadius) {
+  return sigma / (kSigmaPerGamma * restDensity * restDensity * particleRadius * particleRadius);
+}
+
+double sigmaForAkinciGamma(double gamma, double restDensity, double particleRadius) {
+  return gamma * kSigmaPerGamma * restDensity * restDensity * particleRadius * particleRadius;
+}
+
 }  // namespace lacrima::sph

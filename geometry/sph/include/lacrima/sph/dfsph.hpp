@@ -38,7 +38,7 @@ struct FluidParams {
   double particleRadius = 0.0025;  // metres; particles start 2 r apart, the kernel reaches 4 r
   double restDensity = 1000.0;     // kg / m^3
   double xsphViscosity = 0.01;     // c above, dimensionless
-  double surfaceTension = 0.0;     // Akinci et al. 2013's gamma (surface_tension.hpp); 0 = none
+  double surfaceTension = 0.0;     // Akinci et al. 2013's gamma; from N/m: akinciGammaForSigma; 0 = none
   double adhesion = 0.0;           // Akinci et al. 2013's beta, towards boundary particles; 0 = none
   Vec3d gravity = Vec3d(0.0, -9.81, 0.0);
   double cflFactor = 0.4;
