@@ -1,6 +1,6 @@
 // Divergence-free SPH (dfsph.hpp): a water column at rest stays at rest with a pressure that grows
 // as rho g h; a dam break's front runs as Martin & Moyce measured; the density stays within its
-// tolerance; the same run is bitwise the same with one thread or all.
+// tolerance and no mass is lost; the same run is bitwise the same with one thread or all.
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
@@ -120,14 +120,22 @@ TEST(Dfsph, DamBreakFrontRunsAsMartinAndMoyceMeasured) {
   }
 }
 
-TEST(Dfsph, EveryStepOfADamBreakEndsWithinTheDensityAndDivergenceTolerances) {
+TEST(Dfsph, EveryStepOfADamBreakEndsWithinTheDensityAndDivergenceTolerancesAndKeepsItsMass) {
   // The collapse's first 100 steps (the column falling and the surge starting, where the velocity
   // field changes most): both solves converge to their tolerances (0.1 % average compression; 0.1 %
-  // average density change over a step), never stopped by the iteration cap.
+  // average density change over a step), never stopped by the iteration cap. Mass is conserved
+  // exactly: no particle is created, lost or reweighted, and none leaks out of the tank.
   DfsphSolver solver = damBreak(0.1);
+  const size_t count = solver.positions().size();
+  const double mass = solver.particleMass(), r = solver.params().particleRadius;
   int mostDensity = 0, mostDivergence = 0;
   for (int k = 0; k < 100; ++k) {
     solver.step();
+    ASSERT_EQ(solver.positions().size(), count) << "step " << k;
+    ASSERT_EQ(solver.particleMass(), mass) << "step " << k;
+    for (const Vec3d& x : solver.positions())
+      ASSERT_TRUE(x.x() > -r && x.x() < 0.5 + r && x.y() > -r && x.z() > -r && x.z() < 0.04 + r)
+          << "step " << k << ": a particle at " << x.transpose() << " left the 50 x 20 x 4 cm tank";
     const StepStats& s = solver.lastStep();
     ASSERT_LE(s.densityError, solver.params().maxDensityError) << "step " << k;
     ASSERT_LE(s.divergenceError, solver.params().maxDivergenceError) << "step " << k;

@@ -278,6 +278,46 @@ TEST(ExportObj, ParsesBackToTheFrameBuildersMeshes) {
   EXPECT_NE(mtl.find("newmtl grey\nKd 0.25 0.5 0.75\n"), std::string::npos) << mtl;
 }
 
+TEST(ExportSph, TheSurfacedLiquidIsExportedAsTheFrameBuilderSurfacesIt) {
+  // A 1.5 mm SPH drop of 0.25 mm particles falling onto a card at 240 fps: frame 3 holds the card
+  // and the liquid's surface ("sph 0"), closed, in its water material.
+  const fs::path dir = test::testDirectory("export_sph", /*fresh=*/true);
+  const fs::path shotPath = dir / "sph.json";
+  std::ofstream(shotPath) << R"({
+  "version": 1,
+  "frames": {"start": 1, "end": 3, "fps": 240},
+  "output": "out/sph.####.exr",
+  "render": {"width": 8, "height": 8, "spp": 1},
+  "camera": {"position": [0, 0.01, 0.03], "lookAt": [0, 0, 0], "fov": 30},
+  "materials": {"card": {"type": "diffuse"}, "water": {"type": "water"}},
+  "shapes": [{"type": "rectangle", "center": [0, 0, 0], "size": [0.02, 0.02], "normal": [0, 1, 0], "material": "card"}],
+  "sph": [{"material": "water", "particleRadius": 0.00025, "sigma": 0.072,
+           "drops": [{"center": [0, 0.0041, 0], "radius": 0.0015, "velocity": [0, -0.3, 0]}],
+           "colliders": [{"shape": 0}]}]
+}
+)";
+  const Shot shot = loadShot(shotPath);
+  const fs::path file = dir / "sph.glb";
+  const auto run = lacrima({"export", shotPath.string(), "--frames", "3", "--out", file.string()});
+  ASSERT_EQ(run.exitStatus, 0) << run.output;
+  const std::vector<ExpectedMesh> expected = expectedMeshes(shot, 3);
+  const GltfAsset asset = loadGltfAsset(file);
+  ASSERT_EQ(asset.primitives.size(), expected.size());
+  bool sawLiquid = false;
+  for (size_t i = 0; i < expected.size(); ++i) {
+    const TriangleMesh& want = expected[i].mesh;
+    const GltfPrimitive& got = asset.primitives[i];
+    EXPECT_EQ(got.name, want.name + "/" + expected[i].material);
+    EXPECT_EQ(got.mesh.indices, want.indices) << want.name;
+    expectSamePositions(got.mesh.positions, want.positions, want.name);
+    if (want.name != "sph 0") continue;
+    sawLiquid = true;
+    EXPECT_EQ(got.material.transmission, 1.0f) << "the liquid keeps its water material";
+    EXPECT_GT(got.mesh.triangleCount(), 100u);
+  }
+  EXPECT_TRUE(sawLiquid) << "no mesh named 'sph 0' in the export";
+}
+
 // ---- bad input ---------------------------------------------------------------------------------
 
 class ExportErrors : public ::testing::Test {
