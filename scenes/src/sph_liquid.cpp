@@ -8,6 +8,7 @@
 #include "asset_pose.hpp"
 #include "shot_geometry.hpp"
 #include "surface_anchor.hpp"
+#include "surface_attachment.hpp"
 #include "lacrima/flesh/flesh_state_cache.hpp"
 #include "lacrima/flesh/fnv1a.hpp"
 #include "lacrima/geometry/error.hpp"
@@ -43,9 +44,18 @@ double latticePointsOfRelease(const ShotSphRelease& release, double particleRadi
 // The seconds since the simulation's start of a (fractional) frame.
 double secondsAt(double frame, double startFrame, double fps) { return (frame - startFrame) / fps; }
 
-// A shape's surface at a frame, at its keyed centre (an `attach` to an asset is not followed).
-TriangleMesh shapeSurface(const ShotShape& shape, double frame) {
-  return shapeTriangles(shape, shape.centerCurve ? shape.centerCurve->evaluate(float(frame)) : shape.center);
+// A shape's surface at a frame: at its keyed centre, moved with the skin when it is attached
+// (`attachedAsset`, the asset of its `attach`), as the frame builder places it.
+TriangleMesh shapeSurface(const ShotShape& shape, const std::optional<ShotAsset>& attachedAsset, double frame) {
+  Vec3 center = shape.centerCurve ? shape.centerCurve->evaluate(float(frame)) : shape.center;
+  if (shape.attachment && attachedAsset) {
+    const ShotShape::Attachment& attachment = *shape.attachment;
+    // attachedPoint reads only the attachment's primitive: pose that one alone.
+    std::vector<TriangleMesh> posed(attachment.primitive + 1);
+    posed[attachment.primitive] = posedPrimitive(*attachedAsset, assetPoseAt(*attachedAsset, frame), attachment.primitive);
+    center += shotfile::attachedPoint(posed, attachment) - attachment.reference;
+  }
+  return shapeTriangles(shape, center);
 }
 
 // Per vertex, the kernel-weighted mean velocity of the particles within the kernel's support
@@ -126,7 +136,8 @@ SphRun::SphRun(const Shot& shot, const ShotSph& liquid)
     Collider collider;
     collider.pointer = liquid.colliderShapePointers[c];
     collider.shape = shot.shapes[index];
-    collider.moves = bool(collider.shape->centerCurve);
+    if (collider.shape->attachment) collider.attachedAsset = shot.assets[collider.shape->attachment->asset];
+    collider.moves = bool(collider.shape->centerCurve) || (collider.attachedAsset && collider.attachedAsset->animated());
     colliders_.push_back(std::move(collider));
   }
   for (size_t c = 0; c < liquid.colliderParts.size(); ++c) {
@@ -189,7 +200,7 @@ std::vector<Vec3d> SphRun::sampleCollider(Collider& collider) const {
 }
 
 std::vector<TriangleMesh> SphRun::colliderMeshes(const Collider& collider, double frame) const {
-  if (collider.shape) return {shapeSurface(*collider.shape, frame)};
+  if (collider.shape) return {shapeSurface(*collider.shape, collider.attachedAsset, frame)};
   std::vector<TriangleMesh> meshes;
   const AssetPose pose = assetPoseAt(*collider.asset, frame);
   for (size_t p : collider.primitives) meshes.push_back(posedPrimitive(*collider.asset, pose, p));

@@ -74,6 +74,7 @@ class SphRun {
   struct Collider {
     std::optional<ShotShape> shape;
     std::optional<ShotAsset> asset;  // its meshes and rig shared with the shot's
+    std::optional<ShotAsset> attachedAsset;  // a shape's: the asset its `attach` follows
     std::vector<size_t> primitives;   // of the asset, in its part
     std::vector<ShotSkinRegion> regions;  // the stretch of the part sampled; none: all of it
     std::vector<std::vector<sph::SurfaceSite>> sites;  // per mesh (one for a shape)

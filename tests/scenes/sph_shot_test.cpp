@@ -263,6 +263,39 @@ TEST(SphShot, TheChinOfAnOpeningJawPushesTheDropUnderIt) {
   EXPECT_NEAR(liquidTop(left), liquidTop(start), 0.0005f);
 }
 
+// A 6 mm plate held 1.4 mm under the ICT face's chin, facing down, `attach`ed to the face or not,
+// over a 1.2 mm drop floating (no gravity) 1.5 mm under it while the jaw opens as above; the plate
+// is the liquid's only collider.
+std::string plateUnderAnOpeningJaw(bool attached) {
+  const std::string attach = attached ? R"(, "attach": {"asset": "face", "part": "M_Face"})" : "";
+  return replaced(
+      test::ictFaceShot(R"("shapes": [{"type": "rectangle", "center": [0, -0.085, 0.0817], "size": [0.006, 0.006],
+                    "normal": [0, -1, 0], "material": "skin")" + attach + R"(}],
+  "sph": [{"material": "water", "particleRadius": 0.0002, "surfaceTension": 20, "gravity": [0, 0, 0],
+           "drops": [{"center": [0, -0.0877, 0.0817], "radius": 0.0012}], "colliders": [{"shape": 0}]}])",
+                        "", R"("blendshapes": {"jawOpen": {"keys": [[1, 0], [13, 1]], "interpolation": "linear"}})", 13),
+      R"("fps": 24)", R"("fps": 240)");
+}
+
+TEST(SphShot, AShapeAttachedToTheFaceCollidesWhereTheFaceCarriesIt) {
+  const Shot attached = loadShot(writeShot("sph_attached_plate.json", plateUnderAnOpeningJaw(true)));
+  const Shot still = loadShot(writeShot("sph_still_plate.json", plateUnderAnOpeningJaw(false)));
+  const Frame start = buildFrame(attached, 1), pushed = buildFrame(attached, 13), left = buildFrame(still, 13);
+  std::printf("[ attached collider ] drop top %.2f -> %.2f mm under an attached plate, %.2f mm under a still one\n",
+              1e3 * liquidTop(start), 1e3 * liquidTop(pushed), 1e3 * liquidTop(left));
+  // The rendered plate (the frame builder's) and the collider move together: the plate goes down
+  // with the chin, and the drop under it is pushed ahead of it.
+  const auto plateHeight = [](const Frame& frame) {
+    for (const MeshInstance& m : frame.meshes)
+      if (m.mesh.name == "rectangle") return m.mesh.positions[0].y();
+    return 1.0f;
+  };
+  EXPECT_LT(plateHeight(pushed), plateHeight(start) - 0.015f) << "the attached plate must follow the opening jaw";
+  EXPECT_LT(liquidTop(pushed), liquidTop(start) - 0.015f);
+  EXPECT_LT(liquidTop(pushed), plateHeight(pushed)) << "the drop stays under the plate";
+  EXPECT_NEAR(liquidTop(left), liquidTop(start), 0.0005f) << "a plate not attached stays, and so does the drop";
+}
+
 TEST(SphShot, AColliderRegionHoldingNoTriangleIsAnErrorNamingIt) {
   const std::filesystem::path path = writeShot(
       "sph_empty_region.json",
