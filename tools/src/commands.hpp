@@ -38,6 +38,14 @@ struct ExportOptions {
   std::string outputPattern;          // empty: the shot's output pattern with the format's extension
 };
 
+struct FloodOptions {
+  std::vector<std::string> experiments;  // empty: all (crowd::seedFloodExperiments)
+  std::string outputDirectory = "flood";
+  double duration = 300.0;               // simulated seconds at most per experiment
+  double coupledParticleMass = 10.0;     // kg per colliding particle in eq. 5 (<= 0: the SPH particle's)
+  double particleRadius = 0.25;          // metres
+};
+
 struct FarmSubmitOptions {
   RenderOptions render;     // shot, --frames, the overrides and --out each task renders with
   int chunk = 4;            // frames per array task
@@ -106,6 +114,7 @@ int runBenchQuality(const BenchOptions& options);
 int runBenchFlesh(const BenchOptions& options);
 int runBenchSph(const BenchOptions& options);
 int runExport(const ExportOptions& options);
+int runFlood(const FloodOptions& options);
 int runFarmSubmit(const FarmSubmitOptions& options);
 int runFarmStatus(const FarmStatusOptions& options);
 

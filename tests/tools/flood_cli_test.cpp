@@ -1,0 +1,61 @@
+// `lacrima flood`: the real binary runs one of the seed's experiments for a simulated second and
+// writes its trajectories, top-view plots and table; bad options write nothing.
+#include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "support/run_command.hpp"
+#include "support/test_directory.hpp"
+
+namespace lacrima {
+namespace {
+
+namespace fs = std::filesystem;
+
+test::CommandResult lacrimaFlood(const std::string& options) {
+  return test::runCommand(test::shellQuote(LACRIMA_BINARY) + " flood " + options);
+}
+
+std::string contents(const fs::path& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+TEST(FloodCli, OneExperimentWritesTrajectoriesPlotsAndTheTable) {
+  const fs::path dir = test::testDirectory("flood_cli", /*fresh=*/true);
+  const auto run = lacrimaFlood("--experiments obstacle --duration 1 --out " + test::shellQuote(dir.string()));
+  ASSERT_EQ(run.exitStatus, 0) << run.output;
+  // One crowd: the 50 crossing agents at tau 0.6, none there after a second.
+  EXPECT_NE(run.output.find("obstacle: tau 0.6, v_F 1.5 m/s: not reached: 0 arrived, 0 lost, 50 still in the field"),
+            std::string::npos)
+      << run.output;
+  const std::string csv = contents(dir / "obstacle_tau0.6.csv");
+  EXPECT_EQ(csv.rfind("time,agent,x,z,state,hip_height\n0.50,0,", 0), 0u) << csv.substr(0, 200);
+  EXPECT_NE(csv.find("\n1.00,49,"), std::string::npos) << "every agent every half second";
+  const auto plot = OIIO::ImageInput::open((dir / "obstacle_tau0.6.png").string());
+  ASSERT_TRUE(plot);
+  EXPECT_EQ(plot->spec().width, 800);  // the 100 x 50 m field at 8 pixels a metre
+  EXPECT_EQ(plot->spec().height, 400);
+  EXPECT_NE(contents(dir / "table.md").find("| obstacle: tau 0.6, v_F 1.5 m/s | not reached"), std::string::npos);
+}
+
+TEST(FloodCli, AnUnknownExperimentIsABadOptionAndWritesNothing) {
+  const fs::path dir = test::testDirectory("flood_cli_bad", /*fresh=*/true);
+  const auto run = lacrimaFlood("--experiments table1-9 --out " + test::shellQuote((dir / "out").string()));
+  EXPECT_EQ(run.exitStatus, 2);
+  EXPECT_NE(run.output.find("lacrima flood: --experiments: unknown experiment 'table1-9' (expected some of "
+                            "counter-stream, obstacle, table1-0.5, table1-1.5, table1-2.5)"),
+            std::string::npos)
+      << run.output;
+  EXPECT_FALSE(fs::exists(dir / "out"));
+  EXPECT_EQ(lacrimaFlood("--duration 0").exitStatus, 2) << "a duration must be at least a second";
+}
+
+}  // namespace
+}  // namespace lacrima

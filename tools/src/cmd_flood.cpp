@@ -1,0 +1,180 @@
+// `lacrima flood`: Schaffer et al. 2020's flood experiments (crowds crossing a river of SPH water;
+// geometry/crowd/include/lacrima/crowd/flood.hpp), with their trajectories, top-view plots and a
+// table of outcomes (docs/crowd.md).
+#include <OpenImageIO/imagebuf.h>
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "atomic_write.hpp"
+#include "commands.hpp"
+#include "lacrima/crowd/flood.hpp"
+#include "lacrima/geometry/error.hpp"
+
+namespace lacrima::cli {
+
+namespace {
+
+using crowd::FloodExperiment;
+using crowd::FloodSimulation;
+
+constexpr int kPixelsPerMetre = 8;
+
+// A top view of the field, x to the right (the river flows to the left), z up: the river blue,
+// obstacles dark grey, the goal yellow, every agent's positions red (the seed's figures).
+class TopView {
+ public:
+  explicit TopView(const crowd::FloodParams& p)
+      : width_(int(std::lround((p.field.max.x() - p.field.min.x()) * kPixelsPerMetre))),
+        height_(int(std::lround((p.field.max.y() - p.field.min.y()) * kPixelsPerMetre))),
+        origin_(p.field.min),
+        rgb_(size_t(width_) * size_t(height_) * 3) {
+    for (int y = 0; y < height_; ++y)
+      for (int x = 0; x < width_; ++x) {
+        const crowd::Vec2d g = ground(x, y);
+        const bool river = g.y() >= p.river.zMin && g.y() <= p.river.zMin + p.river.width;
+        set(x, y, river ? 0.55f : 0.78f, river ? 0.7f : 0.76f, river ? 0.9f : 0.68f);
+        for (const crowd::GroundRect& o : p.river.obstacles)
+          if (o.contains(g)) set(x, y, 0.25f, 0.25f, 0.25f);
+      }
+  }
+  void dot(const crowd::Vec2d& at, float r, float g, float b, int radius = 0) {
+    const int cx = int((at.x() - origin_.x()) * kPixelsPerMetre), cy = height_ - 1 - int((at.y() - origin_.y()) * kPixelsPerMetre);
+    for (int dy = -radius; dy <= radius; ++dy)
+      for (int dx = -radius; dx <= radius; ++dx)
+        if (cx + dx >= 0 && cx + dx < width_ && cy + dy >= 0 && cy + dy < height_) set(cx + dx, cy + dy, r, g, b);
+  }
+  void write(const std::filesystem::path& path) const {
+    OIIO::ImageBuf image(OIIO::ImageSpec(width_, height_, 3, OIIO::TypeDesc::FLOAT));
+    image.set_pixels(OIIO::ROI(0, width_, 0, height_, 0, 1, 0, 3), OIIO::TypeDesc::FLOAT, rgb_.data());
+    std::filesystem::create_directories(path.parent_path());
+    const std::filesystem::path temporary = path.string() + ".tmp.png";
+    if (!image.write(temporary.string(), OIIO::TypeDesc::UINT8))
+      throw InputError(fmt::format("cannot write the plot '{}': {}", path.string(), image.geterror()));
+    std::filesystem::rename(temporary, path);
+  }
+
+ private:
+  crowd::Vec2d ground(int x, int y) const {
+    return origin_ + crowd::Vec2d((x + 0.5) / kPixelsPerMetre, (height_ - 1 - y + 0.5) / kPixelsPerMetre);
+  }
+  void set(int x, int y, float r, float g, float b) {
+    float* p = &rgb_[(size_t(y) * size_t(width_) + size_t(x)) * 3];
+    p[0] = r, p[1] = g, p[2] = b;
+  }
+  int width_, height_;
+  crowd::Vec2d origin_;
+  std::vector<float> rgb_;
+};
+
+struct CrowdSummary {
+  std::string label;
+  int agents = 0, arrived = 0, lost = 0;
+  double lastArrival = -1.0;  // when every agent arrived; < 0 otherwise
+};
+
+std::string outcomeText(const CrowdSummary& s) {
+  const std::string time = s.arrived == s.agents ? fmt::format("{:.1f} s", s.lastArrival) : "not reached";
+  return fmt::format("{}: {} arrived, {} lost, {} still in the field", time, s.arrived, s.lost, s.agents - s.arrived - s.lost);
+}
+
+// Runs one experiment to its end (every agent arrived or lost) or the duration; writes
+// <out>/<name>_<crowd>.csv (every 5th frame: time, agent, x, z, state, hip height) and
+// <out>/<name>_<crowd>.png.
+std::vector<CrowdSummary> runExperiment(const FloodExperiment& experiment, const FloodOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  FloodSimulation simulation(experiment.params);
+  const size_t crowds = experiment.params.crowds.size();
+  std::vector<TopView> plots;
+  std::vector<std::ostringstream> csv(crowds);
+  for (size_t c = 0; c < crowds; ++c) {
+    plots.emplace_back(experiment.params);
+    csv[c] << "time,agent,x,z,state,hip_height\n";
+  }
+  std::fprintf(stderr, "flood: %s, %zu particles, %zu crowd(s)\n", experiment.name.c_str(),
+               simulation.liquid().positions().size(), crowds);
+  int frame = 0;
+  while (!simulation.settled() && simulation.time() < options.duration - 1e-9) {
+    simulation.advanceFrame();
+    ++frame;
+    for (size_t c = 0; c < crowds; ++c) {
+      const auto& agents = simulation.crowd(c).agents();
+      for (size_t a = 0; a < agents.size(); ++a) {
+        const crowd::AgentOutcome& o = simulation.outcomes(c)[a];
+        const bool walking = o.arrivalTime < 0.0 && o.lostTime < 0.0;
+        if (walking) plots[c].dot(agents[a].position, 0.85f, 0.05f, 0.05f);
+        if (frame % 5 != 0) continue;
+        const char* state = o.lostTime >= 0.0 ? "lost" : o.arrivalTime >= 0.0 ? "arrived"
+                            : simulation.ragdolls(c)[a]  ? "ragdoll" : "walking";
+        csv[c] << fmt::format("{:.2f},{},{:.3f},{:.3f},{},{:.3f}\n", simulation.time(), a, agents[a].position.x(),
+                              agents[a].position.y(), state, simulation.hipHeights(c)[a]);
+      }
+    }
+    if (frame % 100 == 0) {
+      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      std::fprintf(stderr, "flood: %s t = %.0f s, %zu particles, %.1f s of computing a simulated second\n",
+                   experiment.name.c_str(), simulation.time(), simulation.liquid().positions().size(),
+                   seconds / simulation.time());
+    }
+  }
+  std::vector<CrowdSummary> summaries;
+  for (size_t c = 0; c < crowds; ++c) {
+    CrowdSummary s;
+    s.label = experiment.crowdLabels[c];
+    for (const crowd::AgentOutcome& o : simulation.outcomes(c)) {
+      ++s.agents;
+      if (o.arrivalTime >= 0.0) ++s.arrived, s.lastArrival = std::max(s.lastArrival, o.arrivalTime);
+      if (o.lostTime >= 0.0) ++s.lost;
+    }
+    for (const crowd::Agent& a : experiment.params.crowds[c].agents) plots[c].dot(a.goal, 1.0f, 0.85f, 0.1f, 3);
+    const std::string stem = experiment.name + "_" + experiment.params.crowds[c].name;
+    writeFileAtomically(std::filesystem::path(options.outputDirectory) / (stem + ".csv"), "trajectories",
+                        [&](std::ostream& out) { out << csv[c].str(); });
+    plots[c].write(std::filesystem::path(options.outputDirectory) / (stem + ".png"));
+    summaries.push_back(s);
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::fprintf(stderr, "flood: %s done in %.0f s (%.0f simulated s, %.2f s a simulated second)\n", experiment.name.c_str(),
+               seconds, simulation.time(), seconds / std::max(simulation.time(), 1e-9));
+  return summaries;
+}
+
+}  // namespace
+
+int runFlood(const FloodOptions& options) {
+  try {
+    const std::vector<FloodExperiment> all = crowd::seedFloodExperiments(options.coupledParticleMass, options.particleRadius);
+    std::set<std::string> known;
+    for (const FloodExperiment& e : all) known.insert(e.name);
+    for (const std::string& name : options.experiments)
+      if (!known.count(name)) {
+        std::string list;
+        for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
+        throw InputError(fmt::format("--experiments: unknown experiment '{}' (expected some of {})", name, list));
+      }
+    std::string table = "| run | lacrima |\n|---|---|\n";
+    for (const FloodExperiment& e : all) {
+      if (!options.experiments.empty() && std::find(options.experiments.begin(), options.experiments.end(), e.name) == options.experiments.end())
+        continue;
+      for (const CrowdSummary& s : runExperiment(e, options)) {
+        table += fmt::format("| {} | {} |\n", s.label, outcomeText(s));
+        std::printf("%s: %s\n", s.label.c_str(), outcomeText(s).c_str());
+        std::fflush(stdout);
+      }
+    }
+    writeFileAtomically(std::filesystem::path(options.outputDirectory) / "table.md", "the table",
+                        [&](std::ostream& out) { out << table; });
+    return kExitOk;
+  } catch (const InputError& e) {
+    std::fprintf(stderr, "lacrima flood: %s\n", e.what());
+    return kExitBadInput;
+  }
+}
+
+}  // namespace lacrima::cli
