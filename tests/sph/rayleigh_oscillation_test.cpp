@@ -77,13 +77,19 @@ std::optional<double> firstPeriod(double sigma, double dropRadius, double partic
   return std::nullopt;
 }
 
-TEST(RayleighOscillation, WaterDropOfTwoMillimetresRingsAtRayleighsPeriod) {
-  const double expected = rayleighPeriod(kWaterSigma, 0.002);  // 23.4 ms
-  const std::optional<double> period = firstPeriod(kWaterSigma, 0.002, 1e-4, expected);
+// A water drop of `dropRadius` resolved by particles of `particleRadius` rings within 10 % of
+// Rayleigh's period.
+void expectRayleighsPeriod(double dropRadius, double particleRadius) {
+  const double expected = rayleighPeriod(kWaterSigma, dropRadius);
+  const std::optional<double> period = firstPeriod(kWaterSigma, dropRadius, particleRadius, expected);
   ASSERT_TRUE(period) << "the drop did not swing back within two of Rayleigh's periods";
-  std::printf("2 mm drop, 0.1 mm particles, sigma 0.072: period %.2f ms, Rayleigh %.2f ms\n", *period * 1e3,
-              expected * 1e3);
+  std::printf("%.0f mm drop, %.2f mm particles, sigma 0.072: period %.2f ms, Rayleigh %.2f ms\n", dropRadius * 1e3,
+              particleRadius * 1e3, *period * 1e3, expected * 1e3);
   EXPECT_NEAR(*period / expected, 1.0, 0.1);
+}
+
+TEST(RayleighOscillation, WaterDropOfTwoMillimetresRingsAtRayleighsPeriod) {
+  expectRayleighsPeriod(0.002, 1e-4);  // Rayleigh: 23.4 ms
 }
 
 TEST(RayleighOscillation, PeriodGrowsAsOneOverTheSquareRootOfSigma) {
@@ -97,12 +103,7 @@ TEST(RayleighOscillation, PeriodGrowsAsOneOverTheSquareRootOfSigma) {
 }
 
 TEST(RayleighOscillation, HalfTheDropAtHalfTheParticleRadiusRingsAsRayleighSays) {
-  const double expected = rayleighPeriod(kWaterSigma, 0.001);  // 8.3 ms
-  const std::optional<double> period = firstPeriod(kWaterSigma, 0.001, 5e-5, expected);
-  ASSERT_TRUE(period) << "the drop did not swing back within two of Rayleigh's periods";
-  std::printf("1 mm drop, 0.05 mm particles, sigma 0.072: period %.2f ms, Rayleigh %.2f ms\n", *period * 1e3,
-              expected * 1e3);
-  EXPECT_NEAR(*period / expected, 1.0, 0.1);
+  expectRayleighsPeriod(0.001, 5e-5);  // Rayleigh: 8.3 ms
 }
 
 TEST(RayleighOscillation, GammaAndSigmaConvertBothWays) {
