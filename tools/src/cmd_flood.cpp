@@ -4,6 +4,7 @@
 #include <OpenImageIO/imagebuf.h>
 #include <fmt/format.h>
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -16,6 +17,9 @@
 #include "commands.hpp"
 #include "lacrima/crowd/flood.hpp"
 #include "lacrima/geometry/error.hpp"
+#include "lacrima/geometry/shapes.hpp"
+#include "lacrima/sph/sph_surface.hpp"
+#include "mesh_export.hpp"
 
 namespace lacrima::cli {
 
@@ -73,6 +77,75 @@ class TopView {
   std::vector<float> rgb_;
 };
 
+// A quad (two triangles) from four corners in order.
+TriangleMesh quad(const std::string& name, const std::array<Vec3, 4>& corners) {
+  TriangleMesh mesh;
+  mesh.name = name;
+  mesh.positions.assign(corners.begin(), corners.end());
+  mesh.indices = {0, 1, 2, 0, 2, 3};
+  return mesh;
+}
+
+// The river and the crowd at this moment as meshes for a renderer: the surfaced water in its bed,
+// the banks a river's depth above the bed, each agent as an ellipsoid body 1.8 m tall standing on
+// the bank or the bed (lying at its hip height, along the stream, when carried as a ragdoll; none
+// once arrived or lost). Written as <stem>.glb with <stem>.json, a shot that renders it.
+void writeFloodScene(const FloodSimulation& simulation, size_t c, const std::filesystem::path& stem) {
+  const crowd::RiverParams& river = simulation.params().river;
+  const crowd::GroundRect& field = simulation.params().field;
+  ExportScene scene;
+  scene.materials = {{"water", Color(1.0f, 1.0f, 1.0f), 0.0f, 1.333f},
+                     {"body", Color(0.55f, 0.12f, 0.1f), 0.8f, std::nullopt},
+                     {"ground", Color(0.35f, 0.32f, 0.26f), 1.0f, std::nullopt}};
+  sph::SurfaceParams surfacing;
+  surfacing.voxelsPerRadius = 1.5;
+  surfacing.smoothingIterations = 16;
+  TriangleMesh water = sph::surfaceOfParticles(simulation.liquid().positions(), river.particleRadius, surfacing);
+  water.name = "river";
+  scene.meshes.push_back({std::move(water), 0});
+  const float x0 = float(field.min.x()), x1 = float(field.max.x()), z0 = float(field.min.y()), z1 = float(field.max.y());
+  const float nearBank = float(river.zMin), farBank = float(river.zMin + river.width), top = float(river.depth);
+  const auto inRiver = [&](const crowd::Vec2d& p) { return p.y() > nearBank && p.y() < farBank; };
+  const auto& agents = simulation.crowd(c).agents();
+  for (size_t a = 0; a < agents.size(); ++a) {
+    if (agents[a].arrived) continue;  // arrived or lost: out of the picture
+    const float floor = inRiver(agents[a].position) ? 0.0f : top;
+    const Vec3 ground(float(agents[a].position.x()), floor, float(agents[a].position.y()));
+    const bool ragdoll = simulation.ragdolls(c)[a];
+    const Vec3 center = ragdoll ? Vec3(ground.x(), float(simulation.hipHeights(c)[a]), ground.z()) : Vec3(ground + Vec3(0, 0.9f, 0));
+    const Mat3 axes = ragdoll ? Mat3(Vec3(0.9f, 0.22f, 0.25f).asDiagonal()) : Mat3(Vec3(0.25f, 0.9f, 0.18f).asDiagonal());
+    TriangleMesh body = makeEllipsoid(center, axes, 12, 24);
+    body.name = fmt::format("agent {}", a);
+    scene.meshes.push_back({std::move(body), 1});
+  }
+  // Counter-clockwise seen from above (or from the river, for the banks' faces).
+  scene.meshes.push_back({quad("near bank", {Vec3(x0, top, z0), Vec3(x0, top, nearBank), Vec3(x1, top, nearBank), Vec3(x1, top, z0)}), 2});
+  scene.meshes.push_back({quad("far bank", {Vec3(x0, top, farBank), Vec3(x0, top, z1), Vec3(x1, top, z1), Vec3(x1, top, farBank)}), 2});
+  scene.meshes.push_back({quad("river bed", {Vec3(x0, 0, nearBank), Vec3(x0, 0, farBank), Vec3(x1, 0, farBank), Vec3(x1, 0, nearBank)}), 2});
+  scene.meshes.push_back({quad("near bank face", {Vec3(x0, 0, nearBank), Vec3(x1, 0, nearBank), Vec3(x1, top, nearBank), Vec3(x0, top, nearBank)}), 2});
+  scene.meshes.push_back({quad("far bank face", {Vec3(x1, 0, farBank), Vec3(x0, 0, farBank), Vec3(x0, top, farBank), Vec3(x1, top, farBank)}), 2});
+  writeGlb(stem.string() + ".glb", scene);
+  const std::string glb = stem.filename().string() + ".glb";
+  const std::string shot = fmt::format(R"({{
+  // The flood at {:.1f} s, written by `lacrima flood --scene-at`: render with `lacrima render` on this file.
+  "version": 1,
+  "frames": {{"start": 1, "end": 1, "fps": 24}},
+  "output": "{}.####.exr",
+  "render": {{"width": 960, "height": 540, "spp": 32, "maxDepth": 12}},
+  "camera": {{"position": [36, 5.5, -4], "lookAt": [50, 0.5, 20], "fov": 40}},
+  "environment": {{"file": "{}/scenes/assets/hdri/sunset.exr", "intensity": 1.0}},
+  "materials": {{
+    "water": {{"type": "water"}},
+    "body": {{"type": "diffuse", "albedo": [0.55, 0.12, 0.1]}},
+    "ground": {{"type": "diffuse", "albedo": [0.35, 0.32, 0.26]}}
+  }},
+  "assets": [{{"name": "flood", "file": "{}", "materials": {{"water": "water", "body": "body", "ground": "ground"}}}}]
+}}
+)",
+                                       simulation.time(), stem.filename().string(), LACRIMA_SOURCE_DIR, glb);
+  writeFileAtomically(stem.string() + ".json", "the scene's shot", [&](std::ostream& out) { out << shot; });
+}
+
 struct CrowdSummary {
   std::string label;
   int agents = 0, arrived = 0, lost = 0;
@@ -116,6 +189,12 @@ std::vector<CrowdSummary> runExperiment(const FloodExperiment& experiment, const
                               agents[a].position.y(), state, simulation.hipHeights(c)[a]);
       }
     }
+    for (double at : options.sceneTimes)
+      if (std::abs(simulation.time() - at) < 0.5 * experiment.params.frameTime)
+        for (size_t c = 0; c < crowds; ++c)
+          writeFloodScene(simulation, c,
+                          std::filesystem::path(options.outputDirectory) /
+                              fmt::format("{}_{}_t{:.0f}", experiment.name, experiment.params.crowds[c].name, at));
     if (frame % 100 == 0) {
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       std::fprintf(stderr, "flood: %s t = %.0f s, %zu particles, %.1f s of computing a simulated second\n",

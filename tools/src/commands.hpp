@@ -44,6 +44,7 @@ struct FloodOptions {
   double duration = 300.0;               // simulated seconds at most per experiment
   double coupledParticleMass = 10.0;     // kg per colliding particle in eq. 5 (<= 0: the SPH particle's)
   double particleRadius = 0.25;          // metres
+  std::vector<double> sceneTimes;        // simulated seconds at which to write the scene (glb + shot)
 };
 
 struct FarmSubmitOptions {

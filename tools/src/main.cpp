@@ -187,7 +187,9 @@ const char* kFloodExamples =
     "Writes, in --out: <experiment>_<crowd>.csv (every half second: time, agent, x, z, state,\n"
     "hip height), <experiment>_<crowd>.png (a top view, the river flowing to the left, the\n"
     "trajectories red) and table.md (each run's time for the last agent, or not reached, and how\n"
-    "many arrived and were lost), and prints the table's rows as they finish.\n"
+    "many arrived and were lost), and prints the table's rows as they finish. With --scene-at T,\n"
+    "also each crowd's scene at T simulated seconds as <experiment>_<crowd>_tT.glb and a shot\n"
+    "<experiment>_<crowd>_tT.json that renders it (`lacrima render` on the .json).\n"
     "Exit status: 0 success, 2 bad options or an output that cannot be written.";
 
 void addFlood(CLI::App& app, FloodOptions& o) {
@@ -206,6 +208,11 @@ void addFlood(CLI::App& app, FloodOptions& o) {
   flood->add_option("--particle-radius", o.particleRadius,
                     "SPH particle radius in metres (default 0.25: 21,600 particles; 0.15: 100,000)")
       ->check(CLI::Range(0.1, 1.0));
+  flood->add_option("--scene-at", o.sceneTimes,
+                    "Simulated seconds at which to write each crowd's scene: <experiment>_<crowd>_t<T>.glb "
+                    "(the surfaced river, the agents, the ground) and a .json shot that renders it")
+      ->delimiter(',')
+      ->check(CLI::Range(0.0, 3600.0));
   flood->callback([&o] { throw CLI::RuntimeError(runFlood(o)); });
 }
 
