@@ -228,7 +228,7 @@ std::vector<CrowdSummary> runExperiment(const FloodExperiment& experiment, const
 
 int runFlood(const FloodOptions& options) {
   try {
-    const std::vector<FloodExperiment> all = crowd::seedFloodExperiments(options.coupledParticleMass, options.particleRadius);
+    const std::vector<FloodExperiment> all = crowd::seedFloodExperiments(options.coupledDensity, options.particleRadius);
     std::set<std::string> known;
     for (const FloodExperiment& e : all) known.insert(e.name);
     for (const std::string& name : options.experiments)

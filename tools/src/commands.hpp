@@ -42,7 +42,7 @@ struct FloodOptions {
   std::vector<std::string> experiments;  // empty: all (crowd::seedFloodExperiments)
   std::string outputDirectory = "flood";
   double duration = 300.0;               // simulated seconds at most per experiment
-  double coupledParticleMass = 10.0;     // kg per colliding particle in eq. 5 (<= 0: the SPH particle's)
+  double coupledDensity = 80.0;          // kg/m^3 of water as eq. 5 counts it (<= 0: the liquid's own)
   double particleRadius = 0.25;          // metres
   std::vector<double> sceneTimes;        // simulated seconds at which to write the scene (glb + shot)
 };

@@ -39,6 +39,7 @@ const char* kDescription =
     "      render the regression shots and compare them with their reference images\n"
     "  lacrima farm submit shot.json --chunk 6\n"
     "      the shot's frames as a Slurm array job; `lacrima farm status shot.json` follows it\n"
+    "  lacrima flood --out flood      the flood seed's experiments: crowds crossing a river of SPH water\n"
     "\n"
     "Exit status: 0 success, 1 render failure, 2 bad input (shot file, asset or options);\n"
     "diff and test-suite: 0 pass, 1 warn, 2 fail or bad input; farm status: 3 frames still running.";
@@ -173,7 +174,7 @@ void addExport(CLI::App& app, ExportOptions& o) {
 const char* kFloodExamples =
     "Examples:\n"
     "  lacrima flood --out flood\n"
-    "      every experiment (about 30 minutes on 2 cores at the default 0.25 m particles)\n"
+    "      every experiment (about 17 minutes on 2 cores at the default 0.25 m particles)\n"
     "  lacrima flood --experiments table1-1.5 --duration 60 --out /tmp/flood\n"
     "      the four crowds of Table 1 at 1.5 m/s, for the first simulated minute\n"
     "\n"
@@ -201,12 +202,12 @@ void addFlood(CLI::App& app, FloodOptions& o) {
   flood->add_option("--out,-o", o.outputDirectory, "Folder for the trajectories, plots and table (default: flood)");
   flood->add_option("--duration", o.duration, "Simulated seconds at most per experiment (default 300)")
       ->check(CLI::Range(1.0, 3600.0));
-  flood->add_option("--coupled-mass", o.coupledParticleMass,
-                    "kg each colliding particle counts for in eq. 5 (default 10, about the seed's per-frame "
-                    "mass; 0: the SPH particle's own, 125 kg at 0.25 m)")
+  flood->add_option("--coupled-density", o.coupledDensity,
+                    "kg/m^3 of water as the seed's eq. 5 counts it, each colliding particle weighing this "
+                    "times its volume (default 80, what the seed's timings imply; 0: water's own 1000)")
       ->check(CLI::Range(0.0, 1e4));
   flood->add_option("--particle-radius", o.particleRadius,
-                    "SPH particle radius in metres (default 0.25: 21,600 particles; 0.15: 100,000)")
+                    "SPH particle radius in metres (default 0.25: 21,600 particles; 0.15: 89,910)")
       ->check(CLI::Range(0.1, 1.0));
   flood->add_option("--scene-at", o.sceneTimes,
                     "Simulated seconds at which to write each crowd's scene: <experiment>_<crowd>_t<T>.glb "

@@ -137,8 +137,9 @@ void FloodSimulation::advanceCrowd(size_t c) {
   BioCrowds& crowd = crowds_[c];
   std::vector<Vec2d> positions;
   for (const Agent& a : crowd.agents()) positions.push_back(a.position);
-  const double particleMass =
-      params_.coupledParticleMass > 0.0 ? params_.coupledParticleMass : liquid_.particleMass();
+  const double particleMass = params_.coupledDensity > 0.0
+                                  ? liquid_.particleMass() * params_.coupledDensity / liquid_.params().restDensity
+                                  : liquid_.particleMass();
   const std::vector<FluidContact> contacts =
       fluidContacts(positions, liquid_.positions(), liquid_.velocities(), particleMass, params_.coupling);
   const double tau = endurance(c, time_);
@@ -184,12 +185,12 @@ std::vector<Agent> seedCrossingAgents() {
   return agents;
 }
 
-std::vector<FloodExperiment> seedFloodExperiments(double coupledParticleMass, double particleRadius) {
+std::vector<FloodExperiment> seedFloodExperiments(double coupledDensity, double particleRadius) {
   const auto base = [&](double speed) {
     FloodParams params;
     params.river.speed = speed;
     params.river.particleRadius = particleRadius;
-    params.coupledParticleMass = coupledParticleMass;
+    params.coupledDensity = coupledDensity;
     return params;
   };
   const auto crowd = [](const std::string& name, std::vector<Agent> agents, double tau) {

@@ -48,10 +48,12 @@ struct FloodParams {
   CrowdParams crowd;
   CouplingParams coupling;
   double frameTime = 0.1;  // seconds: the coupling's frame (eq. 5 sums the mass colliding in one)
-  // The mass eq. 5 counts for each colliding particle; <= 0: the SPH particle's own (rho0 (2r)^3,
-  // 125 kg at r = 0.25 m). The seed's sums are per frame of a sparse stream whose particles it does
-  // not specify; docs/crowd.md derives the mass its timings imply.
-  double coupledParticleMass = 0.0;
+  // The density of the water as eq. 5 counts it: each colliding particle weighs this times its
+  // volume (2r)^3; <= 0: the liquid's own rest density (1000 kg/m^3, 125 kg a particle at r = 0.25 m).
+  // The seed's sums are per frame of a sparse stream whose particles it does not specify;
+  // docs/crowd.md derives the mass its timings imply (about 80 kg/m^3 at 10 frames a second).
+  // A density, not a mass, so that the push does not change with the particle size.
+  double coupledDensity = 0.0;
 };
 
 // What became of one agent.
@@ -112,6 +114,6 @@ struct FloodExperiment {
   FloodParams params;
   std::vector<std::string> crowdLabels;  // as the seed's table names them ("S5: tau 0.2, v_F 1.5")
 };
-std::vector<FloodExperiment> seedFloodExperiments(double coupledParticleMass, double particleRadius);
+std::vector<FloodExperiment> seedFloodExperiments(double coupledDensity, double particleRadius);
 
 }  // namespace lacrima::crowd
