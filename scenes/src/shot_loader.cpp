@@ -12,6 +12,7 @@
 
 #include "frame_pattern.hpp"
 #include "json_source.hpp"
+#include "text_file.hpp"
 #include "lacrima/scenes/shot.hpp"
 #include "shot_checker.hpp"
 #include "surface_anchor.hpp"
@@ -1760,26 +1761,6 @@ class ShotReader {
   }
 };
 
-std::optional<std::string> readTextFile(const fs::path& path, std::string& error) {
-  std::error_code ec;
-  if (fs::is_directory(path, ec)) {
-    error = "cannot read the shot file: it is a directory";
-    return std::nullopt;
-  }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    error = fmt::format("cannot read the shot file: {}", std::strerror(errno));
-    return std::nullopt;
-  }
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) {
-    error = "cannot read the shot file: read error";
-    return std::nullopt;
-  }
-  return text.str();
-}
-
 }  // namespace
 
 Shot loadShot(const std::filesystem::path& path) {
@@ -1790,7 +1771,7 @@ Shot loadShot(const std::filesystem::path& path, const GltfAssetLoader& loadAsse
   Shot shot;
   shot.path = path;
   std::string readError;
-  const auto text = readTextFile(path, readError);
+  const auto text = readTextFile(path, "the shot file", readError);
   if (!text) throw ShotError({Diagnostic{path, "", 0, 0, readError}});
 
   JsonSource source(*text);

@@ -1,5 +1,6 @@
 // `lacrima flood`: the real binary runs one of the seed's experiments for a simulated second and
-// writes its trajectories, top-view plots and table; bad options write nothing.
+// writes its trajectories, top-view plots and table; a scenario file of one's own runs too; bad
+// options and bad scenario files write nothing.
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
@@ -43,6 +44,30 @@ TEST(FloodCli, OneExperimentWritesTrajectoriesPlotsAndTheTable) {
   EXPECT_EQ(plot->spec().width, 800);  // the 100 x 50 m field at 8 pixels a metre
   EXPECT_EQ(plot->spec().height, 400);
   EXPECT_NE(contents(dir / "table.md").find("| obstacle: tau 0.6, v_F 1.5 m/s | not reached"), std::string::npos);
+}
+
+TEST(FloodCli, AScenarioFileOfOnesOwnRunsAndABadOneIsReportedAtItsPath) {
+  const fs::path dir = test::testDirectory("flood_cli_own", /*fresh=*/true);
+  const std::string scenario = R"({
+  "version": 1,
+  "field": {"min": [0, 0], "max": [20, 10]},
+  "river": {"zMin": 3, "width": 4, "length": 20, "speed": 1},
+  "duration": 2,
+  "crowds": [{"name": "walkers", "endurance": [[0, 0.5]], "groups": [{"count": 3, "first": [8, 1], "goal": [10, 9]}]}]
+})";
+  std::ofstream(dir / "brook.json") << scenario;
+  const auto run = lacrimaFlood(test::shellQuote((dir / "brook.json").string()) + " --out " + test::shellQuote((dir / "out").string()));
+  ASSERT_EQ(run.exitStatus, 0) << run.output;
+  EXPECT_NE(run.output.find("walkers: not reached: 0 arrived, 0 lost, 3 still in the field"), std::string::npos) << run.output;
+  EXPECT_TRUE(fs::exists(dir / "out" / "brook_walkers.csv"));
+  std::string bad = scenario;
+  bad.replace(bad.find("\"speed\""), 7, "\"sped\"");
+  std::ofstream(dir / "bad.json") << bad;
+  const auto failed = lacrimaFlood(test::shellQuote((dir / "bad.json").string()) + " --out " + test::shellQuote((dir / "bad").string()));
+  EXPECT_EQ(failed.exitStatus, 2);
+  EXPECT_NE(failed.output.find("bad.json:4:52: /river/sped: unknown key 'sped'; did you mean 'speed'?"), std::string::npos)
+      << failed.output;
+  EXPECT_FALSE(fs::exists(dir / "bad"));
 }
 
 TEST(FloodCli, AnUnknownExperimentIsABadOptionAndWritesNothing) {

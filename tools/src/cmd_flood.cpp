@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <algorithm>
 #include <set>
 #include <sstream>
 
@@ -18,6 +19,8 @@
 #include "lacrima/crowd/flood.hpp"
 #include "lacrima/geometry/error.hpp"
 #include "lacrima/geometry/shapes.hpp"
+#include "lacrima/scenes/flood_scenario.hpp"
+#include "lacrima/scenes/shot.hpp"
 #include "lacrima/sph/sph_surface.hpp"
 #include "mesh_export.hpp"
 
@@ -25,7 +28,6 @@ namespace lacrima::cli {
 
 namespace {
 
-using crowd::FloodExperiment;
 using crowd::FloodSimulation;
 
 constexpr int kPixelsPerMetre = 8;
@@ -160,7 +162,7 @@ std::string outcomeText(const CrowdSummary& s) {
 // Runs one experiment to its end (every agent arrived or lost) or the duration; writes
 // <out>/<name>_<crowd>.csv (every 5th frame: time, agent, x, z, state, hip height) and
 // <out>/<name>_<crowd>.png.
-std::vector<CrowdSummary> runExperiment(const FloodExperiment& experiment, const FloodOptions& options) {
+std::vector<CrowdSummary> runExperiment(const FloodScenario& experiment, const FloodOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   FloodSimulation simulation(experiment.params);
   const size_t crowds = experiment.params.crowds.size();
@@ -173,7 +175,7 @@ std::vector<CrowdSummary> runExperiment(const FloodExperiment& experiment, const
   std::fprintf(stderr, "flood: %s, %zu particles, %zu crowd(s)\n", experiment.name.c_str(),
                simulation.liquid().positions().size(), crowds);
   int frame = 0;
-  while (!simulation.settled() && simulation.time() < options.duration - 1e-9) {
+  while (!simulation.settled() && simulation.time() < experiment.duration - 1e-9) {
     simulation.advanceFrame();
     ++frame;
     for (size_t c = 0; c < crowds; ++c) {
@@ -205,7 +207,7 @@ std::vector<CrowdSummary> runExperiment(const FloodExperiment& experiment, const
   std::vector<CrowdSummary> summaries;
   for (size_t c = 0; c < crowds; ++c) {
     CrowdSummary s;
-    s.label = experiment.crowdLabels[c];
+    s.label = experiment.labels[c];
     for (const crowd::AgentOutcome& o : simulation.outcomes(c)) {
       ++s.agents;
       if (o.arrivalTime >= 0.0) ++s.arrived, s.lastArrival = std::max(s.lastArrival, o.arrivalTime);
@@ -226,11 +228,23 @@ std::vector<CrowdSummary> runExperiment(const FloodExperiment& experiment, const
 
 }  // namespace
 
+// The scenario files to run: those given, or the seed's (scenes/floods), sorted by name.
+std::vector<std::filesystem::path> scenarioFiles(const FloodOptions& options) {
+  std::vector<std::filesystem::path> files(options.scenarios.begin(), options.scenarios.end());
+  if (files.empty()) {
+    for (const auto& entry : std::filesystem::directory_iterator(std::string(LACRIMA_SOURCE_DIR) + "/scenes/floods"))
+      if (entry.path().extension() == ".json") files.push_back(entry.path());
+    std::sort(files.begin(), files.end());
+  }
+  return files;
+}
+
 int runFlood(const FloodOptions& options) {
   try {
-    const std::vector<FloodExperiment> all = crowd::seedFloodExperiments(options.coupledDensity, options.particleRadius);
+    std::vector<FloodScenario> scenarios;
+    for (const std::filesystem::path& file : scenarioFiles(options)) scenarios.push_back(loadFloodScenario(file));
     std::set<std::string> known;
-    for (const FloodExperiment& e : all) known.insert(e.name);
+    for (const FloodScenario& e : scenarios) known.insert(e.name);
     for (const std::string& name : options.experiments)
       if (!known.count(name)) {
         std::string list;
@@ -238,9 +252,12 @@ int runFlood(const FloodOptions& options) {
         throw InputError(fmt::format("--experiments: unknown experiment '{}' (expected some of {})", name, list));
       }
     std::string table = "| run | lacrima |\n|---|---|\n";
-    for (const FloodExperiment& e : all) {
+    for (FloodScenario& e : scenarios) {
       if (!options.experiments.empty() && std::find(options.experiments.begin(), options.experiments.end(), e.name) == options.experiments.end())
         continue;
+      if (options.duration) e.duration = *options.duration;
+      if (options.coupledDensity) e.params.coupledDensity = *options.coupledDensity;
+      if (options.particleRadius) e.params.river.particleRadius = *options.particleRadius;
       for (const CrowdSummary& s : runExperiment(e, options)) {
         table += fmt::format("| {} | {} |\n", s.label, outcomeText(s));
         std::printf("%s: %s\n", s.label.c_str(), outcomeText(s).c_str());
@@ -250,6 +267,9 @@ int runFlood(const FloodOptions& options) {
     writeFileAtomically(std::filesystem::path(options.outputDirectory) / "table.md", "the table",
                         [&](std::ostream& out) { out << table; });
     return kExitOk;
+  } catch (const ShotError& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    return kExitBadInput;
   } catch (const InputError& e) {
     std::fprintf(stderr, "lacrima flood: %s\n", e.what());
     return kExitBadInput;

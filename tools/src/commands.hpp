@@ -39,11 +39,13 @@ struct ExportOptions {
 };
 
 struct FloodOptions {
-  std::vector<std::string> experiments;  // empty: all (crowd::seedFloodExperiments)
+  std::vector<std::string> scenarios;    // flood scenario files; empty: scenes/floods/*.json (the seed's)
+  std::vector<std::string> experiments;  // of those, the ones named (file stems); empty: all
   std::string outputDirectory = "flood";
-  double duration = 300.0;               // simulated seconds at most per experiment
-  double coupledDensity = 80.0;          // kg/m^3 of water as eq. 5 counts it (<= 0: the liquid's own)
-  double particleRadius = 0.25;          // metres
+  // Overrides of every scenario's values, when given.
+  std::optional<double> duration;        // simulated seconds at most
+  std::optional<double> coupledDensity;  // kg/m^3 of water as eq. 5 counts it (0: the liquid's own)
+  std::optional<double> particleRadius;  // metres
   std::vector<double> sceneTimes;        // simulated seconds at which to write the scene (glb + shot)
 };
 

@@ -174,40 +174,45 @@ void addExport(CLI::App& app, ExportOptions& o) {
 const char* kFloodExamples =
     "Examples:\n"
     "  lacrima flood --out flood\n"
-    "      every experiment (about 17 minutes on 2 cores at the default 0.25 m particles)\n"
+    "      the seed's experiments, scenes/floods/*.json (about 17 minutes on 2 cores)\n"
     "  lacrima flood --experiments table1-1.5 --duration 60 --out /tmp/flood\n"
     "      the four crowds of Table 1 at 1.5 m/s, for the first simulated minute\n"
+    "  lacrima flood my_river.json --scene-at 20 --out /tmp/flood\n"
+    "      a scenario file of your own, and its scene at 20 s to render\n"
     "\n"
-    "Schaffer et al. 2020's flood (docs/crowd.md): a river 27 m wide, 1 m deep and 100 m long of SPH\n"
-    "water streaming across a 100 x 50 m field, crowds of 50 BioCrowds agents (65 kg, 1.3 m/s)\n"
-    "crossing it, pushed by the water (the seed's eqs. 5-9) according to their endurance tau.\n"
-    "Experiments: table1-0.5, table1-1.5, table1-2.5 (Table 1's runs S1-S12 at one stream speed,\n"
-    "tau 0, 0.2, 0.8 and 1.0 crossing the same river), counter-stream (tau 0.6, v_F 1.5, a second\n"
-    "group walking against the stream) and obstacle (tau 0.6, v_F 1.5, a 7 x 7 x 1 m block in the\n"
-    "river). Each runs until every agent has arrived or been carried off the end, or --duration.\n"
-    "Writes, in --out: <experiment>_<crowd>.csv (every half second: time, agent, x, z, state,\n"
-    "hip height), <experiment>_<crowd>.png (a top view, the river flowing to the left, the\n"
+    "Schaffer et al. 2020's flood (docs/crowd.md): a river of SPH water (27 m wide, 1 m deep and\n"
+    "100 m long in the seed's) streaming across a field, crowds of BioCrowds agents (65 kg, 1.3 m/s)\n"
+    "crossing it, pushed by the water (the seed's eqs. 5-9) according to their endurance tau. A\n"
+    "scenario file (JSON, docs/crowd.md \"Scenario files\") gives the field, the river, the coupling\n"
+    "and the crowds; the seed's are table1-0.5, table1-1.5, table1-2.5 (Table 1's runs S1-S12 at one\n"
+    "stream speed, tau 0, 0.2, 0.8 and 1.0 crossing the same river), counter-stream (tau 0.6, v_F\n"
+    "1.5, a second group walking against the stream) and obstacle (tau 0.6, v_F 1.5, a 7 x 7 x 1 m\n"
+    "block in the river). Each runs until every agent has arrived or been carried off the end, or\n"
+    "its duration. Writes, in --out: <experiment>_<crowd>.csv (every half second: time, agent, x, z,\n"
+    "state, hip height), <experiment>_<crowd>.png (a top view, the river flowing to the left, the\n"
     "trajectories red) and table.md (each run's time for the last agent, or not reached, and how\n"
     "many arrived and were lost), and prints the table's rows as they finish. With --scene-at T,\n"
     "also each crowd's scene at T simulated seconds as <experiment>_<crowd>_tT.glb and a shot\n"
     "<experiment>_<crowd>_tT.json that renders it (`lacrima render` on the .json).\n"
-    "Exit status: 0 success, 2 bad options or an output that cannot be written.";
+    "Exit status: 0 success, 2 a bad scenario file or option, or an output that cannot be written.";
 
 void addFlood(CLI::App& app, FloodOptions& o) {
   auto* flood = app.add_subcommand("flood", "Run the flood seed's experiments: crowds crossing a river of SPH water");
   flood->footer(kFloodExamples);
-  flood->add_option("--experiments", o.experiments, "Which experiments (default: all): table1-0.5, table1-1.5, "
-                                                    "table1-2.5, counter-stream, obstacle")
+  flood->add_option("scenarios", o.scenarios, "Flood scenario files (JSON; default: the seed's, scenes/floods/*.json)");
+  flood->add_option("--experiments", o.experiments, "Of the scenarios, the ones named (file stems), e.g. "
+                                                    "table1-1.5,obstacle")
       ->delimiter(',');
   flood->add_option("--out,-o", o.outputDirectory, "Folder for the trajectories, plots and table (default: flood)");
-  flood->add_option("--duration", o.duration, "Simulated seconds at most per experiment (default 300)")
+  flood->add_option("--duration", o.duration, "Simulated seconds at most per experiment (default: the scenario's, 300)")
       ->check(CLI::Range(1.0, 3600.0));
   flood->add_option("--coupled-density", o.coupledDensity,
                     "kg/m^3 of water as the seed's eq. 5 counts it, each colliding particle weighing this "
-                    "times its volume (default 80, what the seed's timings imply; 0: water's own 1000)")
+                    "times its volume (default: the scenario's, 80 in the seed's; 0: water's own 1000)")
       ->check(CLI::Range(0.0, 1e4));
   flood->add_option("--particle-radius", o.particleRadius,
-                    "SPH particle radius in metres (default 0.25: 21,600 particles; 0.15: 89,910)")
+                    "SPH particle radius in metres (default: the scenario's, 0.25: 21,600 particles in the seed's "
+                    "river; 0.15: 89,910)")
       ->check(CLI::Range(0.1, 1.0));
   flood->add_option("--scene-at", o.sceneTimes,
                     "Simulated seconds at which to write each crowd's scene: <experiment>_<crowd>_t<T>.glb "

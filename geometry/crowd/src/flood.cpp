@@ -1,8 +1,6 @@
 // A river of SPH water and crowds crossing it; see flood.hpp.
 #include "lacrima/crowd/flood.hpp"
 
-#include <fmt/format.h>
-
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -177,58 +175,6 @@ bool FloodSimulation::settled() const {
     for (const Agent& a : c.agents())
       if (!a.arrived) return false;
   return true;
-}
-
-std::vector<Agent> seedCrossingAgents() {
-  std::vector<Agent> agents;
-  for (int n = 0; n < 50; ++n) agents.push_back({Vec2d(40.0 + 0.8 * (n % 25), n < 25 ? 3.0 : 4.2), Vec2d(50.0, 47.0), 1.3});
-  return agents;
-}
-
-std::vector<FloodExperiment> seedFloodExperiments(double coupledDensity, double particleRadius) {
-  const auto base = [&](double speed) {
-    FloodParams params;
-    params.river.speed = speed;
-    params.river.particleRadius = particleRadius;
-    params.coupledDensity = coupledDensity;
-    return params;
-  };
-  const auto crowd = [](const std::string& name, std::vector<Agent> agents, double tau) {
-    FloodCrowd c;
-    c.name = name;
-    c.agents = std::move(agents);
-    c.endurance = {{0.0, tau}};
-    return c;
-  };
-  std::vector<FloodExperiment> experiments;
-  const double speeds[] = {0.5, 1.5, 2.5};
-  const double taus[] = {0.0, 0.2, 0.8, 1.0};
-  for (int s = 0; s < 3; ++s) {
-    FloodExperiment e{fmt::format("table1-{:.1f}", speeds[s]), base(speeds[s]), {}};
-    for (int t = 0; t < 4; ++t) {
-      e.params.crowds.push_back(crowd(fmt::format("tau{:.1f}", taus[t]), seedCrossingAgents(), taus[t]));
-      const int id = t == 0 ? 1 + s : 4 + 3 * (t - 1) + s;  // S1-S3 the baseline, then S4-S12 by tau
-      e.crowdLabels.push_back(fmt::format("S{}: tau {:.1f}, v_F {:.1f} m/s", id, taus[t], speeds[s]));
-    }
-    experiments.push_back(std::move(e));
-  }
-  {
-    FloodExperiment e{"counter-stream", base(1.5), {"two groups: tau 0.6, v_F 1.5 m/s"}};
-    std::vector<Agent> agents = seedCrossingAgents();
-    for (int n = 0; n < 50; ++n) {
-      const double z = 14.0 + 2.2 * (n % 10);
-      agents.push_back({Vec2d(2.0 + 2.0 * (n / 10), z), Vec2d(98.0, z), 1.3});
-    }
-    e.params.crowds.push_back(crowd("tau0.6", std::move(agents), 0.6));
-    experiments.push_back(std::move(e));
-  }
-  {
-    FloodExperiment e{"obstacle", base(1.5), {"obstacle: tau 0.6, v_F 1.5 m/s"}};
-    e.params.river.obstacles.push_back(GroundRect{Vec2d(46.5, 21.5), Vec2d(53.5, 28.5)});
-    e.params.crowds.push_back(crowd("tau0.6", seedCrossingAgents(), 0.6));
-    experiments.push_back(std::move(e));
-  }
-  return experiments;
 }
 
 }  // namespace lacrima::crowd

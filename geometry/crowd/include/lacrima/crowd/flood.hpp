@@ -12,7 +12,8 @@
 // crowd walks, pushed by the particles colliding with its agents. An agent carried past the end of
 // the river (x < 0) is lost. The liquid does not depend on the agents (the coupling is one way),
 // so any number of crowds can cross the same river in one simulation: each is a separate run of
-// the seed's table.
+// the seed's table. The seed's experiments are scenario files (scenes/floods, read by
+// lacrima/scenes/flood_scenario.hpp).
 #include <string>
 #include <utility>
 #include <vector>
@@ -96,24 +97,5 @@ class FloodSimulation {
   double time_ = 0.0;
   size_t emitted_ = 0;
 };
-
-// The seed's crossing agents: 50 in two rows on the near bank (z = 3 and 4.2, x in [40, 60])
-// walking at 1.3 m/s to a goal on the far bank (50, 47).
-std::vector<Agent> seedCrossingAgents();
-
-// The seed's experiments (section 4), each one simulation of the river with its crowds:
-// * "table1-0.5", "table1-1.5", "table1-2.5": Table 1 at one stream speed, four crowds of the
-//   crossing agents with tau 0, 0.2, 0.8 and 1.0 (S1-S12);
-// * "counter-stream": v_F 1.5, tau 0.6, the crossing agents and 50 more walking against the stream
-//   (from the downstream end, x in [2, 11], z in the river, to the upstream end): one crowd of 100
-//   (the seed: 8 of the crossing 50 reach their goal);
-// * "obstacle": v_F 1.5, tau 0.6, the crossing agents and a 7 x 7 m block 1 m high in the middle
-//   of the river (the seed: 26 of 50).
-struct FloodExperiment {
-  std::string name;
-  FloodParams params;
-  std::vector<std::string> crowdLabels;  // as the seed's table names them ("S5: tau 0.2, v_F 1.5")
-};
-std::vector<FloodExperiment> seedFloodExperiments(double coupledDensity, double particleRadius);
 
 }  // namespace lacrima::crowd
