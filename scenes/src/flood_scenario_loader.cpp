@@ -24,8 +24,12 @@ std::optional<Vec2d> groundPoint(ObjectReader& o, const std::string& key, bool r
     if (required) o.missing(key, "a ground point [x, z] in metres");
     return std::nullopt;
   }
-  const auto p = readVec2(o.checker(), *v, o.at(key), Range::any(), "[x, z]");
-  return p ? std::optional<Vec2d>(p->cast<double>()) : std::nullopt;
+  // Doubles, not readVec2's floats: a 0.8 m spacing read as a float puts the 25th agent 0.3 um off.
+  if (!v->is_array() || v->size() != 2 || !(*v)[0].is_number() || !(*v)[1].is_number()) {
+    o.error(key, fmt::format("expected a ground point [x, z] in metres, found {}", describeValue(*v)));
+    return std::nullopt;
+  }
+  return Vec2d((*v)[0].get<double>(), (*v)[1].get<double>());
 }
 
 std::optional<crowd::GroundRect> groundRect(Checker& c, const Json& v, const std::string& pointer) {

@@ -65,7 +65,7 @@ TEST(FloodCli, AScenarioFileOfOnesOwnRunsAndABadOneIsReportedAtItsPath) {
   std::ofstream(dir / "bad.json") << bad;
   const auto failed = lacrimaFlood(test::shellQuote((dir / "bad.json").string()) + " --out " + test::shellQuote((dir / "bad").string()));
   EXPECT_EQ(failed.exitStatus, 2);
-  EXPECT_NE(failed.output.find("bad.json:4:52: /river/sped: unknown key 'sped'; did you mean 'speed'?"), std::string::npos)
+  EXPECT_NE(failed.output.find("bad.json:4:50: /river/sped: unknown key 'sped'; did you mean 'speed'?"), std::string::npos)
       << failed.output;
   EXPECT_FALSE(fs::exists(dir / "bad"));
 }
