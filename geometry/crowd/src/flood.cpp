@@ -135,9 +135,9 @@ void FloodSimulation::advanceCrowd(size_t c) {
   BioCrowds& crowd = crowds_[c];
   std::vector<Vec2d> positions;
   for (const Agent& a : crowd.agents()) positions.push_back(a.position);
-  const double particleMass = params_.coupledDensity > 0.0
-                                  ? liquid_.particleMass() * params_.coupledDensity / liquid_.params().restDensity
-                                  : liquid_.particleMass();
+  const double spacing = 2.0 * params_.river.particleRadius;
+  const double particleMass =
+      params_.coupledDensity > 0.0 ? params_.coupledDensity * spacing * spacing * spacing : liquid_.particleMass();
   const std::vector<FluidContact> contacts =
       fluidContacts(positions, liquid_.positions(), liquid_.velocities(), particleMass, params_.coupling);
   const double tau = endurance(c, time_);
