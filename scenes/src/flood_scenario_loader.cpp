@@ -200,17 +200,9 @@ class FloodReader {
 FloodScenario loadFloodScenario(const std::filesystem::path& path) {
   FloodScenario scenario;
   scenario.name = path.stem().string();
-  std::string readError;
-  const auto text = readTextFile(path, "the flood scenario", readError);
-  if (!text) throw ShotError({Diagnostic{path, "", 0, 0, readError}});
-  JsonSource source(*text);
-  const auto json = source.parse();
-  if (!json) {
-    const TextPosition p = source.positionOf(source.syntaxErrorOffset());
-    throw ShotError({Diagnostic{path, "", p.line, p.column, "JSON syntax error: " + source.syntaxError() + "\n" + source.excerpt(p)}});
-  }
-  Checker checker(path, source);
-  FloodReader(checker, scenario).read(*json);
+  const ParsedJsonFile parsed = readJsonFile(path, "the flood scenario");
+  Checker checker(path, parsed.source);
+  FloodReader(checker, scenario).read(parsed.json);
   if (checker.errorCount() > 0) throw ShotError(checker.diagnostics());
   return scenario;
 }

@@ -1770,17 +1770,8 @@ Shot loadShot(const std::filesystem::path& path) {
 Shot loadShot(const std::filesystem::path& path, const GltfAssetLoader& loadAsset) {
   Shot shot;
   shot.path = path;
-  std::string readError;
-  const auto text = readTextFile(path, "the shot file", readError);
-  if (!text) throw ShotError({Diagnostic{path, "", 0, 0, readError}});
-
-  JsonSource source(*text);
-  const auto json = source.parse();
-  if (!json) {
-    const TextPosition p = source.positionOf(source.syntaxErrorOffset());
-    throw ShotError({Diagnostic{path, "", p.line, p.column,
-                                "JSON syntax error: " + source.syntaxError() + "\n" + source.excerpt(p)}});
-  }
+  const ParsedJsonFile parsed = readJsonFile(path, "the shot file");
+  const JsonSource& source = parsed.source;
 
   Checker checker(path, source);
   for (const DuplicateKey& d : source.duplicateKeys()) {
@@ -1789,7 +1780,7 @@ Shot loadShot(const std::filesystem::path& path, const GltfAssetLoader& loadAsse
     checker.error(d.pointer, Anchor::Key,
                   fmt::format("duplicate key '{}' (first given at line {}, column {})", key, first.line, first.column));
   }
-  ShotReader(checker, shot, loadAsset).read(*json);
+  ShotReader(checker, shot, loadAsset).read(parsed.json);
   if (checker.errorCount() > 0) throw ShotError(checker.diagnostics());
   // On the assets as loaded: the flesh volumes' boundaries are the skin's own tessellation.
   std::vector<FleshProblem> fleshProblems = resolveFleshVolumes(shot);

@@ -8,6 +8,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "lacrima/scenes/shot.hpp"
+
 namespace lacrima::shotfile {
 
 std::optional<std::string> readTextFile(const std::filesystem::path& path, const char* what, std::string& error) {
@@ -28,6 +30,20 @@ std::optional<std::string> readTextFile(const std::filesystem::path& path, const
     return std::nullopt;
   }
   return text.str();
+}
+
+ParsedJsonFile readJsonFile(const std::filesystem::path& path, const char* what) {
+  std::string readError;
+  auto text = readTextFile(path, what, readError);
+  if (!text) throw ShotError({Diagnostic{path, "", 0, 0, readError}});
+  JsonSource source(std::move(*text));
+  auto json = source.parse();
+  if (!json) {
+    const TextPosition p = source.positionOf(source.syntaxErrorOffset());
+    throw ShotError({Diagnostic{path, "", p.line, p.column,
+                                "JSON syntax error: " + source.syntaxError() + "\n" + source.excerpt(p)}});
+  }
+  return {std::move(source), std::move(*json)};
 }
 
 }  // namespace lacrima::shotfile
