@@ -6,6 +6,8 @@
 #include <cmath>
 
 #include "json_source.hpp"
+#include "lacrima/geometry/error.hpp"
+#include "lacrima/geometry/gltf_asset.hpp"
 #include "lacrima/scenes/shot.hpp"
 #include "shot_checker.hpp"
 #include "text_file.hpp"
@@ -46,7 +48,8 @@ std::optional<crowd::GroundRect> groundRect(Checker& c, const Json& v, const std
 
 class FloodReader {
  public:
-  FloodReader(Checker& c, FloodScenario& scenario) : c_(c), s_(scenario) {}
+  FloodReader(Checker& c, FloodScenario& scenario, std::filesystem::path directory)
+      : c_(c), s_(scenario), directory_(std::move(directory)) {}
 
   void read(const Json& root) {
     ObjectReader o(c_, root, "", {"version", "field", "river", "crowd", "crowds", "frameTime", "duration", "coupledDensity"});
@@ -73,7 +76,7 @@ class FloodReader {
  private:
   void readRiver(const Json& v, const std::string& pointer) {
     ObjectReader o(c_, v, pointer,
-                   {"zMin", "width", "depth", "length", "speed", "particleRadius", "bankHeight", "obstacles", "obstacleHeight"});
+                   {"zMin", "width", "depth", "length", "speed", "particleRadius", "bankHeight", "obstacles", "obstacleHeight", "start"});
     if (!o.ok()) return;
     crowd::RiverParams& r = s_.params.river;
     if (auto x = o.number("zMin", Range::any())) r.zMin = *x;
@@ -84,6 +87,11 @@ class FloodReader {
     if (auto x = o.number("particleRadius", Range::closed(0.05, 2))) r.particleRadius = *x;
     if (auto x = o.number("bankHeight", Range::above(0))) r.bankHeight = *x;
     if (auto x = o.number("obstacleHeight", Range::above(0))) r.obstacleHeight = *x;
+    if (auto start = o.string("start")) {
+      if (*start == "full" || *start == "empty") r.startsFull = *start == "full";
+      else o.error("start", fmt::format("unknown start '{}' (expected 'full': the river flowing at the start, or 'empty': "
+                                        "a dry bed the water enters at the upstream end)", *start));
+    }
     if (const Json* obstacles = o.find("obstacles")) {
       if (!obstacles->is_array()) {
         o.error("obstacles", fmt::format("expected an array of {{\"min\": [x, z], \"max\": [x, z]}}, found {}", describeValue(*obstacles)));
@@ -112,7 +120,7 @@ class FloodReader {
   }
 
   void readCrowd(const Json& v, const std::string& pointer) {
-    ObjectReader o(c_, v, pointer, {"name", "label", "mass", "endurance", "groups"});
+    ObjectReader o(c_, v, pointer, {"name", "label", "mass", "endurance", "groups", "figure"});
     if (!o.ok()) return;
     const size_t before = c_.errorCount();
     crowd::FloodCrowd crowd;
@@ -120,6 +128,8 @@ class FloodReader {
     std::string label = crowd.name;
     if (auto l = o.string("label")) label = *l;
     if (auto x = o.number("mass", Range::closed(1, 500))) crowd.agentMass = *x;
+    TriangleMesh figure;
+    if (auto file = o.string("figure")) figure = readFigure(o, *file);
     if (const Json* e = o.find("endurance")) readEndurance(*e, o.at("endurance"), crowd);
     if (const Json* g = o.find("groups")) {
       if (!g->is_array() || g->empty())
@@ -132,6 +142,31 @@ class FloodReader {
     if (c_.errorCount() != before) return;
     s_.params.crowds.push_back(std::move(crowd));
     s_.labels.push_back(label);
+    s_.figures.push_back(std::move(figure));
+  }
+
+  // A glTF figure (relative to the scenario file): every primitive of the file in one mesh.
+  TriangleMesh readFigure(ObjectReader& o, const std::string& file) {
+    const std::filesystem::path path = directory_ / file;
+    TriangleMesh figure;
+    try {
+      const GltfAsset asset = loadGltfAsset(path);
+      bool allNormals = true;
+      for (const GltfPrimitive& primitive : asset.primitives) {
+        const TriangleMesh& part = primitive.mesh;
+        const uint32_t base = uint32_t(figure.positions.size());
+        figure.positions.insert(figure.positions.end(), part.positions.begin(), part.positions.end());
+        figure.normals.insert(figure.normals.end(), part.normals.begin(), part.normals.end());
+        allNormals = allNormals && part.normals.size() == part.positions.size();
+        for (uint32_t i : part.indices) figure.indices.push_back(base + i);
+      }
+      if (figure.indices.empty()) o.error("figure", fmt::format("the figure '{}' has no triangles", path.string()));
+      if (!allNormals) computeSmoothNormals(figure);
+    } catch (const InputError& e) {
+      o.error("figure", fmt::format("cannot load the figure: {}", e.what()));
+    }
+    figure.name = "figure";
+    return figure;
   }
 
   // [[seconds, tau], ...], seconds increasing, tau in [0, 1].
@@ -193,6 +228,7 @@ class FloodReader {
 
   Checker& c_;
   FloodScenario& s_;
+  std::filesystem::path directory_;  // the scenario file's: figures are found relative to it
 };
 
 }  // namespace
@@ -202,7 +238,7 @@ FloodScenario loadFloodScenario(const std::filesystem::path& path) {
   scenario.name = path.stem().string();
   const ParsedJsonFile parsed = readJsonFile(path, "the flood scenario");
   Checker checker(path, parsed.source);
-  FloodReader(checker, scenario).read(parsed.json);
+  FloodReader(checker, scenario, path.parent_path()).read(parsed.json);
   if (checker.errorCount() > 0) throw ShotError(checker.diagnostics());
   return scenario;
 }

@@ -5,9 +5,11 @@
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
+#include <cmath>
 #include <cstdio>
 
 #include "lacrima/crowd/flood.hpp"
+#include "lacrima/crowd/water_speed_field.hpp"
 
 namespace lacrima::crowd {
 namespace {
@@ -51,6 +53,54 @@ TEST(Flood, TheRiverKeepsFlowingFedUpstreamAndDrainedAtItsEnd) {
   EXPECT_LT(double(x.size()), 1.1 * double(start));
   EXPECT_NEAR(meanSpeed, 1.5, 0.5) << "it flows at about the inflow's speed";
   EXPECT_LT(highest, 1.5) << "no water thrown out of the channel";
+}
+
+// The seed's runs start with a dry bed the water enters (its figures 7 and 8): the front leaves the
+// emitter and runs downstream no faster than the inflow plus Ritter's dam-break front (2 sqrt(g h),
+// Ritter 1892) and no slower than half the inflow.
+TEST(Flood, ADryRiverFillsFromItsUpstreamEnd) {
+  FloodParams params = smallRiver({});
+  params.river.startsFull = false;
+  FloodSimulation flood(params);
+  EXPECT_EQ(flood.liquid().positions().size(), 0u) << "dry at the start";
+  const double ritter = 2.0 * std::sqrt(9.81 * params.river.depth);
+  for (int frame = 1; frame <= 40; ++frame) {
+    flood.advanceFrame();
+    if (frame % 10 != 0) continue;
+    double front = params.river.length;
+    for (const Vec3d& p : flood.liquid().positions()) front = std::min(front, p.x());
+    const double run = params.river.length - front, t = flood.time();
+    std::printf("[ flood ] dry start: at %.1f s the front is %.2f m from the upstream end, %zu particles\n", t, run,
+                flood.liquid().positions().size());
+    if (front <= 0.0) break;  // it reached the end of the river
+    EXPECT_GT(run, 0.5 * params.river.speed * t);
+    EXPECT_LT(run, (params.river.speed + ritter) * t + 1.0);
+  }
+  EXPECT_GT(flood.particlesEmitted(), 0u);
+}
+
+// A block in the stream shelters the water behind it (the seed's section 4.3): a river 20 m long
+// and 8 m wide with a 2 x 2 x 1 m block in its middle; averaged over 4-10 s, the water in the
+// block's lee runs slower than the water beside the lee.
+TEST(Flood, ABlockInTheStreamSheltersTheWaterBehindIt) {
+  FloodParams params;
+  params.field = GroundRect{Vec2d(0, 0), Vec2d(20, 12)};
+  params.river.zMin = 2.0;
+  params.river.width = 8.0;
+  params.river.length = 20.0;
+  params.river.speed = 1.5;
+  const GroundRect block{Vec2d(11, 5), Vec2d(13, 7)};
+  params.river.obstacles = {block};
+  FloodSimulation flood(params);
+  WaterSpeedField field(params.field, 0.5);
+  for (int frame = 1; frame <= 100; ++frame) {
+    flood.advanceFrame();
+    if (frame > 40) field.add(flood.liquid().positions(), flood.liquid().velocities());
+  }
+  const double lee = field.meanSpeedIn(leeOf(block)), beside = field.meanSpeedIn(besideLeeOf(block, 2.0, 10.0));
+  std::printf("[ flood ] behind a 2 m block: %.2f m/s in its lee, %.2f m/s beside it\n", lee, beside);
+  ASSERT_GT(lee, 0.0) << "water in the lee";
+  EXPECT_LT(lee, 0.7 * beside);
 }
 
 TEST(Flood, TheStreamCarriesAVulnerableAgentOverTheEndWhereAStrongOneCrosses) {

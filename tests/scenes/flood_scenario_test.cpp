@@ -104,6 +104,29 @@ TEST(FloodScenario, BadInputIsReportedAtItsPath) {
             V{"/river/particleRadius: the river would hold 2.4e+05 particles at particleRadius 0.05 m, more than the "
               "200,000 allowed (about 100 s of computing a simulated second)"});
   EXPECT_EQ(problemsOf("flood_syntax.json", "{\"version\": 1,").size(), 1u);
+  EXPECT_EQ(problemsOf("flood_start.json", replaced(smallScenario(), R"("speed": 1)", R"("speed": 1, "start": "dry")")),
+            V{"/river/start: unknown start 'dry' (expected 'full': the river flowing at the start, or 'empty': a dry bed "
+              "the water enters at the upstream end)"});
+  const auto missing = problemsOf("flood_figure.json", smallScenario(R"(, "figure": "no_such_figure.glb")"));
+  ASSERT_EQ(missing.size(), 1u);
+  EXPECT_EQ(missing[0].rfind("/crowds/0/figure: cannot load the figure: ", 0), 0u) << missing[0];
+  EXPECT_NE(missing[0].find("no_such_figure.glb"), std::string::npos) << "names the file: " << missing[0];
+}
+
+TEST(FloodScenario, TheRiverStartsFullOrDry) {
+  EXPECT_TRUE(loadFloodScenario(writeShot("flood_full.json", smallScenario())).params.river.startsFull) << "the default";
+  const std::string dry = replaced(smallScenario(), R"("speed": 1)", R"("speed": 1, "start": "empty")");
+  EXPECT_FALSE(loadFloodScenario(writeShot("flood_dry.json", dry)).params.river.startsFull);
+}
+
+TEST(FloodScenario, ACrowdNamesAGltfFigureRelativeToTheFile) {
+  EXPECT_EQ(loadFloodScenario(writeShot("flood_built_in.json", smallScenario())).figures.at(0).triangleCount(), 0u)
+      << "no triangles: the built-in articulated figure";
+  const std::string figure = std::string(LACRIMA_SOURCE_DIR) + "/tests/data/figures/box_figure.gltf";
+  const FloodScenario s = loadFloodScenario(writeShot("flood_box.json", smallScenario(R"(, "figure": ")" + figure + R"(")")));
+  ASSERT_EQ(s.figures.size(), 1u);
+  EXPECT_EQ(s.figures[0].triangleCount(), 12u) << "the box figure's twelve triangles";
+  EXPECT_EQ(s.figures[0].normals.size(), s.figures[0].positions.size());
 }
 
 }  // namespace

@@ -16,12 +16,13 @@
 
 #include "atomic_write.hpp"
 #include "commands.hpp"
+#include "lacrima/crowd/figure.hpp"
 #include "lacrima/crowd/flood.hpp"
 #include "lacrima/geometry/error.hpp"
-#include "lacrima/geometry/shapes.hpp"
 #include "lacrima/scenes/flood_scenario.hpp"
 #include "lacrima/scenes/shot.hpp"
 #include "lacrima/sph/sph_surface.hpp"
+#include "flood_water_map.hpp"
 #include "mesh_export.hpp"
 
 namespace lacrima::cli {
@@ -89,10 +90,12 @@ TriangleMesh quad(const std::string& name, const std::array<Vec3, 4>& corners) {
 }
 
 // The river and the crowd at this moment as meshes for a renderer: the surfaced water in its bed,
-// the banks a river's depth above the bed, each agent as an ellipsoid body 1.8 m tall standing on
-// the bank or the bed (lying at its hip height, along the stream, when carried as a ragdoll; none
-// once arrived or lost). Written as <stem>.glb with <stem>.json, a shot that renders it.
-void writeFloodScene(const FloodSimulation& simulation, size_t c, const std::filesystem::path& stem) {
+// the banks a river's depth above the bed, each agent in its figure's pose (crowd/figure.hpp: the
+// built-in articulated figure walking or carried as a ragdoll, or the crowd's glTF figure placed
+// by the pose; none once arrived or lost). Written as <stem>.glb with <stem>.json, a shot that
+// renders it.
+void writeFloodScene(const FloodSimulation& simulation, size_t c, const crowd::FigureAnimator& figures,
+                     const TriangleMesh& figureMesh, const std::filesystem::path& stem) {
   const crowd::RiverParams& river = simulation.params().river;
   const crowd::GroundRect& field = simulation.params().field;
   ExportScene scene;
@@ -104,19 +107,20 @@ void writeFloodScene(const FloodSimulation& simulation, size_t c, const std::fil
   surfacing.smoothingIterations = 16;
   TriangleMesh water = sph::surfaceOfParticles(simulation.liquid().positions(), river.particleRadius, surfacing);
   water.name = "river";
-  scene.meshes.push_back({std::move(water), 0});
+  if (water.triangleCount() > 0) scene.meshes.push_back({std::move(water), 0});
   const float x0 = float(field.min.x()), x1 = float(field.max.x()), z0 = float(field.min.y()), z1 = float(field.max.y());
   const float nearBank = float(river.zMin), farBank = float(river.zMin + river.width), top = float(river.depth);
-  const auto inRiver = [&](const crowd::Vec2d& p) { return p.y() > nearBank && p.y() < farBank; };
   const auto& agents = simulation.crowd(c).agents();
   for (size_t a = 0; a < agents.size(); ++a) {
     if (agents[a].arrived) continue;  // arrived or lost: out of the picture
-    const float floor = inRiver(agents[a].position) ? 0.0f : top;
-    const Vec3 ground(float(agents[a].position.x()), floor, float(agents[a].position.y()));
-    const bool ragdoll = simulation.ragdolls(c)[a];
-    const Vec3 center = ragdoll ? Vec3(ground.x(), float(simulation.hipHeights(c)[a]), ground.z()) : Vec3(ground + Vec3(0, 0.9f, 0));
-    const Mat3 axes = ragdoll ? Mat3(Vec3(0.9f, 0.22f, 0.25f).asDiagonal()) : Mat3(Vec3(0.25f, 0.9f, 0.18f).asDiagonal());
-    TriangleMesh body = makeEllipsoid(center, axes, 12, 24);
+    const crowd::FigurePose& pose = figures.poses()[a];
+    TriangleMesh body;
+    if (figureMesh.triangleCount() == 0) {
+      body = crowd::articulatedFigure(pose);
+    } else {
+      body = figureMesh;
+      transformMesh(body, Affine3(figureRootTransform(pose).cast<float>()));
+    }
     body.name = fmt::format("agent {}", a);
     scene.meshes.push_back({std::move(body), 1});
   }
@@ -148,6 +152,20 @@ void writeFloodScene(const FloodSimulation& simulation, size_t c, const std::fil
   writeFileAtomically(stem.string() + ".json", "the scene's shot", [&](std::ostream& out) { out << shot; });
 }
 
+// What the figures of crowd c need of the frame just simulated.
+std::vector<crowd::FigureAnimator::AgentFrame> figureFrame(const FloodSimulation& simulation, size_t c) {
+  const crowd::RiverParams& river = simulation.params().river;
+  std::vector<crowd::FigureAnimator::AgentFrame> frame;
+  const auto& agents = simulation.crowd(c).agents();
+  for (size_t a = 0; a < agents.size(); ++a) {
+    const crowd::Vec2d& p = agents[a].position;
+    const bool inRiver = p.y() > river.zMin && p.y() < river.zMin + river.width;
+    frame.push_back({p, bool(simulation.ragdolls(c)[a]), simulation.hipHeights(c)[a], simulation.waterSpeeds(c)[a],
+                     inRiver ? 0.0 : river.depth});
+  }
+  return frame;
+}
+
 struct CrowdSummary {
   std::string label;
   int agents = 0, arrived = 0, lost = 0;
@@ -161,16 +179,24 @@ std::string outcomeText(const CrowdSummary& s) {
 
 // Runs one experiment to its end (every agent arrived or lost) or the duration; writes
 // <out>/<name>_<crowd>.csv (every 5th frame: time, agent, x, z, state, hip height) and
-// <out>/<name>_<crowd>.png.
-std::vector<CrowdSummary> runExperiment(const FloodScenario& experiment, const FloodOptions& options) {
+// <out>/<name>_<crowd>.png, and the water's mean speed map <out>/<name>_water.png.
+struct ExperimentResult {
+  std::vector<CrowdSummary> crowds;
+  std::string shelter;  // shelterSummary's, "" without obstacles
+};
+
+ExperimentResult runExperiment(const FloodScenario& experiment, const FloodOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   FloodSimulation simulation(experiment.params);
   const size_t crowds = experiment.params.crowds.size();
   std::vector<TopView> plots;
   std::vector<std::ostringstream> csv(crowds);
+  std::vector<crowd::FigureAnimator> figures;
+  crowd::WaterSpeedField water(experiment.params.field, 0.5);
   for (size_t c = 0; c < crowds; ++c) {
     plots.emplace_back(experiment.params);
-    csv[c] << "time,agent,x,z,state,hip_height\n";
+    figures.emplace_back(experiment.params.crowds[c].agents, experiment.params.crowd.seed + c);
+    csv[c] << "time,agent,x,z,state,hip_height,water_speed\n";
   }
   std::fprintf(stderr, "flood: %s, %zu particles, %zu crowd(s)\n", experiment.name.c_str(),
                simulation.liquid().positions().size(), crowds);
@@ -178,6 +204,8 @@ std::vector<CrowdSummary> runExperiment(const FloodScenario& experiment, const F
   while (!simulation.settled() && simulation.time() < experiment.duration - 1e-9) {
     simulation.advanceFrame();
     ++frame;
+    for (size_t c = 0; c < crowds; ++c) figures[c].advance(figureFrame(simulation, c), experiment.params.frameTime);
+    water.add(simulation.liquid().positions(), simulation.liquid().velocities());
     for (size_t c = 0; c < crowds; ++c) {
       const auto& agents = simulation.crowd(c).agents();
       for (size_t a = 0; a < agents.size(); ++a) {
@@ -187,14 +215,14 @@ std::vector<CrowdSummary> runExperiment(const FloodScenario& experiment, const F
         if (frame % 5 != 0) continue;
         const char* state = o.lostTime >= 0.0 ? "lost" : o.arrivalTime >= 0.0 ? "arrived"
                             : simulation.ragdolls(c)[a]  ? "ragdoll" : "walking";
-        csv[c] << fmt::format("{:.2f},{},{:.3f},{:.3f},{},{:.3f}\n", simulation.time(), a, agents[a].position.x(),
-                              agents[a].position.y(), state, simulation.hipHeights(c)[a]);
+        csv[c] << fmt::format("{:.2f},{},{:.3f},{:.3f},{},{:.3f},{:.3f}\n", simulation.time(), a, agents[a].position.x(),
+                              agents[a].position.y(), state, simulation.hipHeights(c)[a], simulation.waterSpeeds(c)[a]);
       }
     }
     for (double at : options.sceneTimes)
       if (std::abs(simulation.time() - at) < 0.5 * experiment.params.frameTime)
         for (size_t c = 0; c < crowds; ++c)
-          writeFloodScene(simulation, c,
+          writeFloodScene(simulation, c, figures[c], experiment.figures[c],
                           std::filesystem::path(options.outputDirectory) /
                               fmt::format("{}_{}_t{:.0f}", experiment.name, experiment.params.crowds[c].name, at));
     if (frame % 100 == 0) {
@@ -204,7 +232,10 @@ std::vector<CrowdSummary> runExperiment(const FloodScenario& experiment, const F
                    seconds / simulation.time());
     }
   }
-  std::vector<CrowdSummary> summaries;
+  writeWaterSpeedMap(water, experiment.params, std::filesystem::path(options.outputDirectory) / (experiment.name + "_water.png"));
+  ExperimentResult result;
+  result.shelter = shelterSummary(water, experiment.params);
+  std::vector<CrowdSummary>& summaries = result.crowds;
   for (size_t c = 0; c < crowds; ++c) {
     CrowdSummary s;
     s.label = experiment.labels[c];
@@ -223,7 +254,7 @@ std::vector<CrowdSummary> runExperiment(const FloodScenario& experiment, const F
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::fprintf(stderr, "flood: %s done in %.0f s (%.0f simulated s, %.2f s a simulated second)\n", experiment.name.c_str(),
                seconds, simulation.time(), seconds / std::max(simulation.time(), 1e-9));
-  return summaries;
+  return result;
 }
 
 }  // namespace
@@ -251,21 +282,26 @@ int runFlood(const FloodOptions& options) {
         for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
         throw InputError(fmt::format("--experiments: unknown experiment '{}' (expected some of {})", name, list));
       }
-    std::string table = "| run | lacrima |\n|---|---|\n";
+    std::string table = "| run | lacrima |\n|---|---|\n", shelter;
     for (FloodScenario& e : scenarios) {
       if (!options.experiments.empty() && std::find(options.experiments.begin(), options.experiments.end(), e.name) == options.experiments.end())
         continue;
       if (options.duration) e.duration = *options.duration;
       if (options.coupledDensity) e.params.coupledDensity = *options.coupledDensity;
       if (options.particleRadius) e.params.river.particleRadius = *options.particleRadius;
-      for (const CrowdSummary& s : runExperiment(e, options)) {
+      const ExperimentResult result = runExperiment(e, options);
+      for (const CrowdSummary& s : result.crowds) {
         table += fmt::format("| {} | {} |\n", s.label, outcomeText(s));
         std::printf("%s: %s\n", s.label.c_str(), outcomeText(s).c_str());
-        std::fflush(stdout);
       }
+      if (!result.shelter.empty()) {
+        shelter += fmt::format("- {}: {}\n", e.name, result.shelter);
+        std::printf("%s: %s\n", e.name.c_str(), result.shelter.c_str());
+      }
+      std::fflush(stdout);
     }
     writeFileAtomically(std::filesystem::path(options.outputDirectory) / "table.md", "the table",
-                        [&](std::ostream& out) { out << table; });
+                        [&](std::ostream& out) { out << table << (shelter.empty() ? "" : "\nMean water speeds over the run:\n" + shelter); });
     return kExitOk;
   } catch (const ShotError& e) {
     std::fprintf(stderr, "%s\n", e.what());

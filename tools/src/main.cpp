@@ -189,11 +189,16 @@ const char* kFloodExamples =
     "1.5, a second group walking against the stream) and obstacle (tau 0.6, v_F 1.5, a 7 x 7 x 1 m\n"
     "block in the river). Each runs until every agent has arrived or been carried off the end, or\n"
     "its duration. Writes, in --out: <experiment>_<crowd>.csv (every half second: time, agent, x, z,\n"
-    "state, hip height), <experiment>_<crowd>.png (a top view, the river flowing to the left, the\n"
-    "trajectories red) and table.md (each run's time for the last agent, or not reached, and how\n"
-    "many arrived and were lost), and prints the table's rows as they finish. With --scene-at T,\n"
+    "state, hip height, the water's speed at it), <experiment>_<crowd>.png (a top view, the river\n"
+    "flowing to the left, the "
+    "trajectories red), <experiment>_water.png (the water's mean speed over the run: dark blue\n"
+    "still, cyan the stream's speed, white twice it) and table.md (each run's time for the last\n"
+    "agent, or not reached, how many arrived and were lost, and the water's speed behind each\n"
+    "obstacle against beside it), and prints the table's rows as they finish. With --scene-at T,\n"
     "also each crowd's scene at T simulated seconds as <experiment>_<crowd>_tT.glb and a shot\n"
-    "<experiment>_<crowd>_tT.json that renders it (`lacrima render` on the .json).\n"
+    "<experiment>_<crowd>_tT.json that renders it (`lacrima render` on the .json): the surfaced\n"
+    "river, the banks and each agent as an articulated figure walking or, carried, tumbling as a\n"
+    "ragdoll (or as the crowd's glTF \"figure\").\n"
     "Exit status: 0 success, 2 a bad scenario file or option, or an output that cannot be written.";
 
 void addFlood(CLI::App& app, FloodOptions& o) {

@@ -45,10 +45,11 @@ sph::FluidParams riverFluid(const RiverParams& river, double frameTime) {
   return fluid;
 }
 
-// The river full and flowing: the channel filled to its depth on the particle lattice, outside
-// the obstacles, every particle at -v_F along x.
-std::vector<Vec3d> fullRiver(const RiverParams& river) {
+// The river at the start: full, the channel filled to its depth on the particle lattice outside
+// the obstacles (every particle will move at -v_F along x), or dry.
+std::vector<Vec3d> startingRiver(const RiverParams& river) {
   std::vector<Vec3d> particles;
+  if (!river.startsFull) return particles;
   const Vec3d lo(0.0, 0.0, river.zMin), hi(river.length, river.depth, river.zMin + river.width);
   for (const Vec3d& p : sph::latticeBlock(lo, hi, 2.0 * river.particleRadius))
     if (!insideAnyBlock(river.obstacles, river.obstacleHeight + river.particleRadius, p)) particles.push_back(p);
@@ -68,7 +69,7 @@ sph::BoundaryParticles riverBoundary(const RiverParams& river) {
 
 FloodSimulation::FloodSimulation(FloodParams params)
     : params_(std::move(params)),
-      liquid_(riverFluid(params_.river, params_.frameTime), fullRiver(params_.river), riverBoundary(params_.river)) {
+      liquid_(riverFluid(params_.river, params_.frameTime), startingRiver(params_.river), riverBoundary(params_.river)) {
   if (!(params_.frameTime > 0.0)) throw std::invalid_argument("FloodSimulation: the frame time must be positive");
   const std::vector<Vec3d> start = liquid_.positions();
   liquid_.setState(start, std::vector<Vec3d>(start.size(), Vec3d(-params_.river.speed, 0.0, 0.0)), 0.0);
@@ -77,6 +78,7 @@ FloodSimulation::FloodSimulation(FloodParams params)
     outcomes_.emplace_back(c.agents.size());
     ragdolls_.emplace_back(c.agents.size(), false);
     hipHeights_.emplace_back(c.agents.size(), 0.0);
+    waterSpeeds_.emplace_back(c.agents.size(), 0.0);
   }
 }
 
@@ -146,6 +148,7 @@ void FloodSimulation::advanceCrowd(size_t c) {
     velocity[a] = coupledVelocity(params_.crowds[c].agentMass, velocity[a], tau, contacts[a]);
     ragdolls_[c][a] = !crowd.agents()[a].arrived && carriedAsRagdoll(tau, contacts[a], params_.coupling);
     hipHeights_[c][a] = contacts[a].particles > 0 ? contacts[a].meanHeight : 0.0;
+    waterSpeeds_[c][a] = contacts[a].groundSpeed();
   }
   const std::vector<Agent> before = crowd.agents();
   crowd.move(velocity, params_.frameTime);

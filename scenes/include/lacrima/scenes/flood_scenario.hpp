@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "lacrima/crowd/flood.hpp"
+#include "lacrima/geometry/mesh.hpp"
 
 namespace lacrima {
 
@@ -16,6 +17,10 @@ struct FloodScenario {
   crowd::FloodParams params;
   double duration = 300.0;        // simulated seconds at most
   std::vector<std::string> labels;  // per crowd, how the table names its run
+  // Per crowd, the figure its agents are drawn as in rendered scenes: the crowd's `figure` glTF
+  // file, all its primitives in one mesh (feet at y = 0, facing +z, metres), or no triangles for
+  // the built-in articulated figure (crowd/figure.hpp).
+  std::vector<TriangleMesh> figures;
 };
 
 // Reads and checks a flood scenario file. Throws ShotError (lacrima/scenes/shot.hpp) listing every

@@ -7,7 +7,8 @@
 // half a spacing from the upstream wall fills every lattice place the flow has cleared; the water
 // in an inflow and an outflow zone is held at v_F, an open boundary in the manner of Tafuni et al.
 // 2018's buffer zones, so that the river keeps its depth). It starts
-// full and flowing at v_F. Obstacles are blocks standing on the ground: walls for the water and
+// full and flowing at v_F, or dry, the water entering at the emitter at t = 0 and running down the
+// bed as a front (the seed's runs: its figures 7 and 8 show the water reaching the agents at 10-15 s). Obstacles are blocks standing on the ground: walls for the water and
 // for the agents. Every frame (`frameTime`, the coupling's frame) the liquid is advanced, then each
 // crowd walks, pushed by the particles colliding with its agents. An agent carried past the end of
 // the river (x < 0) is lost. The liquid does not depend on the agents (the coupling is one way),
@@ -31,6 +32,7 @@ struct RiverParams {
   double bankHeight = 2.0;        // metres: the channel's side walls
   std::vector<GroundRect> obstacles;  // blocks in the river or on the ground
   double obstacleHeight = 1.0;
+  bool startsFull = true;  // false: the channel starts dry and fills from the emitter
 };
 
 struct FloodCrowd {
@@ -81,6 +83,8 @@ class FloodSimulation {
   // faster than 2 m/s), and its hip height then (the colliding particles' mean height; 0 if dry).
   const std::vector<bool>& ragdolls(size_t c) const { return ragdolls_[c]; }
   const std::vector<double>& hipHeights(size_t c) const { return hipHeights_[c]; }
+  // Per agent of crowd c, the colliding particles' mean ground speed in the last frame (0 if dry).
+  const std::vector<double>& waterSpeeds(size_t c) const { return waterSpeeds_[c]; }
   double endurance(size_t c, double time) const;
   size_t particlesEmitted() const { return emitted_; }
 
@@ -94,6 +98,7 @@ class FloodSimulation {
   std::vector<std::vector<AgentOutcome>> outcomes_;
   std::vector<std::vector<bool>> ragdolls_;
   std::vector<std::vector<double>> hipHeights_;
+  std::vector<std::vector<double>> waterSpeeds_;
   double time_ = 0.0;
   size_t emitted_ = 0;
 };
