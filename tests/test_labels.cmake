@@ -14,7 +14,7 @@ set(_statistical
     "^(AllBsdfs/BsdfChi2|BsdfEnergy|VndfChi2|Chi2SelfTest|Chi2Family|SubsurfaceAlbedo|DiffusionProfile|SubsurfaceDiffusion|AnalyticScenes|BounceLimits|Caustics|SamplerConvergence|WaterAnalytic)\\.")
 set(_render_in_tools "^(Shots/ImageRegression|TestSuiteCli|CliRender|BenchQuality)\\.")
 
-foreach(_executable geometry flesh sph crowd materials renderer scenes tools fuzz)
+foreach(_executable geometry flesh sph crowd tracking materials renderer scenes tools fuzz)
   foreach(_test IN LISTS lacrima_${_executable}_tests_TESTS)
     set(_labels "")
     if(_test MATCHES "${_cluster}")

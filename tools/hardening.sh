@@ -3,7 +3,7 @@
 # AddressSanitizer + UndefinedBehaviorSanitizer (UB fatal) and libFuzzer coverage, holds both the
 # unit tests and the fuzz targets: one build instead of two on CI's 2 cores.
 #   tools/hardening.sh            everything below, in this order (what CI runs)
-#   tools/hardening.sh tests      unit tests of geometry, flesh, sph, crowd, materials, scenes and fuzz under ASan/UBSan
+#   tools/hardening.sh tests      unit tests of geometry, flesh, sph, crowd, tracking, materials, scenes and fuzz under ASan/UBSan
 #   tools/hardening.sh render     small renders under ASan/UBSan (leak check on)
 #   tools/hardening.sh fuzz       each libFuzzer target for FUZZ_SECONDS (default 20)
 #   tools/hardening.sh fuzz-campaign [shot|gltf|performance_track] [--seconds N] [--runs N]
@@ -56,7 +56,7 @@ configure_and_build() {
     -DLACRIMA_SANITIZE=address,undefined -DLACRIMA_FUZZ=ON >/dev/null
   local targets=("$@")
   if [ ${#targets[@]} -eq 0 ]; then
-    targets=(lacrima lacrima_geometry_tests lacrima_flesh_tests lacrima_sph_tests lacrima_crowd_tests lacrima_materials_tests lacrima_scenes_tests lacrima_fuzz_tests
+    targets=(lacrima lacrima_geometry_tests lacrima_flesh_tests lacrima_sph_tests lacrima_crowd_tests lacrima_tracking_tests lacrima_materials_tests lacrima_scenes_tests lacrima_fuzz_tests
       shot_fuzzer gltf_fuzzer performance_track_fuzzer)
     [ "${RENDERER_TESTS:-0}" = 1 ] && targets+=(lacrima_renderer_tests)
   fi
@@ -127,7 +127,7 @@ run_sharded() {
 }
 
 run_unit_tests() {
-  local folders=(geometry flesh sph crowd materials scenes fuzz)
+  local folders=(geometry flesh sph crowd tracking materials scenes fuzz)
   [ "${RENDERER_TESTS:-0}" = 1 ] && folders+=(renderer)
   for folder in "${folders[@]}"; do
     say "unit tests: $folder ($jobs shards)"
