@@ -13,6 +13,7 @@
 #include "lacrima/tracking/depth_sensor.hpp"
 #include "lacrima/tracking/pose_filter.hpp"
 #include "lacrima/tracking/rigid_icp.hpp"
+#include "tracking/tracking_test_support.hpp"
 
 namespace lacrima::tracking {
 namespace {
@@ -87,19 +88,7 @@ const FaceModel& ictFace() {
   return model;
 }
 
-// Model (glTF: +y up, the face looking along +z) to camera space, the face `distance` metres in
-// front of the camera, turned by (pitch, yaw, roll) degrees and moved by `shift` metres.
-Eigen::Isometry3d headPose(double distance, const Vec3d& degrees, const Vec3d& shift) {
-  Eigen::Isometry3d facing = Eigen::Isometry3d::Identity();
-  facing.linear() = Vec3d(1, -1, -1).asDiagonal();  // y down, z away: the face looks at the camera
-  facing.translation() = Vec3d(0, 0, distance);
-  Eigen::Isometry3d turn = Eigen::Isometry3d::Identity();
-  turn.linear() = (Eigen::AngleAxisd(degrees.z() * kDegree, Vec3d::UnitZ()) * Eigen::AngleAxisd(degrees.y() * kDegree, Vec3d::UnitY()) *
-                   Eigen::AngleAxisd(degrees.x() * kDegree, Vec3d::UnitX()))
-                      .toRotationMatrix();
-  turn.translation() = shift;
-  return facing * turn;
-}
+using test::headPose;
 
 DepthFrame renderDepth(const Eigen::Isometry3d& pose, double noise, uint64_t seed) {
   TriangleMesh mesh = ictFace().skin;
@@ -109,9 +98,7 @@ DepthFrame renderDepth(const Eigen::Isometry3d& pose, double noise, uint64_t see
   return frame;
 }
 
-double angleBetween(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b) {
-  return Eigen::AngleAxisd(a.linear() * b.linear().transpose()).angle() / kDegree;
-}
+double angleBetween(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b) { return test::degreesBetween(a, b); }
 
 TEST(RigidIcp, RecoversAKnownHeadMotionFromTheFacesDepth) {
   const Eigen::Isometry3d previous = headPose(0.7, Vec3d::Zero(), Vec3d::Zero());

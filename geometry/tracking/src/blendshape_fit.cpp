@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "lacrima/geometry/error.hpp"
 
@@ -116,8 +117,11 @@ double addLandmarkRows(const BlendshapeModel& model, const std::vector<Vec3d>& m
 
 BlendshapeFitResult fitBlendshapes(const BlendshapeModel& model, const DepthFrame& frame,
                                    const std::vector<Eigen::Vector2d>& landmarks, const Eigen::Isometry3d& pose,
-                                   const Eigen::VectorXd& initial, const BlendshapeFitParams& params) {
+                                   const Eigen::VectorXd& initial, const BlendshapeFitParams& params,
+                                   const PriorTerm& prior) {
   const long m = model.targetCount();
+  if (prior.prior && prior.prior->weightCount() != m)
+    throw std::invalid_argument(fmt::format("fitBlendshapes: the prior has {} weights, the model {}", prior.prior->weightCount(), m));
   BlendshapeFitResult result;
   result.weights = initial.size() == m ? initial : Eigen::VectorXd::Zero(m);
   for (int iteration = 0; iteration < params.iterations; ++iteration) {
@@ -126,7 +130,16 @@ BlendshapeFitResult fitBlendshapes(const BlendshapeModel& model, const DepthFram
     NormalEquations equations(m);
     result.rmsDistance = addDepthRows(model, shape, positions, frame, pose, params, equations, result.pairs);
     result.rmsLandmarkPixels = addLandmarkRows(model, positions, landmarks, frame.camera(), pose, params, equations);
-    const Eigen::MatrixXd jtj = equations.jtj.selfadjointView<Eigen::Lower>();
+    Eigen::MatrixXd jtj = equations.jtj.selfadjointView<Eigen::Lower>();
+    if (prior.prior) {
+      // The normal equations are those of (1/2) sum r^2; the seed's energy is sum r^2 + E_prior,
+      // so the prior enters at half its gradient and Hessian.
+      Eigen::MatrixXd hessian;
+      Eigen::VectorXd gradient;
+      prior.prior->quadraticModel(result.weights, prior.previous, hessian, gradient);
+      jtj += 0.5 * hessian;
+      equations.jtr += 0.5 * gradient;
+    }
     // The gradient is J^T r; a weight at a bound whose gradient pushes it out stays there, and so
     // does a target that barely moves this primitive (nothing to observe it by).
     std::vector<long> free;

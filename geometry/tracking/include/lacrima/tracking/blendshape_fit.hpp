@@ -1,20 +1,23 @@
 #pragma once
 // The non-rigid stage of the seed's tracker (Weise, Bouaziz, Li & Pauly 2011, section 3.2): given
 // the head's rigid pose, the blendshape weights x in [0, 1]^m that best explain the frame,
-//   x* = argmin E_geo + E_im (+ E_prior, the animation prior, not yet here),
+//   x* = argmin E_geo + E_im + E_prior (the seed's eq. 13),
 // * E_geo = sum_i (n_i . (v_i(x) - v_i*))^2 / sigma_geo^2 (the seed's eq. 14): v_i(x) the model's
 //   vertex i (neutral plus weighted deltas, B x), posed; n_i its normal; v_i* the measured surface
 //   along v_i's ray (projective association, as the rigid stage);
 // * E_im: the seed's image term is optical flow against the actor's texture; lacrima's uses 2D
 //   facial landmarks instead (the 68-point layout, as a capture rig's or a phone's face tracker
 //   gives them): sum_l |pi(v_l(x)) - u_l|^2 / sigma_im^2, pi the camera's projection.
-// Minimised by Gauss-Newton with the bounds kept by projection: each step solves the normal
+// * E_prior = -ln p(x, X_n), the animation prior over x and the previous frames' weights
+//   (animation_prior.hpp), when one is given.
+// The data terms are the seed's sums of squares over sigma^2; minimised by Gauss-Newton with the bounds kept by projection: each step solves the normal
 // equations over the weights not held at a bound by their gradient, then clamps to [0, 1].
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "lacrima/geometry/gltf_asset.hpp"
+#include "lacrima/tracking/animation_prior.hpp"
 #include "lacrima/tracking/depth_frame.hpp"
 
 namespace lacrima::tracking {
@@ -59,11 +62,18 @@ struct BlendshapeFitResult {
   double rmsLandmarkPixels = 0.0;     // landmark reprojection error, pixels (0 without landmarks)
 };
 
+// The prior term of a fit: the prior and the previous frames' weights (newest first).
+struct PriorTerm {
+  const AnimationPrior* prior = nullptr;
+  WeightSequence previous;
+};
+
 // Fits the weights to a depth frame and (optionally) 68 landmarks in pixels (a landmark with a
 // NaN coordinate is not seen), the model posed by `pose` (model to camera space), starting from
-// `initial` (the previous frame's weights).
+// `initial` (the previous frame's weights), with the animation prior when `prior.prior` is set.
 BlendshapeFitResult fitBlendshapes(const BlendshapeModel& model, const DepthFrame& frame,
                                    const std::vector<Eigen::Vector2d>& landmarks, const Eigen::Isometry3d& pose,
-                                   const Eigen::VectorXd& initial, const BlendshapeFitParams& params = {});
+                                   const Eigen::VectorXd& initial, const BlendshapeFitParams& params = {},
+                                   const PriorTerm& prior = {});
 
 }  // namespace lacrima::tracking

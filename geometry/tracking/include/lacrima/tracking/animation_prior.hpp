@@ -1,0 +1,88 @@
+#pragma once
+// The seed's dynamic expression prior (Weise, Bouaziz, Li & Pauly 2011, section 3.1, eqs. 6-11):
+// the density of the current blendshape weights x together with the n previous frames' X_n,
+// p(x, X_n), as a mixture of probabilistic principal component analysers (MPPCA, Tipping & Bishop
+// 1999) learned by EM from existing animations, in a PCA latent space of the windows that keeps 99 %
+// of their variance (the seed: "a more stable learning phase"), each analyser of a third of the
+// latent dimension (the seed's choice), the EM run from several random starts (the seed: 50) and
+// the most likely kept.
+// The latent model is singular in the full space of windows; lacrima gives the directions PCA
+// dropped an isotropic Gaussian of their mean variance, so that -ln p is finite everywhere:
+//   y = [x; x_{i-1}; ...; x_{i-n}],  z = P^T (y - mean),  r = (I - P P^T)(y - mean),
+//   -ln p(y) = -ln sum_k pi_k N(z; mu_k, C_k) + |r|^2 / (2 sigma_r^2) + const,
+//   C_k = W_k W_k^T + sigma_k^2 I (eq. 7, in the latent space: eq. 10).
+// For the fit, the energy's gradient in x (the seed's eqs. 19-21) and a Gauss-Newton Hessian (the
+// mixture's responsibilities held at the current x).
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "lacrima/geometry/math.hpp"
+
+namespace lacrima::tracking {
+
+// A weight sequence: one vector of m weights per frame.
+using WeightSequence = std::vector<Eigen::VectorXd>;
+
+struct AnimationPriorParams {
+  int previousFrames = 3;         // n (the seed found 3 <= n <= 5 good)
+  int components = 20;            // K analysers (the seed's 20)
+  double keptVariance = 0.99;     // of the windows' PCA
+  int restarts = 8;               // EM runs from random starts (the seed's 50)
+  int iterations = 60;            // EM iterations per run
+  uint64_t seed = 1;
+};
+
+class AnimationPrior {
+ public:
+  // Learns the prior from sequences (each at least one frame; a window reaching before a
+  // sequence's start repeats its first frame). Throws std::invalid_argument without data or with
+  // sequences of different weight counts.
+  static AnimationPrior train(const std::vector<WeightSequence>& sequences, const AnimationPriorParams& params = {});
+
+  int weightCount() const { return weights_; }
+  int previousFrames() const { return previous_; }
+  int latentDimension() const { return int(basis_.cols()); }
+  int componentCount() const { return int(components_.size()); }
+  // The mean log-likelihood per window of the training data, as EM left it.
+  double trainingLogLikelihood() const { return trainingLogLikelihood_; }
+
+  // -ln p(x, X_n) up to a constant; `previous` holds x_{i-1}, x_{i-2}, ... (missing ones repeat
+  // the last given, or x itself when none is given).
+  double energy(const Eigen::VectorXd& x, const WeightSequence& previous) const;
+  // The energy's gradient in x, and its Gauss-Newton Hessian in x (positive definite).
+  void quadraticModel(const Eigen::VectorXd& x, const WeightSequence& previous, Eigen::MatrixXd& hessian,
+                      Eigen::VectorXd& gradient) const;
+
+ private:
+  struct Analyser {
+    double logWeight = 0.0;       // ln pi_k
+    Eigen::VectorXd mean;         // mu_k, latent
+    Eigen::MatrixXd precision;    // C_k^{-1}
+    double logDeterminant = 0.0;  // ln det C_k
+  };
+  Eigen::VectorXd window(const Eigen::VectorXd& x, const WeightSequence& previous) const;
+  // Per analyser, its responsibility for latent point z; and -ln sum_k pi_k N(z; mu_k, C_k).
+  double responsibilities(const Eigen::VectorXd& z, std::vector<double>& gamma) const;
+
+  int weights_ = 0, previous_ = 0;
+  Eigen::VectorXd mean_;   // of the windows
+  Eigen::MatrixXd basis_;  // P: orthonormal columns, the kept principal directions
+  double residualVariance_ = 1.0;  // sigma_r^2
+  std::vector<Analyser> components_;
+  double trainingLogLikelihood_ = 0.0;
+};
+
+// Synthetic performances to train and test on when no captured ones are at hand: keys every 6-20
+// frames, each the neutral face (one key in four) or a blend of one or two of `expressions` at
+// intensities in [0.3, 1], eased between keys by smoothstep, clamped to [0, 1]. Deterministic in
+// `seed`.
+WeightSequence keyedPerformance(const std::vector<Eigen::VectorXd>& expressions, int frames, uint64_t seed);
+
+// Archetypal expressions over ARKit-style target names (the ICT face's), as FACS-style
+// combinations of action units (Ekman & Friesen 1978): smile, sadness (the default shot's), sob,
+// surprise, anger, disgust, fear, a blink, a pucker, jaw open, and a left and right smirk. Targets
+// the names do not have are left out.
+std::vector<Eigen::VectorXd> archetypalExpressions(const std::vector<std::string>& targetNames);
+
+}  // namespace lacrima::tracking

@@ -1,0 +1,48 @@
+// The tracker frame by frame; see performance_tracker.hpp.
+#include "lacrima/tracking/performance_tracker.hpp"
+
+#include <stdexcept>
+
+namespace lacrima::tracking {
+
+PerformanceTracker::PerformanceTracker(const BlendshapeModel& model, const AnimationPrior* prior,
+                                       const TrackerParams& params, const Eigen::Isometry3d& initialPose)
+    : model_(model), prior_(prior), params_(params), filter_(params.filter), pose_(initialPose) {
+  history_.push_back(Eigen::VectorXd::Zero(model.targetCount()));
+  for (size_t v = 0; v < model.neutral.positions.size(); ++v)
+    if (model.neutral.positions[v].y() > params.upperFaceAbove) upperVertices_.push_back(v);
+}
+
+TrackedFrame PerformanceTracker::track(const DepthFrame& frame, const std::vector<Eigen::Vector2d>& landmarks) {
+  TrackedFrame out;
+  // Rigid: the previous frame's reconstruction, its upper face, against the new depth.
+  const TriangleMesh previous = model_.shape(history_.front());
+  std::vector<Vec3d> points, normals;
+  for (size_t v : upperVertices_) {
+    points.push_back(previous.positions[v].cast<double>());
+    normals.push_back(previous.normals[v].cast<double>());
+  }
+  out.rigid = alignRigid(points, normals, frame, pose_, params_.rigid);
+  pose_ = out.rigid.pose;
+  out.rawPose = pose_;
+  out.pose = params_.filterPose ? filter_.add(pose_) : pose_;
+  // Non-rigid, at the filtered pose, from the previous weights.
+  PriorTerm prior;
+  if (prior_) {
+    prior.prior = prior_;
+    prior.previous.assign(history_.begin(), history_.begin() + long(std::min<size_t>(history_.size(), size_t(prior_->previousFrames()))));
+  }
+  out.fit = fitBlendshapes(model_, frame, landmarks, out.pose, history_.front(), params_.fit, prior);
+  out.weights = out.fit.weights;
+  history_.insert(history_.begin(), out.weights);
+  if (history_.size() > 8) history_.pop_back();
+  return out;
+}
+
+double noseTipHeight(const BlendshapeModel& model) {
+  const int vertex = model.landmarkVertices.at(30);
+  if (vertex < 0) throw std::invalid_argument("noseTipHeight: the model has no landmark 30 (the nose tip)");
+  return double(model.neutral.positions[size_t(vertex)].y());
+}
+
+}  // namespace lacrima::tracking

@@ -1,0 +1,76 @@
+#pragma once
+// What the tracking tests share: the ICT face's skin as a blendshape model, a camera pose for it,
+// and a synthetic capture of it (depth with a Kinect's noise, 68 landmarks with pixel noise).
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "lacrima/geometry/sampler.hpp"
+#include "lacrima/tracking/blendshape_fit.hpp"
+#include "lacrima/tracking/depth_sensor.hpp"
+
+namespace lacrima::tracking::test {
+
+inline const BlendshapeModel& ictModel() {
+  static const BlendshapeModel model =
+      blendshapeModelOf(loadGltfAsset(std::string(LACRIMA_SOURCE_DIR) + "/scenes/assets/ict-face/ict_face.glb"), "M_Face");
+  return model;
+}
+
+// Model (glTF: +y up, the face looking along +z) to camera space: the face `distance` metres in
+// front of the camera, turned by (pitch, yaw, roll) degrees about its own origin and moved by `shift`.
+inline Eigen::Isometry3d headPose(double distance, const Vec3d& degrees = Vec3d::Zero(), const Vec3d& shift = Vec3d::Zero()) {
+  constexpr double kDegree = std::numbers::pi / 180.0;
+  Eigen::Isometry3d facing = Eigen::Isometry3d::Identity();
+  facing.linear() = Vec3d(1, -1, -1).asDiagonal();  // y down, z away: the face looks at the camera
+  facing.translation() = Vec3d(0, 0, distance);
+  Eigen::Isometry3d turn = Eigen::Isometry3d::Identity();
+  turn.linear() = (Eigen::AngleAxisd(degrees.z() * kDegree, Vec3d::UnitZ()) * Eigen::AngleAxisd(degrees.y() * kDegree, Vec3d::UnitY()) *
+                   Eigen::AngleAxisd(degrees.x() * kDegree, Vec3d::UnitX()))
+                      .toRotationMatrix();
+  turn.translation() = shift;
+  return facing * turn;
+}
+
+struct Capture {
+  DepthFrame depth;
+  std::vector<Eigen::Vector2d> landmarks;  // NaN where the landmark is not on the skin
+};
+
+// The face at `weights` and `pose` seen by the default camera: depth with `noise` x a Kinect's
+// noise, landmarks with uniform noise of +-`landmarkNoise` pixels; `seed` draws both.
+inline Capture capture(const BlendshapeModel& model, const Eigen::VectorXd& weights, const Eigen::Isometry3d& pose,
+                       double noise, double landmarkNoise, uint64_t seed) {
+  TriangleMesh mesh = model.shape(weights);
+  transformMesh(mesh, Affine3(pose.cast<float>().matrix()));
+  Capture c{rasterizeDepth(mesh, PinholeCamera{}), {}};
+  addSensorNoise(c.depth, noise, seed);
+  const std::vector<Vec3d> p = model.positions(weights);
+  for (size_t l = 0; l < 68; ++l) {
+    const int v = model.landmarkVertices[l];
+    if (v < 0) {
+      c.landmarks.emplace_back(std::numeric_limits<double>::quiet_NaN(), 0.0);
+      continue;
+    }
+    const Eigen::Vector2d jitter(double(uint64ToUnitFloat(hashCombine(hashCombine(seed, l), 1))) - 0.5,
+                                 double(uint64ToUnitFloat(hashCombine(hashCombine(seed, l), 2))) - 0.5);
+    c.landmarks.push_back(PinholeCamera{}.project(pose * p[size_t(v)]) + 2.0 * landmarkNoise * jitter);
+  }
+  return c;
+}
+
+// The root mean square distance between the model's vertices at two weight vectors, millimetres.
+inline double vertexRmsMm(const BlendshapeModel& model, const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+  const std::vector<Vec3d> p = model.positions(a), q = model.positions(b);
+  double squared = 0.0;
+  for (size_t v = 0; v < p.size(); ++v) squared += (p[v] - q[v]).squaredNorm();
+  return 1e3 * std::sqrt(squared / double(p.size()));
+}
+
+inline double degreesBetween(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b) {
+  return Eigen::AngleAxisd(a.linear() * b.linear().transpose()).angle() * 180.0 / std::numbers::pi;
+}
+
+}  // namespace lacrima::tracking::test
