@@ -14,16 +14,23 @@
 namespace lacrima::crowd {
 namespace {
 
+// A river across a field from the origin to `fieldMax`, as long as the field, from z = `nearBank`,
+// `width` wide and 1 m deep, flowing at 1.5 m/s towards -x.
+FloodParams channel(const Vec2d& fieldMax, double nearBank, double width) {
+  FloodParams params;
+  params.field = GroundRect{Vec2d(0, 0), fieldMax};
+  params.river.zMin = nearBank;
+  params.river.width = width;
+  params.river.length = fieldMax.x();
+  params.river.speed = 1.5;
+  return params;
+}
+
 // A river 12 m long, 4 m wide and 1 m deep (384 particles of 0.25 m) across a 12 x 10 m field,
 // flowing at 1.5 m/s towards -x, and one agent per endurance on the near bank at x = 9 walking to
 // the far bank.
 FloodParams smallRiver(const std::vector<double>& endurances) {
-  FloodParams params;
-  params.field = GroundRect{Vec2d(0, 0), Vec2d(12, 10)};
-  params.river.zMin = 3.0;
-  params.river.width = 4.0;
-  params.river.length = 12.0;
-  params.river.speed = 1.5;
+  FloodParams params = channel(Vec2d(12, 10), 3.0, 4.0);
   for (double tau : endurances) {
     FloodCrowd crowd;
     crowd.name = "tau";
@@ -83,12 +90,7 @@ TEST(Flood, ADryRiverFillsFromItsUpstreamEnd) {
 // and 8 m wide with a 2 x 2 x 1 m block in its middle; averaged over 4-10 s, the water in the
 // block's lee runs slower than the water beside the lee.
 TEST(Flood, ABlockInTheStreamSheltersTheWaterBehindIt) {
-  FloodParams params;
-  params.field = GroundRect{Vec2d(0, 0), Vec2d(20, 12)};
-  params.river.zMin = 2.0;
-  params.river.width = 8.0;
-  params.river.length = 20.0;
-  params.river.speed = 1.5;
+  FloodParams params = channel(Vec2d(20, 12), 2.0, 8.0);
   const GroundRect block{Vec2d(11, 5), Vec2d(13, 7)};
   params.river.obstacles = {block};
   FloodSimulation flood(params);

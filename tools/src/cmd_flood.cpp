@@ -1,7 +1,6 @@
 // `lacrima flood`: Schaffer et al. 2020's flood experiments (crowds crossing a river of SPH water;
 // geometry/crowd/include/lacrima/crowd/flood.hpp), with their trajectories, top-view plots and a
 // table of outcomes (docs/crowd.md).
-#include <OpenImageIO/imagebuf.h>
 #include <fmt/format.h>
 
 #include <array>
@@ -57,15 +56,7 @@ class TopView {
       for (int dx = -radius; dx <= radius; ++dx)
         if (cx + dx >= 0 && cx + dx < width_ && cy + dy >= 0 && cy + dy < height_) set(cx + dx, cy + dy, r, g, b);
   }
-  void write(const std::filesystem::path& path) const {
-    OIIO::ImageBuf image(OIIO::ImageSpec(width_, height_, 3, OIIO::TypeDesc::FLOAT));
-    image.set_pixels(OIIO::ROI(0, width_, 0, height_, 0, 1, 0, 3), OIIO::TypeDesc::FLOAT, rgb_.data());
-    std::filesystem::create_directories(path.parent_path());
-    const std::filesystem::path temporary = path.string() + ".tmp.png";
-    if (!image.write(temporary.string(), OIIO::TypeDesc::UINT8))
-      throw InputError(fmt::format("cannot write the plot '{}': {}", path.string(), image.geterror()));
-    std::filesystem::rename(temporary, path);
-  }
+  void write(const std::filesystem::path& path) const { writePlotPng(path, width_, height_, rgb_, "the plot"); }
 
  private:
   crowd::Vec2d ground(int x, int y) const {

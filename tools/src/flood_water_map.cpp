@@ -43,12 +43,16 @@ void writeWaterSpeedMap(const crowd::WaterSpeedField& field, const crowd::FloodP
         if (o.contains(field.cellCenter(column, row))) colour = {0.25f, 0.25f, 0.25f};
       std::copy(colour.begin(), colour.end(), &rgb[(size_t(y) * size_t(width) + size_t(x)) * 3]);
     }
-  OIIO::ImageBuf large(OIIO::ImageSpec(width, height, 3, OIIO::TypeDesc::FLOAT));
-  large.set_pixels(OIIO::ROI(0, width, 0, height, 0, 1, 0, 3), OIIO::TypeDesc::FLOAT, rgb.data());
+  writePlotPng(path, width, height, rgb, "the water map");
+}
+
+void writePlotPng(const std::filesystem::path& path, int width, int height, const std::vector<float>& rgb, const char* what) {
+  OIIO::ImageBuf image(OIIO::ImageSpec(width, height, 3, OIIO::TypeDesc::FLOAT));
+  image.set_pixels(OIIO::ROI(0, width, 0, height, 0, 1, 0, 3), OIIO::TypeDesc::FLOAT, rgb.data());
   std::filesystem::create_directories(path.parent_path());
   const std::filesystem::path temporary = path.string() + ".tmp.png";
-  if (!large.write(temporary.string(), OIIO::TypeDesc::UINT8))
-    throw InputError(fmt::format("cannot write the water map '{}': {}", path.string(), large.geterror()));
+  if (!image.write(temporary.string(), OIIO::TypeDesc::UINT8))
+    throw InputError(fmt::format("cannot write {} '{}': {}", what, path.string(), image.geterror()));
   std::filesystem::rename(temporary, path);
 }
 

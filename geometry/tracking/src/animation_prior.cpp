@@ -35,10 +35,9 @@ Eigen::MatrixXd windowsOf(const std::vector<WeightSequence>& sequences, int m, i
   return y;
 }
 
-// One analyser's covariance as the PPCA maximum-likelihood fit to a weighted covariance S
-// (the PPCA maximum-likelihood solution, as the M-step of Tipping & Bishop 1999 uses it): the q
-// leading eigenvalues kept, the rest
-// replaced by their mean sigma^2 (at least `floor`).
+// One analyser's covariance as the PPCA maximum-likelihood fit to its weighted covariance S (the
+// M-step of Tipping & Bishop 1999): the q leading eigenvalues kept, the others replaced by their
+// mean sigma^2 (at least `floor`).
 Eigen::MatrixXd ppcaCovariance(const Eigen::MatrixXd& s, int q, double floor) {
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(s);
   const Eigen::VectorXd& values = eigen.eigenvalues();  // ascending
