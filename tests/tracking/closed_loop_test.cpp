@@ -92,10 +92,10 @@ TEST(ClosedLoop, ThePriorAndTheFilterMakeATrackedPerformanceCloserAndSteadier) {
     std::printf("[ closed loop ] %s: weight RMSE %.4f, vertices %.3f mm, head %.3f degrees %.3f mm off; still head "
                 "jitter %.3f mm %.3f degrees a frame\n",
                 name, e.weightRmse, e.vertexMm, e.poseDegrees, e.poseMm, e.stillJitterMm, e.stillJitterDegrees);
-  // Measured: weight RMSE 0.112 and 0.058, vertices 1.06 and 0.55 mm, still-head jitter 0.15 and
-  // 0.10 mm, 0.19 and 0.05 degrees a frame; the head 0.24 and 0.23 degrees, 0.37 and 0.66 mm off
+  // Measured: weight RMSE 0.132 and 0.043, vertices 2.92 and 0.47 mm, still-head jitter 0.21 and
+  // 0.04 mm, 0.16 and 0.024 degrees a frame; the head 0.19 and 0.16 degrees, 0.26 and 0.52 mm off
   // (the filter lags a moving head a little).
-  EXPECT_LT(seed.weightRmse, 0.6 * plain.weightRmse);
+  EXPECT_LT(seed.weightRmse, 0.5 * plain.weightRmse);
   EXPECT_LT(seed.vertexMm, plain.vertexMm);
   EXPECT_LT(seed.stillJitterMm, plain.stillJitterMm);
   EXPECT_LT(seed.stillJitterDegrees, 0.5 * plain.stillJitterDegrees);

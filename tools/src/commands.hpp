@@ -49,6 +49,19 @@ struct FloodOptions {
   std::vector<double> sceneTimes;        // simulated seconds at which to write the scene (glb + shot)
 };
 
+struct TrackOptions {
+  std::string performance;          // performance.json to track
+  std::string synthesize;           // instead: write a synthetic performance into this folder
+  std::string asset;                // the face (glTF); empty: the ICT face
+  std::string part = "M_Face";      // its primitive to track
+  std::string out = "track";        // folder for weights.csv and head_pose.csv
+  int frames = 60;                  // --synthesize: frames
+  double noise = 1.0;               // --synthesize: x a Kinect's depth noise
+  double landmarkNoise = 1.0;       // --synthesize: landmarks jittered by up to this (pixels)
+  uint64_t seed = 1;                // --synthesize: the performance and the noise
+  bool noPrior = false, noFilter = false;
+};
+
 struct FarmSubmitOptions {
   RenderOptions render;     // shot, --frames, the overrides and --out each task renders with
   int chunk = 4;            // frames per array task
@@ -118,6 +131,7 @@ int runBenchFlesh(const BenchOptions& options);
 int runBenchSph(const BenchOptions& options);
 int runExport(const ExportOptions& options);
 int runFlood(const FloodOptions& options);
+int runTrack(const TrackOptions& options);
 int runFarmSubmit(const FarmSubmitOptions& options);
 int runFarmStatus(const FarmStatusOptions& options);
 

@@ -40,6 +40,8 @@ const char* kDescription =
     "  lacrima farm submit shot.json --chunk 6\n"
     "      the shot's frames as a Slurm array job; `lacrima farm status shot.json` follows it\n"
     "  lacrima flood --out flood      the flood seed's experiments: crowds crossing a river of SPH water\n"
+    "  lacrima track perf/performance.json --out track\n"
+    "      a face performance (depth + landmarks) to a weight track a shot plays (the tracker seed)\n"
     "\n"
     "Exit status: 0 success, 1 render failure, 2 bad input (shot file, asset or options);\n"
     "diff and test-suite: 0 pass, 1 warn, 2 fail or bad input; farm status: 3 frames still running.";
@@ -225,6 +227,45 @@ void addFlood(CLI::App& app, FloodOptions& o) {
       ->delimiter(',')
       ->check(CLI::Range(0.0, 3600.0));
   flood->callback([&o] { throw CLI::RuntimeError(runFlood(o)); });
+}
+
+const char* kTrackExamples =
+    "Examples:\n"
+    "  lacrima track --synthesize /tmp/perf --frames 60\n"
+    "      a synthetic performance of the ICT face: depth EXRs with a Kinect's noise, 68 landmarks,\n"
+    "      and the truth it was made from (truth_weights.csv, truth_head_pose.csv)\n"
+    "  lacrima track /tmp/perf/performance.json --out /tmp/track\n"
+    "      track it: /tmp/track/weights.csv (play it in a shot: \"performance\": {\"file\": ...})\n"
+    "      and /tmp/track/head_pose.csv; beside a synthetic performance, the errors against its truth\n"
+    "\n"
+    "The realtime tracker of Weise, Bouaziz, Li & Pauly 2011 (docs/tracking.md): per frame, ICP of the\n"
+    "face's upper part against the depth map (point-plane, from the last frame's pose; the first frame's\n"
+    "from the inner landmarks and their depth), the seed's adaptive pose filter (--no-filter: off), then\n"
+    "the blendshape weights in [0, 1] fitted to the depth and the landmarks with the seed's animation\n"
+    "prior (--no-prior: off; trained on synthetic keyed blends of twelve archetypal expressions).\n"
+    "A performance is performance.json: {\"version\": 1, \"fps\": 30, \"frames\": {\"start\": 1, \"end\": 60},\n"
+    "\"camera\": {\"width\", \"height\", \"fx\", \"fy\", \"cx\", \"cy\"} (pixels), \"depth\": \"depth.####.exr\" (one\n"
+    "float channel Z in metres, 0 = none), \"landmarks\": \"landmarks.csv\" (frame,landmark,u,v in pixels,\n"
+    "iBUG 68 numbering)}. head_pose.csv is the head's motion since the first frame in the face's own\n"
+    "axes (Euler degrees x first, metres).\n"
+    "Exit status: 0 success, 2 a bad performance, asset or option.";
+
+void addTrack(CLI::App& app, TrackOptions& o) {
+  auto* track = app.add_subcommand("track", "Track a recorded face performance into a blendshape weight track");
+  track->footer(kTrackExamples);
+  track->add_option("performance", o.performance, "The performance to track (performance.json)");
+  track->add_option("--synthesize", o.synthesize, "Instead, write a synthetic performance of the face into this folder");
+  track->add_option("--asset", o.asset, "The face (glTF with morph targets and 68 landmarks; default: the ICT face)");
+  track->add_option("--part", o.part, "The face's primitive to track (default: M_Face)");
+  track->add_option("--out,-o", o.out, "Folder for weights.csv and head_pose.csv (default: track)");
+  track->add_option("--frames", o.frames, "--synthesize: frames (default 60, at 30 fps)")->check(CLI::Range(1, 100000));
+  track->add_option("--noise", o.noise, "--synthesize: depth noise, times a Kinect's (default 1; 0: none)")->check(CLI::Range(0.0, 100.0));
+  track->add_option("--landmark-noise", o.landmarkNoise, "--synthesize: landmarks jittered by up to this many pixels (default 1)")
+      ->check(CLI::Range(0.0, 100.0));
+  track->add_option("--seed", o.seed, "--synthesize: the performance's and the noise's seed (default 1)");
+  track->add_flag("--no-prior", o.noPrior, "Fit without the animation prior");
+  track->add_flag("--no-filter", o.noFilter, "Do not filter the head pose");
+  track->callback([&o] { throw CLI::RuntimeError(runTrack(o)); });
 }
 
 const char* kFarmExamples =
@@ -449,6 +490,7 @@ int main(int argc, char** argv) {
   FarmSubmitOptions farmSubmitOptions;
   FarmStatusOptions farmStatusOptions;
   FloodOptions floodOptions;
+  TrackOptions trackOptions;
   std::string checkShot, infoFile;
   addRender(app, renderOptions);
   addCheck(app, checkShot);
@@ -459,6 +501,7 @@ int main(int argc, char** argv) {
   addTestSuite(app, testSuiteOptions);
   addFarm(app, farmSubmitOptions, farmStatusOptions);
   addFlood(app, floodOptions);
+  addTrack(app, trackOptions);
   try {
     app.parse(argc, argv);
   } catch (const CLI::RuntimeError& status) {

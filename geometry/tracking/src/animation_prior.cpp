@@ -146,7 +146,10 @@ AnimationPrior AnimationPrior::train(const std::vector<WeightSequence>& sequence
   kept = std::max<long>(kept, 1);
   prior.basis_ = pca.eigenvectors().rightCols(kept).rowwise().reverse();
   const double dropped = values.tail(d - kept).sum();
-  const double floor = 1e-6 * total / double(d);
+  // The variance no direction goes below: training weights are known to about `weightPrecision`;
+  // without it a run of identical windows (a held neutral face) collapses an analyser onto a
+  // point, and its spike holds the fit there.
+  const double floor = std::max(params.weightPrecision * params.weightPrecision, 1e-12 * total);
   prior.residualVariance_ = std::max(floor, d > kept ? dropped / double(d - kept) : floor);
   // MPPCA in the latent space, the best of several starts.
   const Eigen::MatrixXd z = centred * prior.basis_;
@@ -226,7 +229,7 @@ WeightSequence keyedPerformance(const std::vector<Eigen::VectorXd>& expressions,
   std::vector<std::pair<int, Eigen::VectorXd>> keys;  // (frame, weights)
   for (int frame = 0, key = 0; frame < frames + 20; ++key) {
     Eigen::VectorXd w = Eigen::VectorXd::Zero(weights);
-    if (uniform(uint64_t(key), 0) >= 0.25) {
+    if (key > 0 && uniform(uint64_t(key), 0) >= 0.25) {
       const int blended = uniform(uint64_t(key), 1) < 0.5 ? 1 : 2;
       for (int b = 0; b < blended; ++b) {
         const size_t e = size_t(uniform(uint64_t(key), uint64_t(2 + b)) * double(expressions.size())) % expressions.size();

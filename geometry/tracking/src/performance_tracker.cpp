@@ -27,13 +27,21 @@ TrackedFrame PerformanceTracker::track(const DepthFrame& frame, const std::vecto
   out.rawPose = pose_;
   out.pose = params_.filterPose ? filter_.add(pose_) : pose_;
   // Non-rigid, at the filtered pose, from the previous weights.
+  // The first frame has no past: its window is the frame itself held (a still face), and it is
+  // fitted from the neutral face, so with more iterations.
+  const bool first = tracked_ == 0;
   PriorTerm prior;
   if (prior_) {
     prior.prior = prior_;
-    prior.previous.assign(history_.begin(), history_.begin() + long(std::min<size_t>(history_.size(), size_t(prior_->previousFrames()))));
+    if (!first)
+      prior.previous.assign(history_.begin(), history_.begin() + long(std::min<size_t>(history_.size(), size_t(prior_->previousFrames()))));
   }
-  out.fit = fitBlendshapes(model_, frame, landmarks, out.pose, history_.front(), params_.fit, prior);
+  BlendshapeFitParams fit = params_.fit;
+  if (first) fit.iterations *= 3;
+  out.fit = fitBlendshapes(model_, frame, landmarks, out.pose, history_.front(), fit, prior);
+  ++tracked_;
   out.weights = out.fit.weights;
+  if (first) history_.clear();  // the neutral start was no frame
   history_.insert(history_.begin(), out.weights);
   if (history_.size() > 8) history_.pop_back();
   return out;

@@ -31,6 +31,9 @@ struct AnimationPriorParams {
   int restarts = 8;               // EM runs from random starts (the seed's 50)
   int iterations = 60;            // EM iterations per run
   uint64_t seed = 1;
+  // The training weights' precision: no variance of the model falls below its square (a held
+  // pose repeated over many frames would otherwise make a spike the fit cannot leave).
+  double weightPrecision = 0.01;
 };
 
 class AnimationPrior {
@@ -74,9 +77,9 @@ class AnimationPrior {
 };
 
 // Synthetic performances to train and test on when no captured ones are at hand: keys every 6-20
-// frames, each the neutral face (one key in four) or a blend of one or two of `expressions` at
-// intensities in [0.3, 1], eased between keys by smoothstep, clamped to [0, 1]. Deterministic in
-// `seed`.
+// frames, the first the neutral face (a take starts from it), each later one the neutral face (one
+// key in four) or a blend of one or two of `expressions` at intensities in [0.3, 1], eased between
+// keys by smoothstep, clamped to [0, 1]. Deterministic in `seed`.
 WeightSequence keyedPerformance(const std::vector<Eigen::VectorXd>& expressions, int frames, uint64_t seed);
 
 // Archetypal expressions over ARKit-style target names (the ICT face's), as FACS-style

@@ -46,7 +46,8 @@ class PerformanceTracker {
   TrackerParams params_;
   PoseFilter filter_;
   Eigen::Isometry3d pose_;           // the last frame's (unfiltered: ICP continues from it)
-  WeightSequence history_;           // fitted weights, newest first
+  WeightSequence history_;           // fitted weights, newest first (the neutral face before the first)
+  size_t tracked_ = 0;               // frames tracked so far
   std::vector<size_t> upperVertices_;
 };
 

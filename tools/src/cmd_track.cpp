@@ -1,0 +1,176 @@
+// `lacrima track`: the seed's realtime tracker (Weise, Bouaziz, Li & Pauly 2011;
+// geometry/tracking, docs/tracking.md) on a recorded performance (depth EXRs + landmarks), writing
+// the weight track `lacrima render` plays (the shot's `performance`) and the head pose; or a
+// synthetic performance of a face to validate it on (`--synthesize`).
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "commands.hpp"
+#include "lacrima/geometry/error.hpp"
+#include "lacrima/scenes/shot.hpp"
+#include "lacrima/tracking/depth_sensor.hpp"
+#include "lacrima/tracking/initial_pose.hpp"
+#include "lacrima/tracking/performance_tracker.hpp"
+#include "track_io.hpp"
+
+namespace lacrima::cli {
+
+namespace {
+
+using namespace tracking;
+
+std::filesystem::path assetPath(const TrackOptions& o) {
+  return o.asset.empty() ? std::filesystem::path(LACRIMA_SOURCE_DIR) / "scenes/assets/ict-face/ict_face.glb"
+                         : std::filesystem::path(o.asset);
+}
+
+// The synthetic head: 0.7 m from the camera, turning up to 8 degrees left and right every 3 s,
+// nodding 3 degrees every 4 s, swaying 1 cm.
+Eigen::Isometry3d syntheticHeadPose(double seconds) {
+  const double degree = std::numbers::pi / 180.0, tau = 2.0 * std::numbers::pi;
+  Eigen::Isometry3d facing = Eigen::Isometry3d::Identity();
+  facing.linear() = Vec3d(1, -1, -1).asDiagonal();  // the face (+z towards the viewer, +y up) to the camera's axes
+  facing.translation() = Vec3d(0, 0, 0.7);
+  Eigen::Isometry3d motion = Eigen::Isometry3d::Identity();
+  motion.linear() = (Eigen::AngleAxisd(8.0 * degree * std::sin(tau * seconds / 3.0), Vec3d::UnitY()) *
+                     Eigen::AngleAxisd(3.0 * degree * std::sin(tau * seconds / 4.0), Vec3d::UnitX()))
+                        .toRotationMatrix();
+  motion.translation() = Vec3d(0.01 * std::sin(tau * seconds / 5.0), 0.0, 0.0);
+  return facing * motion;
+}
+
+std::vector<Eigen::Vector2d> projectedLandmarks(const BlendshapeModel& model, const Eigen::VectorXd& weights,
+                                                const Eigen::Isometry3d& pose, const PinholeCamera& camera,
+                                                double noise, uint64_t seed) {
+  const std::vector<Vec3d> p = model.positions(weights);
+  std::vector<Eigen::Vector2d> out(68, Eigen::Vector2d::Constant(std::nan("")));
+  for (size_t l = 0; l < 68; ++l) {
+    const int v = model.landmarkVertices[l];
+    if (v < 0) continue;
+    const Eigen::Vector2d jitter(double(uint64ToUnitFloat(hashCombine(hashCombine(seed, l), 1))) - 0.5,
+                                 double(uint64ToUnitFloat(hashCombine(hashCombine(seed, l), 2))) - 0.5);
+    out[l] = camera.project(pose * p[size_t(v)]) + 2.0 * noise * jitter;
+  }
+  return out;
+}
+
+int synthesize(const TrackOptions& o, const BlendshapeModel& model) {
+  const std::filesystem::path dir = o.synthesize;
+  PerformanceManifest m;
+  m.file = dir / "performance.json";
+  m.firstFrame = 1;
+  m.lastFrame = o.frames;
+  m.depthPattern = (dir / "depth.####.exr").string();
+  m.landmarks = dir / "landmarks.csv";
+  const WeightSequence truth = keyedPerformance(archetypalExpressions(model.targetNames), o.frames, o.seed);
+  LandmarkTrack landmarks;
+  std::vector<Eigen::Isometry3d> poses;
+  for (int i = 0; i < o.frames; ++i) {
+    const int frame = m.firstFrame + i;
+    const Eigen::Isometry3d pose = syntheticHeadPose(double(i) / m.fps);
+    TriangleMesh mesh = model.shape(truth[size_t(i)]);
+    transformMesh(mesh, Affine3(pose.cast<float>().matrix()));
+    DepthFrame depth = rasterizeDepth(mesh, m.camera);
+    addSensorNoise(depth, o.noise, hashCombine(o.seed, uint64_t(frame)));
+    writeDepthExr(expandFramePattern(m.depthPattern, frame), depth);
+    landmarks[frame] = projectedLandmarks(model, truth[size_t(i)], pose, m.camera, o.landmarkNoise, hashCombine(o.seed, uint64_t(frame) + 7));
+    poses.push_back(pose);
+  }
+  writeLandmarksCsv(m.landmarks, landmarks);
+  writeWeightsCsv(dir / "truth_weights.csv", model.targetNames, m.firstFrame, truth);
+  writeHeadPoseCsv(dir / "truth_head_pose.csv", m.firstFrame, poses);
+  writePerformanceManifest(m);
+  std::printf("synthesized %d frames of %s (depth noise x%g, landmarks +-%g px) in %s: performance.json, depth.####.exr, "
+              "landmarks.csv, truth_weights.csv, truth_head_pose.csv\n",
+              o.frames, assetPath(o).filename().string().c_str(), o.noise, o.landmarkNoise, dir.string().c_str());
+  return kExitOk;
+}
+
+// The prior lacrima trains when no animations are given: 30 keyed performances of 120 frames
+// blending the archetypal expressions (docs/tracking.md, "Training data").
+AnimationPrior defaultPrior(const BlendshapeModel& model) {
+  const std::vector<Eigen::VectorXd> expressions = archetypalExpressions(model.targetNames);
+  std::vector<WeightSequence> training;
+  for (uint64_t s = 0; s < 30; ++s) training.push_back(keyedPerformance(expressions, 120, 1000 + s));
+  AnimationPriorParams params;
+  params.components = 10;
+  params.restarts = 1;
+  params.iterations = 30;
+  return AnimationPrior::train(training, params);
+}
+
+int track(const TrackOptions& o, const BlendshapeModel& model) {
+  const PerformanceManifest m = readPerformanceManifest(o.performance);
+  const LandmarkTrack landmarks = m.landmarks.empty() ? LandmarkTrack{} : readLandmarksCsv(m.landmarks);
+  const std::optional<AnimationPrior> prior = o.noPrior ? std::nullopt : std::optional(defaultPrior(model));
+  TrackerParams params;
+  params.filterPose = !o.noFilter;
+  params.upperFaceAbove = noseTipHeight(model);
+  std::optional<PerformanceTracker> tracker;
+  WeightSequence weights;
+  std::vector<Eigen::Isometry3d> poses;
+  double trackingSeconds = 0.0;
+  for (int frame = m.firstFrame; frame <= m.lastFrame; ++frame) {
+    const DepthFrame depth = readDepthExr(expandFramePattern(m.depthPattern, frame), m.camera);
+    const auto seen = landmarks.find(frame);
+    const std::vector<Eigen::Vector2d> points = seen == landmarks.end() ? std::vector<Eigen::Vector2d>{} : seen->second;
+    const auto start = std::chrono::steady_clock::now();
+    if (!tracker) {
+      const auto first = poseFromLandmarks(model, depth, points);
+      if (!first)
+        throw InputError(fmt::format("{}: frame {} has fewer than six inner landmarks with depth: cannot find the head",
+                                     m.file.string(), frame));
+      tracker.emplace(model, prior ? &*prior : nullptr, params, *first);
+    }
+    const TrackedFrame t = tracker->track(depth, points);
+    trackingSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    weights.push_back(t.weights);
+    poses.push_back(t.pose);
+    if ((frame - m.firstFrame) % 10 == 9 || frame == m.lastFrame)
+      std::fprintf(stderr, "track: frame %d of %d-%d (%.1f frames a second)\n", frame, m.firstFrame, m.lastFrame,
+                   double(weights.size()) / trackingSeconds);
+  }
+  const std::filesystem::path out = o.out;
+  writeWeightsCsv(out / "weights.csv", model.targetNames, m.firstFrame, weights);
+  writeHeadPoseCsv(out / "head_pose.csv", m.firstFrame, poses);
+  std::printf("tracked %zu frames at %.1f frames a second (tracking alone, 1 thread) -> %s, %s\n", weights.size(),
+              double(weights.size()) / trackingSeconds, (out / "weights.csv").string().c_str(),
+              (out / "head_pose.csv").string().c_str());
+  // Beside a synthetic performance: how close the track is.
+  const std::filesystem::path truthFile = m.file.parent_path() / "truth_weights.csv";
+  if (std::filesystem::exists(truthFile)) {
+    const WeightSequence truth = readWeightsCsv(truthFile, model.targetNames);
+    double squares = 0.0, vertexMm = 0.0;
+    const size_t n = std::min(truth.size(), weights.size());
+    for (size_t i = 0; i < n; ++i) {
+      squares += (weights[i] - truth[i]).squaredNorm() / double(model.targetCount());
+      const std::vector<Vec3d> a = model.positions(weights[i]), b = model.positions(truth[i]);
+      double s = 0.0;
+      for (size_t v = 0; v < a.size(); ++v) s += (a[v] - b[v]).squaredNorm();
+      vertexMm += 1e3 * std::sqrt(s / double(a.size())) / double(n);
+    }
+    std::printf("against truth_weights.csv: weight RMSE %.4f, mean vertex error %.3f mm\n", std::sqrt(squares / double(n)),
+                vertexMm);
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+int runTrack(const TrackOptions& o) {
+  try {
+    if (o.performance.empty() == o.synthesize.empty())
+      throw InputError("give a performance.json to track, or --synthesize FOLDER (not both)");
+    const BlendshapeModel model = blendshapeModelOf(loadGltfAsset(assetPath(o)), o.part);
+    return o.synthesize.empty() ? track(o, model) : synthesize(o, model);
+  } catch (const InputError& e) {
+    std::fprintf(stderr, "lacrima track: %s\n", e.what());
+    return kExitBadInput;
+  }
+}
+
+}  // namespace lacrima::cli

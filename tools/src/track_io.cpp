@@ -1,0 +1,214 @@
+// The files of `lacrima track`; see track_io.hpp.
+#include "track_io.hpp"
+
+#include <OpenImageIO/imageio.h>
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <numbers>
+#include <sstream>
+
+#include "atomic_write.hpp"
+#include "lacrima/geometry/error.hpp"
+#include "lacrima/scenes/shot.hpp"
+
+namespace lacrima::cli {
+
+namespace {
+
+using Json = nlohmann::json;
+
+double number(const Json& object, const char* key, const std::filesystem::path& file, double low, double high) {
+  if (!object.contains(key) || !object[key].is_number())
+    throw InputError(fmt::format("{}: '{}' must be a number", file.string(), key));
+  const double value = object[key].get<double>();
+  if (!(value >= low && value <= high))
+    throw InputError(fmt::format("{}: '{}' is {}, expected a number in [{}, {}]", file.string(), key, value, low, high));
+  return value;
+}
+
+std::vector<std::string> splitCsvLine(const std::string& line) {
+  std::vector<std::string> cells;
+  std::stringstream in(line);
+  for (std::string cell; std::getline(in, cell, ',');) cells.push_back(cell);
+  return cells;
+}
+
+}  // namespace
+
+PerformanceManifest readPerformanceManifest(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  if (!in) throw InputError(fmt::format("cannot open the performance '{}'", file.string()));
+  Json json;
+  try {
+    json = Json::parse(in, nullptr, true, true);
+  } catch (const Json::parse_error& e) {
+    throw InputError(fmt::format("{}: not JSON: {}", file.string(), e.what()));
+  }
+  if (!json.is_object()) throw InputError(fmt::format("{}: expected a JSON object", file.string()));
+  PerformanceManifest m;
+  m.file = file;
+  m.fps = json.contains("fps") ? number(json, "fps", file, 1, 1000) : 30.0;
+  if (!json.contains("frames") || !json["frames"].is_object())
+    throw InputError(fmt::format("{}: 'frames' must be {{\"start\": first, \"end\": last}}", file.string()));
+  m.firstFrame = int(number(json["frames"], "start", file, -1e6, 1e6));
+  m.lastFrame = int(number(json["frames"], "end", file, m.firstFrame, 1e6));
+  if (!json.contains("camera") || !json["camera"].is_object())
+    throw InputError(fmt::format("{}: 'camera' must give width, height, fx, fy, cx and cy", file.string()));
+  const Json& c = json["camera"];
+  m.camera.width = int(number(c, "width", file, 8, 16384));
+  m.camera.height = int(number(c, "height", file, 8, 16384));
+  m.camera.fx = number(c, "fx", file, 1, 1e6);
+  m.camera.fy = number(c, "fy", file, 1, 1e6);
+  m.camera.cx = number(c, "cx", file, 0, m.camera.width);
+  m.camera.cy = number(c, "cy", file, 0, m.camera.height);
+  if (!json.contains("depth") || !json["depth"].is_string())
+    throw InputError(fmt::format("{}: 'depth' must be the depth EXRs' path pattern, e.g. \"depth.####.exr\"", file.string()));
+  m.depthPattern = (file.parent_path() / json["depth"].get<std::string>()).string();
+  if (json.contains("landmarks")) {
+    if (!json["landmarks"].is_string()) throw InputError(fmt::format("{}: 'landmarks' must be a CSV file name", file.string()));
+    m.landmarks = file.parent_path() / json["landmarks"].get<std::string>();
+  }
+  return m;
+}
+
+void writePerformanceManifest(const PerformanceManifest& m) {
+  const Json json = {{"version", 1},
+                     {"fps", m.fps},
+                     {"frames", {{"start", m.firstFrame}, {"end", m.lastFrame}}},
+                     {"camera", {{"width", m.camera.width}, {"height", m.camera.height}, {"fx", m.camera.fx},
+                                 {"fy", m.camera.fy}, {"cx", m.camera.cx}, {"cy", m.camera.cy}}},
+                     {"depth", std::filesystem::path(m.depthPattern).filename().string()},
+                     {"landmarks", m.landmarks.filename().string()}};
+  writeFileAtomically(m.file, "the performance", [&](std::ostream& out) { out << json.dump(2) << "\n"; });
+}
+
+tracking::DepthFrame readDepthExr(const std::filesystem::path& file, const tracking::PinholeCamera& camera) {
+  auto input = OIIO::ImageInput::open(file.string());
+  if (!input) throw InputError(fmt::format("cannot read the depth map '{}': {}", file.string(), OIIO::geterror()));
+  const OIIO::ImageSpec& spec = input->spec();
+  if (spec.width != camera.width || spec.height != camera.height)
+    throw InputError(fmt::format("{}: {}x{} pixels, but the performance's camera is {}x{}", file.string(), spec.width,
+                                 spec.height, camera.width, camera.height));
+  int channel = 0;
+  for (int c = 0; c < spec.nchannels; ++c)
+    if (spec.channelnames[size_t(c)] == "Z") channel = c;
+  std::vector<float> pixels(size_t(spec.width) * size_t(spec.height));
+  if (!input->read_image(0, 0, channel, channel + 1, OIIO::TypeDesc::FLOAT, pixels.data()))
+    throw InputError(fmt::format("cannot read the depth map '{}': {}", file.string(), input->geterror()));
+  tracking::DepthFrame frame(camera);
+  for (int y = 0; y < camera.height; ++y)
+    for (int x = 0; x < camera.width; ++x) {
+      const float z = pixels[size_t(y) * size_t(camera.width) + size_t(x)];
+      frame.setDepth(x, y, std::isfinite(z) && z > 0.0f ? z : 0.0f);
+    }
+  return frame;
+}
+
+void writeDepthExr(const std::filesystem::path& file, const tracking::DepthFrame& frame) {
+  const tracking::PinholeCamera& camera = frame.camera();
+  OIIO::ImageSpec spec(camera.width, camera.height, 1, OIIO::TypeDesc::FLOAT);
+  spec.channelnames = {"Z"};
+  std::filesystem::create_directories(file.parent_path());
+  const std::string temporary = file.string() + ".tmp.exr";
+  auto output = OIIO::ImageOutput::create(temporary);
+  if (!output || !output->open(temporary, spec) || !output->write_image(OIIO::TypeDesc::FLOAT, frame.depths().data()) ||
+      !output->close())
+    throw InputError(fmt::format("cannot write the depth map '{}': {}", file.string(), OIIO::geterror()));
+  std::filesystem::rename(temporary, file);
+}
+
+LandmarkTrack readLandmarksCsv(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  if (!in) throw InputError(fmt::format("cannot open the landmarks '{}'", file.string()));
+  std::string line;
+  std::getline(in, line);
+  if (line.rfind("frame,landmark,u,v", 0) != 0)
+    throw InputError(fmt::format("{}:1: expected the header 'frame,landmark,u,v'", file.string()));
+  LandmarkTrack track;
+  for (int row = 2; std::getline(in, line); ++row) {
+    if (line.empty()) continue;
+    const std::vector<std::string> cells = splitCsvLine(line);
+    try {
+      if (cells.size() != 4) throw std::invalid_argument("cells");
+      const int frame = std::stoi(cells[0]), landmark = std::stoi(cells[1]);
+      if (landmark < 0 || landmark >= 68) throw std::out_of_range("landmark");
+      auto& points = track[frame];
+      if (points.empty()) points.assign(68, Eigen::Vector2d::Constant(std::numeric_limits<double>::quiet_NaN()));
+      points[size_t(landmark)] = Eigen::Vector2d(std::stod(cells[2]), std::stod(cells[3]));
+    } catch (const std::exception&) {
+      throw InputError(fmt::format("{}:{}: expected 'frame,landmark,u,v' with a landmark in 0-67, found '{}'", file.string(), row, line));
+    }
+  }
+  return track;
+}
+
+void writeLandmarksCsv(const std::filesystem::path& file, const LandmarkTrack& track) {
+  writeFileAtomically(file, "the landmarks", [&](std::ostream& out) {
+    out << "frame,landmark,u,v\n";
+    for (const auto& [frame, points] : track)
+      for (size_t l = 0; l < points.size(); ++l)
+        if (points[l].allFinite()) out << fmt::format("{},{},{:.3f},{:.3f}\n", frame, l, points[l].x(), points[l].y());
+  });
+}
+
+void writeWeightsCsv(const std::filesystem::path& file, const std::vector<std::string>& names, int firstFrame,
+                     const tracking::WeightSequence& weights) {
+  writeFileAtomically(file, "the weight track", [&](std::ostream& out) {
+    out << "frame";
+    for (const std::string& n : names) out << "," << n;
+    out << "\n";
+    for (size_t i = 0; i < weights.size(); ++i) {
+      out << firstFrame + int(i);
+      for (long k = 0; k < weights[i].size(); ++k) out << fmt::format(",{:.5f}", weights[i][k]);
+      out << "\n";
+    }
+  });
+}
+
+tracking::WeightSequence readWeightsCsv(const std::filesystem::path& file, const std::vector<std::string>& names) {
+  std::ifstream in(file);
+  if (!in) throw InputError(fmt::format("cannot open the weight track '{}'", file.string()));
+  std::string line;
+  std::getline(in, line);
+  const std::vector<std::string> header = splitCsvLine(line);
+  std::vector<long> column(names.size(), -1);
+  for (size_t c = 1; c < header.size(); ++c)
+    for (size_t k = 0; k < names.size(); ++k)
+      if (header[c] == names[k]) column[k] = long(c);
+  tracking::WeightSequence out;
+  for (int row = 2; std::getline(in, line); ++row) {
+    if (line.empty()) continue;
+    const std::vector<std::string> cells = splitCsvLine(line);
+    Eigen::VectorXd w = Eigen::VectorXd::Zero(long(names.size()));
+    for (size_t k = 0; k < names.size(); ++k)
+      if (column[k] > 0 && size_t(column[k]) < cells.size()) w[long(k)] = std::stod(cells[size_t(column[k])]);
+    out.push_back(w);
+  }
+  return out;
+}
+
+void writeHeadPoseCsv(const std::filesystem::path& file, int firstFrame, const std::vector<Eigen::Isometry3d>& poses) {
+  writeFileAtomically(file, "the head pose", [&](std::ostream& out) {
+    out << "frame,rx,ry,rz,tx,ty,tz\n";
+    if (poses.empty()) return;
+    const Eigen::Isometry3d first = poses.front();
+    for (size_t i = 0; i < poses.size(); ++i) {
+      // The motion in the asset's axes: first^-1 * pose maps the asset at frame 0 to frame i.
+      const Eigen::Isometry3d motion = first.inverse() * poses[i];
+      // R = Rz Ry Rx (x first), angles within (-180, 180] x [-90, 90] x (-180, 180].
+      const Eigen::Matrix3d& r = motion.linear();
+      const double degree = 180.0 / std::numbers::pi;
+      const double rx = std::atan2(r(2, 1), r(2, 2)) * degree, ry = std::asin(std::clamp(-r(2, 0), -1.0, 1.0)) * degree;
+      const double rz = std::atan2(r(1, 0), r(0, 0)) * degree;
+      out << fmt::format("{},{:.4f},{:.4f},{:.4f},{:.6f},{:.6f},{:.6f}\n", firstFrame + int(i), rx, ry, rz,
+                         motion.translation().x(), motion.translation().y(), motion.translation().z());
+    }
+  });
+}
+
+}  // namespace lacrima::cli

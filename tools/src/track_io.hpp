@@ -1,0 +1,51 @@
+#pragma once
+// The files of `lacrima track`: a recorded performance (a manifest naming the depth camera, the
+// per-frame depth EXRs and the landmarks CSV), and the tracks it writes (a weight track in the
+// shot format's `performance` CSV, and the head pose per frame).
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "lacrima/tracking/animation_prior.hpp"
+#include "lacrima/tracking/depth_frame.hpp"
+
+namespace lacrima::cli {
+
+// performance.json: {"version": 1, "fps": 30, "frames": {"start": 1, "end": 40},
+//   "camera": {"width", "height", "fx", "fy", "cx", "cy"}, "depth": "depth.####.exr",
+//   "landmarks": "landmarks.csv"} (files relative to the manifest; landmarks optional).
+struct PerformanceManifest {
+  std::filesystem::path file;
+  double fps = 30.0;
+  int firstFrame = 1, lastFrame = 1;
+  tracking::PinholeCamera camera;
+  std::string depthPattern;          // resolved; '#'s are the frame number
+  std::filesystem::path landmarks;   // resolved; empty: none
+};
+
+// Reads and checks a manifest; throws InputError naming the file and the key.
+PerformanceManifest readPerformanceManifest(const std::filesystem::path& file);
+void writePerformanceManifest(const PerformanceManifest& manifest);
+
+// A depth EXR: one float channel (named Z, or the first), metres, 0 = no measurement, of the
+// camera's size. Throws InputError naming the file.
+tracking::DepthFrame readDepthExr(const std::filesystem::path& file, const tracking::PinholeCamera& camera);
+void writeDepthExr(const std::filesystem::path& file, const tracking::DepthFrame& frame);
+
+// landmarks.csv: "frame,landmark,u,v" (pixels, iBUG 68 numbering); per frame, 68 points (NaN
+// where a landmark is missing).
+using LandmarkTrack = std::map<int, std::vector<Eigen::Vector2d>>;
+LandmarkTrack readLandmarksCsv(const std::filesystem::path& file);
+void writeLandmarksCsv(const std::filesystem::path& file, const LandmarkTrack& track);
+
+// The shot format's performance CSV: "frame,<target>,..." one row per frame.
+void writeWeightsCsv(const std::filesystem::path& file, const std::vector<std::string>& names, int firstFrame,
+                     const tracking::WeightSequence& weights);
+tracking::WeightSequence readWeightsCsv(const std::filesystem::path& file, const std::vector<std::string>& names);
+
+// The head pose per frame: "frame,rx,ry,rz,tx,ty,tz", the head's motion since the first frame in
+// the asset's own axes (Euler degrees, x first, as the rig's head channels; metres).
+void writeHeadPoseCsv(const std::filesystem::path& file, int firstFrame, const std::vector<Eigen::Isometry3d>& poses);
+
+}  // namespace lacrima::cli
