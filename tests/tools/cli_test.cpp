@@ -380,11 +380,11 @@ TEST_F(CliOptions, UnknownSubcommandOrOption) {
   auto run = lacrima({"frobnicate", drops_});
   EXPECT_EQ(run.exitStatus, 2);
   EXPECT_EQ(run.output,
-            "lacrima: unknown subcommand 'frobnicate' (expected a subcommand: render, check, info, bench, export, diff, test-suite, farm, flood)\n" + kHint);
+            "lacrima: unknown subcommand 'frobnicate' (expected a subcommand: render, check, info, bench, export, diff, test-suite, farm, flood, track)\n" + kHint);
   run = lacrima({"--bogus"});
   EXPECT_EQ(run.exitStatus, 2);
   EXPECT_EQ(run.output,
-            "lacrima: unknown option '--bogus' (expected a subcommand: render, check, info, bench, export, diff, test-suite, farm, flood)\n" + kHint);
+            "lacrima: unknown option '--bogus' (expected a subcommand: render, check, info, bench, export, diff, test-suite, farm, flood, track)\n" + kHint);
   run = lacrima({});
   EXPECT_EQ(run.exitStatus, 2);
   EXPECT_EQ(run.output, "A subcommand is required\n" + kHint);

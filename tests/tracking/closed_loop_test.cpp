@@ -78,14 +78,8 @@ TEST(ClosedLoop, TheFirstFramesPoseComesFromTheLandmarksAndTheirDepth) {
 
 TEST(ClosedLoop, ThePriorAndTheFilterMakeATrackedPerformanceCloserAndSteadier) {
   const BlendshapeModel& model = test::ictModel();
+  const AnimationPrior prior = archetypalPrior(model.targetNames);
   const std::vector<Eigen::VectorXd> expressions = archetypalExpressions(model.targetNames);
-  std::vector<WeightSequence> training;
-  for (uint64_t s = 0; s < 30; ++s) training.push_back(keyedPerformance(expressions, 120, 1000 + s));
-  AnimationPriorParams priorParams;
-  priorParams.components = 10;
-  priorParams.restarts = 1;
-  priorParams.iterations = 30;
-  const AnimationPrior prior = AnimationPrior::train(training, priorParams);
   const WeightSequence truth = keyedPerformance(expressions, kFrames, 77);
   const Errors plain = trackPerformance(nullptr, false, truth), seed = trackPerformance(&prior, true, truth);
   for (const auto& [name, e] : {std::pair{"without prior and filter", plain}, std::pair{"with both", seed}})

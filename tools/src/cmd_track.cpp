@@ -90,23 +90,10 @@ int synthesize(const TrackOptions& o, const BlendshapeModel& model) {
   return kExitOk;
 }
 
-// The prior lacrima trains when no animations are given: 30 keyed performances of 120 frames
-// blending the archetypal expressions (docs/tracking.md, "Training data").
-AnimationPrior defaultPrior(const BlendshapeModel& model) {
-  const std::vector<Eigen::VectorXd> expressions = archetypalExpressions(model.targetNames);
-  std::vector<WeightSequence> training;
-  for (uint64_t s = 0; s < 30; ++s) training.push_back(keyedPerformance(expressions, 120, 1000 + s));
-  AnimationPriorParams params;
-  params.components = 10;
-  params.restarts = 1;
-  params.iterations = 30;
-  return AnimationPrior::train(training, params);
-}
-
 int track(const TrackOptions& o, const BlendshapeModel& model) {
   const PerformanceManifest m = readPerformanceManifest(o.performance);
   const LandmarkTrack landmarks = m.landmarks.empty() ? LandmarkTrack{} : readLandmarksCsv(m.landmarks);
-  const std::optional<AnimationPrior> prior = o.noPrior ? std::nullopt : std::optional(defaultPrior(model));
+  const std::optional<AnimationPrior> prior = o.noPrior ? std::nullopt : std::optional(archetypalPrior(model.targetNames));
   TrackerParams params;
   params.filterPose = !o.noFilter;
   params.upperFaceAbove = noseTipHeight(model);

@@ -291,4 +291,15 @@ std::vector<Eigen::VectorXd> archetypalExpressions(const std::vector<std::string
   return out;
 }
 
+AnimationPrior archetypalPrior(const std::vector<std::string>& targetNames) {
+  const std::vector<Eigen::VectorXd> expressions = archetypalExpressions(targetNames);
+  std::vector<WeightSequence> training;
+  for (uint64_t s = 0; s < 30; ++s) training.push_back(keyedPerformance(expressions, 120, 1000 + s));
+  AnimationPriorParams params;
+  params.components = 10;
+  params.restarts = 1;
+  params.iterations = 30;
+  return AnimationPrior::train(training, params);
+}
+
 }  // namespace lacrima::tracking

@@ -88,4 +88,9 @@ WeightSequence keyedPerformance(const std::vector<Eigen::VectorXd>& expressions,
 // the names do not have are left out.
 std::vector<Eigen::VectorXd> archetypalExpressions(const std::vector<std::string>& targetNames);
 
+// The prior lacrima trains when a production gives no animations: 30 keyed performances of 120
+// frames blending the archetypal expressions, 10 analysers, one EM start of 30 iterations (about
+// 0.1 s for the ICT face's 57 targets; docs/tracking.md, "Training data").
+AnimationPrior archetypalPrior(const std::vector<std::string>& targetNames);
+
 }  // namespace lacrima::tracking
