@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <numbers>
 
+#include "atomic_write.hpp"
 #include "commands.hpp"
 #include "lacrima/geometry/error.hpp"
 #include "lacrima/scenes/shot.hpp"
@@ -58,6 +59,30 @@ std::vector<Eigen::Vector2d> projectedLandmarks(const BlendshapeModel& model, co
   return out;
 }
 
+// A shot that renders the face playing `weights.csv` from (0, 0, distance) with the pinhole
+// camera's vertical field of view, so that its Z AOV is the camera's depth map.
+std::string captureShot(const TrackOptions& o, const PinholeCamera& camera, int frames, double fps, double distance) {
+  const double fov = 2.0 * std::atan(0.5 * camera.height / camera.fy) * 180.0 / std::numbers::pi;
+  return fmt::format(R"({{
+  // Written by `lacrima track --synthesize --render`: the face playing truth_weights.csv, seen by the
+  // performance's depth camera (its Z AOV is the depth map; {}x{}, vertical field of view {:.4f} degrees).
+  "version": 1,
+  "frames": {{"start": 1, "end": {}, "fps": {}}},
+  "output": "render.####.exr",
+  "render": {{"width": {}, "height": {}, "spp": 4, "maxDepth": 2, "seed": {}}},
+  "camera": {{"position": [0, 0, {}], "lookAt": [0, 0, 0], "fov": {:.6f}}},
+  "materials": {{"skin": {{"type": "diffuse", "albedo": [0.6, 0.45, 0.4]}}}},
+  "lights": [{{"type": "sphere", "center": [0.3, 0.4, 0.8], "radius": 0.05, "power": 40}}],
+  "assets": [{{"name": "face", "file": "{}", "materials": {{"{}": "skin"}},
+              // The real-time helper shells over the eyes are not surfaces a sensor sees.
+              "hide": ["M_EyeBlend", "M_EyeOcclusion"],
+              "performance": {{"file": "truth_weights.csv", "fps": {}}}}}]
+}}
+)",
+                     camera.width, camera.height, fov, frames, fps, camera.width, camera.height, o.seed, distance, fov,
+                     assetPath(o).string(), o.part, fps);
+}
+
 int synthesize(const TrackOptions& o, const BlendshapeModel& model) {
   const std::filesystem::path dir = o.synthesize;
   PerformanceManifest m;
@@ -67,26 +92,42 @@ int synthesize(const TrackOptions& o, const BlendshapeModel& model) {
   m.depthPattern = (dir / "depth.####.exr").string();
   m.landmarks = dir / "landmarks.csv";
   const WeightSequence truth = keyedPerformance(archetypalExpressions(model.targetNames), o.frames, o.seed);
+  writeWeightsCsv(dir / "truth_weights.csv", model.targetNames, m.firstFrame, truth);
+  if (o.render) {
+    // The face rendered by the path tracer, every primitive of the asset in view; its Z AOV is read
+    // back below as the sensor's depth.
+    writeFileAtomically(dir / "capture.json", "the capture shot",
+                        [&](std::ostream& out) { out << captureShot(o, m.camera, o.frames, m.fps, 0.7); });
+    RenderOptions render;
+    render.shotPath = (dir / "capture.json").string();
+    render.quiet = true;
+    if (const int status = runRender(render); status != kExitOk) return status;
+  }
   LandmarkTrack landmarks;
   std::vector<Eigen::Isometry3d> poses;
   for (int i = 0; i < o.frames; ++i) {
     const int frame = m.firstFrame + i;
-    const Eigen::Isometry3d pose = syntheticHeadPose(double(i) / m.fps);
-    TriangleMesh mesh = model.shape(truth[size_t(i)]);
-    transformMesh(mesh, Affine3(pose.cast<float>().matrix()));
-    DepthFrame depth = rasterizeDepth(mesh, m.camera);
+    const Eigen::Isometry3d pose = syntheticHeadPose(o.render ? 0.0 : double(i) / m.fps);
+    DepthFrame depth(m.camera);
+    if (o.render) {
+      depth = readDepthExr(expandFramePattern((dir / "render.####.exr").string(), frame), m.camera);
+    } else {
+      TriangleMesh mesh = model.shape(truth[size_t(i)]);
+      transformMesh(mesh, Affine3(pose.cast<float>().matrix()));
+      depth = rasterizeDepth(mesh, m.camera);
+    }
     addSensorNoise(depth, o.noise, hashCombine(o.seed, uint64_t(frame)));
     writeDepthExr(expandFramePattern(m.depthPattern, frame), depth);
     landmarks[frame] = projectedLandmarks(model, truth[size_t(i)], pose, m.camera, o.landmarkNoise, hashCombine(o.seed, uint64_t(frame) + 7));
     poses.push_back(pose);
   }
   writeLandmarksCsv(m.landmarks, landmarks);
-  writeWeightsCsv(dir / "truth_weights.csv", model.targetNames, m.firstFrame, truth);
   writeHeadPoseCsv(dir / "truth_head_pose.csv", m.firstFrame, poses);
   writePerformanceManifest(m);
-  std::printf("synthesized %d frames of %s (depth noise x%g, landmarks +-%g px) in %s: performance.json, depth.####.exr, "
-              "landmarks.csv, truth_weights.csv, truth_head_pose.csv\n",
-              o.frames, assetPath(o).filename().string().c_str(), o.noise, o.landmarkNoise, dir.string().c_str());
+  std::printf("synthesized %d frames of %s (depth %s, noise x%g; landmarks +-%g px) in %s: performance.json, "
+              "depth.####.exr, landmarks.csv, truth_weights.csv, truth_head_pose.csv\n",
+              o.frames, assetPath(o).filename().string().c_str(), o.render ? "rendered by lacrima (Z AOV), the head still" : "rasterised",
+              o.noise, o.landmarkNoise, dir.string().c_str());
   return kExitOk;
 }
 

@@ -234,6 +234,8 @@ const char* kTrackExamples =
     "  lacrima track --synthesize /tmp/perf --frames 60\n"
     "      a synthetic performance of the ICT face: depth EXRs with a Kinect's noise, 68 landmarks,\n"
     "      and the truth it was made from (truth_weights.csv, truth_head_pose.csv)\n"
+    "  lacrima track --synthesize /tmp/perf --render --frames 30\n"
+    "      the same with the depth rendered by lacrima itself (capture.json's Z AOV)\n"
     "  lacrima track /tmp/perf/performance.json --out /tmp/track\n"
     "      track it: /tmp/track/weights.csv (play it in a shot: \"performance\": {\"file\": ...})\n"
     "      and /tmp/track/head_pose.csv; beside a synthetic performance, the errors against its truth\n"
@@ -263,6 +265,9 @@ void addTrack(CLI::App& app, TrackOptions& o) {
   track->add_option("--landmark-noise", o.landmarkNoise, "--synthesize: landmarks jittered by up to this many pixels (default 1)")
       ->check(CLI::Range(0.0, 100.0));
   track->add_option("--seed", o.seed, "--synthesize: the performance's and the noise's seed (default 1)");
+  track->add_flag("--render", o.render,
+                  "--synthesize: the depth from lacrima's own path tracer (the Z AOV of capture.json, every part of "
+                  "the face in view) instead of a z-buffer of the tracked primitive; the head held still");
   track->add_flag("--no-prior", o.noPrior, "Fit without the animation prior");
   track->add_flag("--no-filter", o.noFilter, "Do not filter the head pose");
   track->callback([&o] { throw CLI::RuntimeError(runTrack(o)); });

@@ -67,12 +67,18 @@ struct NormalEquations {
 };
 
 // The depth term's rows: per vertex facing the camera whose ray meets the measured surface within
-// maxDistance, r = n . (p - q) / sigma and its row n^T R B_i / sigma.
+// maxDistance, r = n . (p - q) / sigma and its row n^T R B_i / sigma. As in the rigid stage, pairs
+// further apart than three times the median (at least 2 mm) are dropped: a lid's rim meeting the
+// eyeball behind it, the jaw's edge meeting the neck.
 double addDepthRows(const BlendshapeModel& model, const TriangleMesh& posedShape, const std::vector<Vec3d>& modelPositions,
                     const DepthFrame& frame, const Eigen::Isometry3d& pose, const BlendshapeFitParams& params,
                     NormalEquations& equations, int& pairs) {
-  double squared = 0.0;
-  pairs = 0;
+  struct Pair {
+    size_t vertex;
+    Vec3d n;
+    double residual, distance;
+  };
+  std::vector<Pair> candidates;
   const Eigen::Matrix3d rotation = pose.linear();
   for (size_t v = 0; v < modelPositions.size(); ++v) {
     const Vec3d p = pose * modelPositions[v];
@@ -81,10 +87,21 @@ double addDepthRows(const BlendshapeModel& model, const TriangleMesh& posedShape
     const Eigen::Vector2d pixel = frame.camera().project(p);
     const auto q = frame.pointAt(pixel.x(), pixel.y());
     if (!q || (*q - p).norm() > params.maxDistance) continue;
-    const double r = n.dot(p - *q);
-    const Eigen::RowVectorXd row = (n.transpose() * rotation) * model.deltas.middleRows<3>(3 * long(v)) / params.sigmaGeometry;
-    equations.add(row, r / params.sigmaGeometry);
-    squared += r * r;
+    candidates.push_back({v, n, n.dot(p - *q), (*q - p).norm()});
+  }
+  pairs = 0;
+  if (candidates.empty()) return 0.0;
+  std::vector<double> distances;
+  for (const Pair& c : candidates) distances.push_back(c.distance);
+  std::nth_element(distances.begin(), distances.begin() + long(distances.size() / 2), distances.end());
+  const double cut = std::max(0.002, 3.0 * distances[distances.size() / 2]);
+  double squared = 0.0;
+  for (const Pair& c : candidates) {
+    if (c.distance > cut) continue;
+    const Eigen::RowVectorXd row =
+        (c.n.transpose() * rotation) * model.deltas.middleRows<3>(3 * long(c.vertex)) / params.sigmaGeometry;
+    equations.add(row, c.residual / params.sigmaGeometry);
+    squared += c.residual * c.residual;
     ++pairs;
   }
   return pairs > 0 ? std::sqrt(squared / pairs) : 0.0;
