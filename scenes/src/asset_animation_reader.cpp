@@ -237,10 +237,24 @@ void readPerformance(ObjectReader& asset, ShotAsset& out, const AssetAnimationCo
   const std::filesystem::path path(*file);
   performance.file = (path.is_absolute() ? path : context.baseDir / path).lexically_normal();
   try {
-    PerformanceTrack track = resampleTrack(readPerformanceTrack(performance.file, out.gltf->targetNames, options),
-                                           float(context.fps));
+    // Columns are blendshapes, or a rig's joint channels (a tracker's head pose), which need a rig.
+    const std::vector<std::string> jointNames = FaceControls::jointChannelNames(eyeNames(out));
+    std::vector<std::string> validNames = out.gltf->targetNames;
+    validNames.insert(validNames.end(), jointNames.begin(), jointNames.end());
+    PerformanceTrack track = resampleTrack(readPerformanceTrack(performance.file, validNames, options), float(context.fps));
+    for (const std::string& name : track.names)
+      if (!out.rig && !indexOf(out.gltf->targetNames, name)) {
+        o.error("file", fmt::format("{}: the column '{}' is a joint channel: it needs a 'rig' on the asset (for example "
+                                    "\"rig\": {{\"preset\": \"ict\"}})",
+                                    performance.file.string(), name));
+        return;
+      }
     performance.samples = filter ? adaptiveTemporalFilter(track.frames, *filter) : std::move(track.frames);
-    for (const std::string& name : track.names) performance.targets.push_back(*indexOf(out.gltf->targetNames, name));
+    for (const std::string& name : track.names) {
+      const auto target = indexOf(out.gltf->targetNames, name);
+      performance.targets.push_back(target ? *target : ShotPerformance::kNone);
+      performance.joints.push_back(target ? ShotPerformance::kNone : *indexOf(jointNames, name));
+    }
   } catch (const InputError& e) {
     o.error("file", fmt::format("cannot use the performance track: {}", e.what()));
     return;

@@ -53,6 +53,8 @@ AssetPose assetPoseAt(const ShotAsset& asset, double frame) {
   }
   for (float& w : pose.blendshapeWeights) w = std::clamp(w, 0.0f, 1.0f);
   for (const AssetChannel& c : asset.joints) addJointChannel(pose, c.index, c.value.at(frame));
+  if (asset.performance)
+    for (const auto& [channel, value] : asset.performance->jointsAt(frame)) addJointChannel(pose, channel, value);
   if (asset.rig) pose.eyeEulerDegrees.resize(asset.rig->config().eyes.size(), Vec3::Zero());
   return out;
 }

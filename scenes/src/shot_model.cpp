@@ -35,15 +35,35 @@ double ShotGltfAnimation::secondsAt(double frame) const {
   return std::clamp(t, 0.0, duration);
 }
 
+namespace {
+
+// The samples around `frame` (linear between them, held before the first and after the last).
+struct SamplePair {
+  size_t i0, i1;
+  float t;
+};
+SamplePair samplesAround(const ShotPerformance& p, double frame) {
+  const double position = std::clamp(frame - p.startFrame, 0.0, double(p.samples.size() - 1));
+  const size_t i0 = size_t(position);
+  return {i0, std::min(i0 + 1, p.samples.size() - 1), float(position - double(i0))};
+}
+
+}  // namespace
+
 void ShotPerformance::addWeightsAt(double frame, std::vector<float>& weights) const {
   if (samples.empty()) return;
-  // Linear between the samples around the time, held before the first and after the last.
-  const double position = std::clamp(frame - startFrame, 0.0, double(samples.size() - 1));
-  const size_t i0 = size_t(position);
-  const size_t i1 = std::min(i0 + 1, samples.size() - 1);
-  const float t = float(position - double(i0));
+  const auto [i0, i1, t] = samplesAround(*this, frame);
   for (size_t c = 0; c < targets.size(); ++c)
-    weights[targets[c]] += (1.0f - t) * samples[i0][c] + t * samples[i1][c];
+    if (targets[c] != kNone) weights[targets[c]] += (1.0f - t) * samples[i0][c] + t * samples[i1][c];
+}
+
+std::vector<std::pair<size_t, float>> ShotPerformance::jointsAt(double frame) const {
+  std::vector<std::pair<size_t, float>> out;
+  if (samples.empty()) return out;
+  const auto [i0, i1, t] = samplesAround(*this, frame);
+  for (size_t c = 0; c < joints.size(); ++c)
+    if (joints[c] != kNone) out.emplace_back(joints[c], (1.0f - t) * samples[i0][c] + t * samples[i1][c]);
+  return out;
 }
 
 Affine3 ShotTransform::matrix() const {

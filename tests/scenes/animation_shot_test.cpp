@@ -125,6 +125,27 @@ TEST(AnimatedShot, PerformanceTrackInJsonWithANameMap) {
   expectPositionsNear(faceMesh(buildFrame(shot, 2), shot).mesh.positions, expected.positions, 1e-5f);
 }
 
+TEST(AnimatedShot, APerformanceTracksHeadChannelsTurnTheHeadThroughTheRig) {
+  // A tracker's output (lacrima track's performance.csv): weights and the rig's head channels.
+  const auto dir = writeShot("placeholder.json", "").parent_path();
+  std::ofstream(dir / "tracked.csv") << "frame,jawOpen,head.ry,head.tx\n1,0,0,0\n5,0.4,8,0.01\n";
+  const Shot shot = loadShot(writeShot("tracked.json", faceShot(R"("rig": {"preset": "ict"},
+      "performance": {"file": "tracked.csv", "fps": 24})")));
+  const GltfAsset& gltf = *shot.assets[0].gltf;
+  const FaceRig rig(gltf, ictFaceRigConfig(gltf));
+  FacePose pose;
+  pose.blendshapeWeights = weightsWith(gltf, {{"jawOpen", 0.2f}});
+  pose.head.eulerDegrees = Vec3(0, 4, 0);
+  pose.head.translation = Vec3(0.005f, 0, 0);
+  // Frame 3 is halfway between the two samples.
+  expectPositionsNear(faceMesh(buildFrame(shot, 3), shot).mesh.positions,
+                      rig.evaluatePrimitive(facePrimitive(gltf), pose).positions, 1e-5f);
+  // Without a rig the head channels are an error naming the column and what it needs.
+  const std::string message = shotErrorOf(writeShot("tracked_no_rig.json", faceShot(R"("performance": {"file": "tracked.csv"})")));
+  EXPECT_NE(message.find("the column 'head.ry' is a joint channel: it needs a 'rig' on the asset"), std::string::npos)
+      << message;
+}
+
 TEST(AnimatedShot, ShutterGivesMovingGeometryItsPositionsAtClose) {
   const std::string drop =
       R"("shapes": [{"type": "sphere", "radius": 0.01, "material": "water", "center": {"keys": [[1, [0, 0, 0]], [5, [0, -0.4, 0]]], "interpolation": "linear"}}])";

@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <regex>
 #include <sstream>
 #include <string>
@@ -33,7 +34,7 @@ TEST(TrackCli, ASyntheticPerformanceIsTrackedBackAndItsTrackPlaysInAShot) {
   const auto made = lacrima("track --synthesize " + test::shellQuote((dir / "perf").string()) + " --frames 12 --seed 3");
   ASSERT_EQ(made.exitStatus, 0) << made.output;
   for (const char* file : {"performance.json", "depth.0001.exr", "depth.0012.exr", "landmarks.csv", "truth_weights.csv",
-                           "truth_head_pose.csv"})
+                           "truth_performance.csv"})
     EXPECT_TRUE(fs::exists(dir / "perf" / file)) << file;
   const auto tracked = lacrima("track " + test::shellQuote((dir / "perf" / "performance.json").string()) + " --out " +
                                test::shellQuote((dir / "track").string()));
@@ -45,9 +46,12 @@ TEST(TrackCli, ASyntheticPerformanceIsTrackedBackAndItsTrackPlaysInAShot) {
   EXPECT_LT(std::stod(match[1]), 0.06);
   EXPECT_LT(std::stod(match[2]), 1.0);
   EXPECT_EQ(firstLine(dir / "track" / "weights.csv").rfind("frame,browDown_L,browDown_R,", 0), 0u);
-  EXPECT_EQ(firstLine(dir / "track" / "head_pose.csv"), "frame,rx,ry,rz,tx,ty,tz");
+  const std::string performanceHeader = firstLine(dir / "track" / "performance.csv");
+  EXPECT_EQ(performanceHeader.rfind("frame,browDown_L,", 0), 0u);
+  EXPECT_TRUE(performanceHeader.ends_with(",head.rx,head.ry,head.rz,head.tx,head.ty,head.tz")) << performanceHeader;
 
-  // The track as a shot's performance: the shot loads and checks.
+  // The tracks as a shot's performance: the weights on any asset, the weights and head channels on
+  // one with a rig; the shots load and check.
   std::ofstream(dir / "tracked.json") << R"({
   "version": 1,
   "frames": {"start": 1, "end": 12, "fps": 30},
@@ -62,6 +66,13 @@ TEST(TrackCli, ASyntheticPerformanceIsTrackedBackAndItsTrackPlaysInAShot) {
 })";
   const auto checked = lacrima("check " + test::shellQuote((dir / "tracked.json").string()));
   EXPECT_EQ(checked.exitStatus, 0) << checked.output;
+  std::ifstream in(dir / "tracked.json");
+  std::string shot((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  shot.replace(shot.find("weights.csv"), 11, "performance.csv");
+  shot.replace(shot.find("\"performance\""), 13, "\"rig\": {\"preset\": \"ict\"}, \"performance\"");
+  std::ofstream(dir / "tracked_head.json") << shot;
+  const auto withHead = lacrima("check " + test::shellQuote((dir / "tracked_head.json").string()));
+  EXPECT_EQ(withHead.exitStatus, 0) << withHead.output;
 }
 
 TEST(TrackCli, APerformanceRenderedByLacrimaItselfIsTrackedBack) {

@@ -12,6 +12,7 @@
 #include "atomic_write.hpp"
 #include "commands.hpp"
 #include "lacrima/geometry/error.hpp"
+#include "lacrima/geometry/face_rig.hpp"
 #include "lacrima/scenes/shot.hpp"
 #include "lacrima/tracking/depth_sensor.hpp"
 #include "lacrima/tracking/initial_pose.hpp"
@@ -83,7 +84,23 @@ std::string captureShot(const TrackOptions& o, const PinholeCamera& camera, int 
                      assetPath(o).string(), o.part, fps);
 }
 
-int synthesize(const TrackOptions& o, const BlendshapeModel& model) {
+// The weights and the head's channels about the rig's head pivot, one CSV a shot plays on an asset
+// with a rig (`"rig": {"preset": "ict"}`).
+void writePerformanceCsv(const std::filesystem::path& file, const BlendshapeModel& model, const Vec3d& pivot,
+                         int firstFrame, const WeightSequence& weights, const std::vector<Eigen::Isometry3d>& poses) {
+  std::vector<std::string> names = model.targetNames;
+  names.insert(names.end(), headChannelNames().begin(), headChannelNames().end());
+  const WeightSequence head = headChannels(poses, pivot);
+  WeightSequence rows;
+  for (size_t i = 0; i < weights.size(); ++i) {
+    Eigen::VectorXd row(weights[i].size() + 6);
+    row << weights[i], head[i];
+    rows.push_back(row);
+  }
+  writeWeightsCsv(file, names, firstFrame, rows);
+}
+
+int synthesize(const TrackOptions& o, const BlendshapeModel& model, const Vec3d& headPivot) {
   const std::filesystem::path dir = o.synthesize;
   PerformanceManifest m;
   m.file = dir / "performance.json";
@@ -122,16 +139,16 @@ int synthesize(const TrackOptions& o, const BlendshapeModel& model) {
     poses.push_back(pose);
   }
   writeLandmarksCsv(m.landmarks, landmarks);
-  writeHeadPoseCsv(dir / "truth_head_pose.csv", m.firstFrame, poses);
+  writePerformanceCsv(dir / "truth_performance.csv", model, headPivot, m.firstFrame, truth, poses);
   writePerformanceManifest(m);
   std::printf("synthesized %d frames of %s (depth %s, noise x%g; landmarks +-%g px) in %s: performance.json, "
-              "depth.####.exr, landmarks.csv, truth_weights.csv, truth_head_pose.csv\n",
+              "depth.####.exr, landmarks.csv, truth_weights.csv, truth_performance.csv\n",
               o.frames, assetPath(o).filename().string().c_str(), o.render ? "rendered by lacrima (Z AOV), the head still" : "rasterised",
               o.noise, o.landmarkNoise, dir.string().c_str());
   return kExitOk;
 }
 
-int track(const TrackOptions& o, const BlendshapeModel& model) {
+int track(const TrackOptions& o, const BlendshapeModel& model, const Vec3d& headPivot) {
   const PerformanceManifest m = readPerformanceManifest(o.performance);
   const LandmarkTrack landmarks = m.landmarks.empty() ? LandmarkTrack{} : readLandmarksCsv(m.landmarks);
   const std::optional<AnimationPrior> prior = o.noPrior ? std::nullopt : std::optional(archetypalPrior(model.targetNames));
@@ -164,10 +181,10 @@ int track(const TrackOptions& o, const BlendshapeModel& model) {
   }
   const std::filesystem::path out = o.out;
   writeWeightsCsv(out / "weights.csv", model.targetNames, m.firstFrame, weights);
-  writeHeadPoseCsv(out / "head_pose.csv", m.firstFrame, poses);
-  std::printf("tracked %zu frames at %.1f frames a second (tracking alone, 1 thread) -> %s, %s\n", weights.size(),
+  writePerformanceCsv(out / "performance.csv", model, headPivot, m.firstFrame, weights, poses);
+  std::printf("tracked %zu frames at %.1f frames a second (tracking alone, 1 thread) -> %s, %s (with head.*)\n", weights.size(),
               double(weights.size()) / trackingSeconds, (out / "weights.csv").string().c_str(),
-              (out / "head_pose.csv").string().c_str());
+              (out / "performance.csv").string().c_str());
   // Beside a synthetic performance: how close the track is.
   const std::filesystem::path truthFile = m.file.parent_path() / "truth_weights.csv";
   if (std::filesystem::exists(truthFile)) {
@@ -193,8 +210,18 @@ int runTrack(const TrackOptions& o) {
   try {
     if (o.performance.empty() == o.synthesize.empty())
       throw InputError("give a performance.json to track, or --synthesize FOLDER (not both)");
-    const BlendshapeModel model = blendshapeModelOf(loadGltfAsset(assetPath(o)), o.part);
-    return o.synthesize.empty() ? track(o, model) : synthesize(o, model);
+    const GltfAsset asset = loadGltfAsset(assetPath(o));
+    const BlendshapeModel model = blendshapeModelOf(asset, o.part);
+    // The head turns about the rig's pivot: the ICT face's preset (the base of the face), else the
+    // asset's origin.
+    Vec3d headPivot = Vec3d::Zero();
+    try {
+      headPivot = ictFaceRigConfig(asset).headPivot.cast<double>();
+    } catch (const std::exception&) {
+      std::fprintf(stderr, "lacrima track: %s is not the ICT face: the head channels turn about the asset's origin\n",
+                   assetPath(o).string().c_str());
+    }
+    return o.synthesize.empty() ? track(o, model, headPivot) : synthesize(o, model, headPivot);
   } catch (const InputError& e) {
     std::fprintf(stderr, "lacrima track: %s\n", e.what());
     return kExitBadInput;

@@ -54,7 +54,7 @@ struct TrackOptions {
   std::string synthesize;           // instead: write a synthetic performance into this folder
   std::string asset;                // the face (glTF); empty: the ICT face
   std::string part = "M_Face";      // its primitive to track
-  std::string out = "track";        // folder for weights.csv and head_pose.csv
+  std::string out = "track";        // folder for weights.csv and performance.csv
   int frames = 60;                  // --synthesize: frames
   double noise = 1.0;               // --synthesize: x a Kinect's depth noise
   double landmarkNoise = 1.0;       // --synthesize: landmarks jittered by up to this (pixels)

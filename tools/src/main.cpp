@@ -233,12 +233,13 @@ const char* kTrackExamples =
     "Examples:\n"
     "  lacrima track --synthesize /tmp/perf --frames 60\n"
     "      a synthetic performance of the ICT face: depth EXRs with a Kinect's noise, 68 landmarks,\n"
-    "      and the truth it was made from (truth_weights.csv, truth_head_pose.csv)\n"
+    "      and the truth it was made from (truth_weights.csv, truth_performance.csv)\n"
     "  lacrima track --synthesize /tmp/perf --render --frames 30\n"
     "      the same with the depth rendered by lacrima itself (capture.json's Z AOV)\n"
     "  lacrima track /tmp/perf/performance.json --out /tmp/track\n"
     "      track it: /tmp/track/weights.csv (play it in a shot: \"performance\": {\"file\": ...})\n"
-    "      and /tmp/track/head_pose.csv; beside a synthetic performance, the errors against its truth\n"
+    "      and /tmp/track/performance.csv (the weights and the head's channels, for an asset with a\n"
+    "      rig); beside a synthetic performance, the errors against its truth\n"
     "\n"
     "The realtime tracker of Weise, Bouaziz, Li & Pauly 2011 (docs/tracking.md): per frame, ICP of the\n"
     "face's upper part against the depth map (point-plane, from the last frame's pose; the first frame's\n"
@@ -248,8 +249,9 @@ const char* kTrackExamples =
     "A performance is performance.json: {\"version\": 1, \"fps\": 30, \"frames\": {\"start\": 1, \"end\": 60},\n"
     "\"camera\": {\"width\", \"height\", \"fx\", \"fy\", \"cx\", \"cy\"} (pixels), \"depth\": \"depth.####.exr\" (one\n"
     "float channel Z in metres, 0 = none), \"landmarks\": \"landmarks.csv\" (frame,landmark,u,v in pixels,\n"
-    "iBUG 68 numbering)}. head_pose.csv is the head's motion since the first frame in the face's own\n"
-    "axes (Euler degrees x first, metres).\n"
+    "iBUG 68 numbering)}. performance.csv adds to the weights the head's motion since the first frame\n"
+    "as the rig's channels head.rx/ry/rz (Euler degrees, x first) and head.tx/ty/tz (metres), turning\n"
+    "about the ICT rig's head pivot.\n"
     "Exit status: 0 success, 2 a bad performance, asset or option.";
 
 void addTrack(CLI::App& app, TrackOptions& o) {
@@ -259,7 +261,7 @@ void addTrack(CLI::App& app, TrackOptions& o) {
   track->add_option("--synthesize", o.synthesize, "Instead, write a synthetic performance of the face into this folder");
   track->add_option("--asset", o.asset, "The face (glTF with morph targets and 68 landmarks; default: the ICT face)");
   track->add_option("--part", o.part, "The face's primitive to track (default: M_Face)");
-  track->add_option("--out,-o", o.out, "Folder for weights.csv and head_pose.csv (default: track)");
+  track->add_option("--out,-o", o.out, "Folder for weights.csv and performance.csv (default: track)");
   track->add_option("--frames", o.frames, "--synthesize: frames (default 60, at 30 fps)")->check(CLI::Range(1, 100000));
   track->add_option("--noise", o.noise, "--synthesize: depth noise, times a Kinect's (default 1; 0: none)")->check(CLI::Range(0.0, 100.0));
   track->add_option("--landmark-noise", o.landmarkNoise, "--synthesize: landmarks jittered by up to this many pixels (default 1)")

@@ -192,23 +192,26 @@ tracking::WeightSequence readWeightsCsv(const std::filesystem::path& file, const
   return out;
 }
 
-void writeHeadPoseCsv(const std::filesystem::path& file, int firstFrame, const std::vector<Eigen::Isometry3d>& poses) {
-  writeFileAtomically(file, "the head pose", [&](std::ostream& out) {
-    out << "frame,rx,ry,rz,tx,ty,tz\n";
-    if (poses.empty()) return;
-    const Eigen::Isometry3d first = poses.front();
-    for (size_t i = 0; i < poses.size(); ++i) {
-      // The motion in the asset's axes: first^-1 * pose maps the asset at frame 0 to frame i.
-      const Eigen::Isometry3d motion = first.inverse() * poses[i];
-      // R = Rz Ry Rx (x first), angles within (-180, 180] x [-90, 90] x (-180, 180].
-      const Eigen::Matrix3d& r = motion.linear();
-      const double degree = 180.0 / std::numbers::pi;
-      const double rx = std::atan2(r(2, 1), r(2, 2)) * degree, ry = std::asin(std::clamp(-r(2, 0), -1.0, 1.0)) * degree;
-      const double rz = std::atan2(r(1, 0), r(0, 0)) * degree;
-      out << fmt::format("{},{:.4f},{:.4f},{:.4f},{:.6f},{:.6f},{:.6f}\n", firstFrame + int(i), rx, ry, rz,
-                         motion.translation().x(), motion.translation().y(), motion.translation().z());
-    }
-  });
+const std::vector<std::string>& headChannelNames() {
+  static const std::vector<std::string> names = {"head.rx", "head.ry", "head.rz", "head.tx", "head.ty", "head.tz"};
+  return names;
+}
+
+tracking::WeightSequence headChannels(const std::vector<Eigen::Isometry3d>& poses, const Vec3d& pivot) {
+  tracking::WeightSequence out;
+  if (poses.empty()) return out;
+  const Eigen::Isometry3d first = poses.front();
+  const double degree = 180.0 / std::numbers::pi;
+  for (const Eigen::Isometry3d& pose : poses) {
+    const Eigen::Isometry3d motion = first.inverse() * pose;
+    const Eigen::Matrix3d& r = motion.linear();
+    // R = Rz Ry Rx: x in (-180, 180], y in [-90, 90], z in (-180, 180].
+    Eigen::VectorXd channels(6);
+    channels << std::atan2(r(2, 1), r(2, 2)) * degree, std::asin(std::clamp(-r(2, 0), -1.0, 1.0)) * degree,
+        std::atan2(r(1, 0), r(0, 0)) * degree, motion.translation() + r * pivot - pivot;
+    out.push_back(channels);
+  }
+  return out;
 }
 
 }  // namespace lacrima::cli

@@ -44,8 +44,11 @@ void writeWeightsCsv(const std::filesystem::path& file, const std::vector<std::s
                      const tracking::WeightSequence& weights);
 tracking::WeightSequence readWeightsCsv(const std::filesystem::path& file, const std::vector<std::string>& names);
 
-// The head pose per frame: "frame,rx,ry,rz,tx,ty,tz", the head's motion since the first frame in
-// the asset's own axes (Euler degrees, x first, as the rig's head channels; metres).
-void writeHeadPoseCsv(const std::filesystem::path& file, int firstFrame, const std::vector<Eigen::Isometry3d>& poses);
+// The head's motion since the first frame as a face rig's head channels: the motion in the
+// asset's own axes, M_i = P_0^-1 P_i (P: model to camera), written as the rig turns the head,
+// p -> R (p - pivot) + pivot + t (Euler degrees, x first; metres): per frame
+// [head.rx, head.ry, head.rz, head.tx, head.ty, head.tz].
+const std::vector<std::string>& headChannelNames();
+tracking::WeightSequence headChannels(const std::vector<Eigen::Isometry3d>& poses, const Vec3d& pivot);
 
 }  // namespace lacrima::cli

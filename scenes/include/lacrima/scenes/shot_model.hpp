@@ -81,13 +81,20 @@ struct AssetChannel {
 // A performance-capture weight track (seed 003) bound to an asset: resampled to the shot's fps
 // and optionally filtered at load; sample i plays at shot frame startFrame + i.
 struct ShotPerformance {
+  static constexpr size_t kNone = size_t(-1);
   std::filesystem::path file;  // resolved
   double startFrame = 1.0;
-  std::vector<size_t> targets;            // per track channel: index into the asset's targetNames
+  // Per track channel, the asset blendshape it drives (index into targetNames) or the rig's joint
+  // channel (index into FaceControls::jointChannelNames, e.g. head.rx from a tracker's head pose);
+  // the other is kNone.
+  std::vector<size_t> targets;
+  std::vector<size_t> joints;
   std::vector<std::vector<float>> samples;  // samples[i][channel]
 
   // Adds the track's weights at `frame` (linear between samples, held outside) to `weights`.
   void addWeightsAt(double frame, std::vector<float>& weights) const;
+  // The track's joint channels at `frame`: (joint channel, value) pairs.
+  std::vector<std::pair<size_t, float>> jointsAt(double frame) const;
 };
 
 // One of the asset's glTF animations played in the shot ("animation" member of an asset).
