@@ -186,7 +186,13 @@ tracking::WeightSequence readWeightsCsv(const std::filesystem::path& file, const
     const std::vector<std::string> cells = splitCsvLine(line);
     Eigen::VectorXd w = Eigen::VectorXd::Zero(long(names.size()));
     for (size_t k = 0; k < names.size(); ++k)
-      if (column[k] > 0 && size_t(column[k]) < cells.size()) w[long(k)] = std::stod(cells[size_t(column[k])]);
+      if (column[k] > 0 && size_t(column[k]) < cells.size()) {
+        try {
+          w[long(k)] = std::stod(cells[size_t(column[k])]);
+        } catch (const std::exception&) {
+          throw InputError(fmt::format("{}:{}: '{}' is not a number", file.string(), row, cells[size_t(column[k])]));
+        }
+      }
     out.push_back(w);
   }
   return out;
