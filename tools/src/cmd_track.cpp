@@ -60,12 +60,13 @@ std::vector<Eigen::Vector2d> projectedLandmarks(const BlendshapeModel& model, co
   return out;
 }
 
-// A shot that renders the face playing `weights.csv` from (0, 0, distance) with the pinhole
-// camera's vertical field of view, so that its Z AOV is the camera's depth map.
+// A shot that renders the face playing truth_performance.csv (weights and the head's channels,
+// through the ICT rig) from (0, 0, distance) with the pinhole camera's vertical field of view, so
+// that its Z AOV is the camera's depth map.
 std::string captureShot(const TrackOptions& o, const PinholeCamera& camera, int frames, double fps, double distance) {
   const double fov = 2.0 * std::atan(0.5 * camera.height / camera.fy) * 180.0 / std::numbers::pi;
   return fmt::format(R"({{
-  // Written by `lacrima track --synthesize --render`: the face playing truth_weights.csv, seen by the
+  // Written by `lacrima track --synthesize --render`: the face playing truth_performance.csv, seen by the
   // performance's depth camera (its Z AOV is the depth map; {}x{}, vertical field of view {:.4f} degrees).
   "version": 1,
   "frames": {{"start": 1, "end": {}, "fps": {}}},
@@ -77,7 +78,8 @@ std::string captureShot(const TrackOptions& o, const PinholeCamera& camera, int 
   "assets": [{{"name": "face", "file": "{}", "materials": {{"{}": "skin"}},
               // The real-time helper shells over the eyes are not surfaces a sensor sees.
               "hide": ["M_EyeBlend", "M_EyeOcclusion"],
-              "performance": {{"file": "truth_weights.csv", "fps": {}}}}}]
+              "rig": {{"preset": "ict"}},
+              "performance": {{"file": "truth_performance.csv", "fps": {}}}}}]
 }}
 )",
                      camera.width, camera.height, fov, frames, fps, camera.width, camera.height, o.seed, distance, fov,
@@ -109,7 +111,10 @@ int synthesize(const TrackOptions& o, const BlendshapeModel& model, const Vec3d&
   m.depthPattern = (dir / "depth.####.exr").string();
   m.landmarks = dir / "landmarks.csv";
   const WeightSequence truth = keyedPerformance(archetypalExpressions(model.targetNames), o.frames, o.seed);
+  std::vector<Eigen::Isometry3d> poses;
+  for (int i = 0; i < o.frames; ++i) poses.push_back(syntheticHeadPose(double(i) / m.fps));
   writeWeightsCsv(dir / "truth_weights.csv", model.targetNames, m.firstFrame, truth);
+  writePerformanceCsv(dir / "truth_performance.csv", model, headPivot, m.firstFrame, truth, poses);
   if (o.render) {
     // The face rendered by the path tracer, every primitive of the asset in view; its Z AOV is read
     // back below as the sensor's depth.
@@ -121,10 +126,9 @@ int synthesize(const TrackOptions& o, const BlendshapeModel& model, const Vec3d&
     if (const int status = runRender(render); status != kExitOk) return status;
   }
   LandmarkTrack landmarks;
-  std::vector<Eigen::Isometry3d> poses;
   for (int i = 0; i < o.frames; ++i) {
     const int frame = m.firstFrame + i;
-    const Eigen::Isometry3d pose = syntheticHeadPose(o.render ? 0.0 : double(i) / m.fps);
+    const Eigen::Isometry3d& pose = poses[size_t(i)];
     DepthFrame depth(m.camera);
     if (o.render) {
       depth = readDepthExr(expandFramePattern((dir / "render.####.exr").string(), frame), m.camera);
@@ -136,14 +140,12 @@ int synthesize(const TrackOptions& o, const BlendshapeModel& model, const Vec3d&
     addSensorNoise(depth, o.noise, hashCombine(o.seed, uint64_t(frame)));
     writeDepthExr(expandFramePattern(m.depthPattern, frame), depth);
     landmarks[frame] = projectedLandmarks(model, truth[size_t(i)], pose, m.camera, o.landmarkNoise, hashCombine(o.seed, uint64_t(frame) + 7));
-    poses.push_back(pose);
   }
   writeLandmarksCsv(m.landmarks, landmarks);
-  writePerformanceCsv(dir / "truth_performance.csv", model, headPivot, m.firstFrame, truth, poses);
   writePerformanceManifest(m);
   std::printf("synthesized %d frames of %s (depth %s, noise x%g; landmarks +-%g px) in %s: performance.json, "
               "depth.####.exr, landmarks.csv, truth_weights.csv, truth_performance.csv\n",
-              o.frames, assetPath(o).filename().string().c_str(), o.render ? "rendered by lacrima (Z AOV), the head still" : "rasterised",
+              o.frames, assetPath(o).filename().string().c_str(), o.render ? "rendered by lacrima (Z AOV)" : "rasterised",
               o.noise, o.landmarkNoise, dir.string().c_str());
   return kExitOk;
 }

@@ -59,7 +59,7 @@ struct TrackOptions {
   double noise = 1.0;               // --synthesize: x a Kinect's depth noise
   double landmarkNoise = 1.0;       // --synthesize: landmarks jittered by up to this (pixels)
   uint64_t seed = 1;                // --synthesize: the performance and the noise
-  bool render = false;               // --synthesize: depth from lacrima's path tracer (Z AOV), head still
+  bool render = false;               // --synthesize: depth from lacrima's path tracer (Z AOV)
   bool noPrior = false, noFilter = false;
 };
 

@@ -269,7 +269,7 @@ void addTrack(CLI::App& app, TrackOptions& o) {
   track->add_option("--seed", o.seed, "--synthesize: the performance's and the noise's seed (default 1)");
   track->add_flag("--render", o.render,
                   "--synthesize: the depth from lacrima's own path tracer (the Z AOV of capture.json, every part of "
-                  "the face in view) instead of a z-buffer of the tracked primitive; the head held still");
+                  "the face in view, the head turned through the ICT rig) instead of a z-buffer of the tracked primitive");
   track->add_flag("--no-prior", o.noPrior, "Fit without the animation prior");
   track->add_flag("--no-filter", o.noFilter, "Do not filter the head pose");
   track->callback([&o] { throw CLI::RuntimeError(runTrack(o)); });
