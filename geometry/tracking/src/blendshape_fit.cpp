@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "lacrima/geometry/error.hpp"
+#include "robust_cut.hpp"
 
 namespace lacrima::tracking {
 
@@ -18,10 +19,11 @@ std::vector<Vec3d> BlendshapeModel::positions(const Eigen::VectorXd& weights) co
   return out;
 }
 
-TriangleMesh BlendshapeModel::shape(const Eigen::VectorXd& weights) const {
+TriangleMesh BlendshapeModel::shape(const Eigen::VectorXd& weights) const { return meshOf(positions(weights)); }
+
+TriangleMesh BlendshapeModel::meshOf(const std::vector<Vec3d>& vertexPositions) const {
   TriangleMesh mesh = neutral;
-  const std::vector<Vec3d> p = positions(weights);
-  for (size_t v = 0; v < p.size(); ++v) mesh.positions[v] = p[v].cast<float>();
+  for (size_t v = 0; v < vertexPositions.size(); ++v) mesh.positions[v] = vertexPositions[v].cast<float>();
   computeSmoothNormals(mesh);
   return mesh;
 }
@@ -93,8 +95,7 @@ double addDepthRows(const BlendshapeModel& model, const TriangleMesh& posedShape
   if (candidates.empty()) return 0.0;
   std::vector<double> distances;
   for (const Pair& c : candidates) distances.push_back(c.distance);
-  std::nth_element(distances.begin(), distances.begin() + long(distances.size() / 2), distances.end());
-  const double cut = std::max(0.002, 3.0 * distances[distances.size() / 2]);
+  const double cut = robustCut(std::move(distances), 0.002);
   double squared = 0.0;
   for (const Pair& c : candidates) {
     if (c.distance > cut) continue;
@@ -142,8 +143,8 @@ BlendshapeFitResult fitBlendshapes(const BlendshapeModel& model, const DepthFram
   BlendshapeFitResult result;
   result.weights = initial.size() == m ? initial : Eigen::VectorXd::Zero(m);
   for (int iteration = 0; iteration < params.iterations; ++iteration) {
-    const TriangleMesh shape = model.shape(result.weights);
     const std::vector<Vec3d> positions = model.positions(result.weights);
+    const TriangleMesh shape = model.meshOf(positions);
     NormalEquations equations(m);
     result.rmsDistance = addDepthRows(model, shape, positions, frame, pose, params, equations, result.pairs);
     result.rmsLandmarkPixels = addLandmarkRows(model, positions, landmarks, frame.camera(), pose, params, equations);

@@ -1,6 +1,8 @@
 // Point-plane ICP against a depth map; see rigid_icp.hpp.
 #include "lacrima/tracking/rigid_icp.hpp"
 
+#include "robust_cut.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -37,8 +39,7 @@ std::vector<Pair> projectivePairs(const std::vector<Vec3d>& points, const std::v
   if (pairs.empty()) return pairs;
   std::vector<double> distances;
   for (const Pair& pair : pairs) distances.push_back((pair.q - pair.p).norm());
-  std::nth_element(distances.begin(), distances.begin() + long(distances.size() / 2), distances.end());
-  const double cut = std::max(params.minRejectDistance, 3.0 * distances[distances.size() / 2]);
+  const double cut = robustCut(std::move(distances), params.minRejectDistance);
   std::erase_if(pairs, [&](const Pair& pair) { return (pair.q - pair.p).norm() > cut; });
   return pairs;
 }

@@ -37,8 +37,9 @@ struct BlendshapeModel {
   bool observable(long k, double minMotion) const { return largestOffsets[size_t(k)] >= minMotion; }
   // The model's vertices at weights x (model space).
   std::vector<Vec3d> positions(const Eigen::VectorXd& weights) const;
-  // The mesh at weights x, with smooth normals.
+  // The mesh at weights x, with smooth normals; or at vertex positions already computed.
   TriangleMesh shape(const Eigen::VectorXd& weights) const;
+  TriangleMesh meshOf(const std::vector<Vec3d>& vertexPositions) const;
 };
 
 // The model of primitive `part` (e.g. "M_Face") of `asset`. Throws InputError if the asset has no
