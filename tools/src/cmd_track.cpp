@@ -4,6 +4,7 @@
 // synthetic performance of a face to validate it on (`--synthesize`).
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -13,6 +14,7 @@
 #include "commands.hpp"
 #include "lacrima/geometry/error.hpp"
 #include "lacrima/geometry/face_rig.hpp"
+#include "lacrima/geometry/performance_track.hpp"
 #include "lacrima/scenes/shot.hpp"
 #include "lacrima/tracking/depth_sensor.hpp"
 #include "lacrima/tracking/initial_pose.hpp"
@@ -190,7 +192,15 @@ int track(const TrackOptions& o, const BlendshapeModel& model, const Vec3d& head
   // Beside a synthetic performance: how close the track is.
   const std::filesystem::path truthFile = m.file.parent_path() / "truth_weights.csv";
   if (std::filesystem::exists(truthFile)) {
-    const WeightSequence truth = readWeightsCsv(truthFile, model.targetNames);
+    // The truth is the shot format's weight track: read as a shot reads it (geometry's reader).
+    const PerformanceTrack track = readPerformanceCsv(truthFile, model.targetNames);
+    WeightSequence truth;
+    for (const std::vector<float>& row : track.frames) {
+      Eigen::VectorXd w = Eigen::VectorXd::Zero(model.targetCount());
+      for (size_t c = 0; c < track.names.size(); ++c)
+        w[std::find(model.targetNames.begin(), model.targetNames.end(), track.names[c]) - model.targetNames.begin()] = row[c];
+      truth.push_back(w);
+    }
     double squares = 0.0, vertexMm = 0.0;
     const size_t n = std::min(truth.size(), weights.size());
     for (size_t i = 0; i < n; ++i) {

@@ -170,34 +170,6 @@ void writeWeightsCsv(const std::filesystem::path& file, const std::vector<std::s
   });
 }
 
-tracking::WeightSequence readWeightsCsv(const std::filesystem::path& file, const std::vector<std::string>& names) {
-  std::ifstream in(file);
-  if (!in) throw InputError(fmt::format("cannot open the weight track '{}'", file.string()));
-  std::string line;
-  std::getline(in, line);
-  const std::vector<std::string> header = splitCsvLine(line);
-  std::vector<long> column(names.size(), -1);
-  for (size_t c = 1; c < header.size(); ++c)
-    for (size_t k = 0; k < names.size(); ++k)
-      if (header[c] == names[k]) column[k] = long(c);
-  tracking::WeightSequence out;
-  for (int row = 2; std::getline(in, line); ++row) {
-    if (line.empty()) continue;
-    const std::vector<std::string> cells = splitCsvLine(line);
-    Eigen::VectorXd w = Eigen::VectorXd::Zero(long(names.size()));
-    for (size_t k = 0; k < names.size(); ++k)
-      if (column[k] > 0 && size_t(column[k]) < cells.size()) {
-        try {
-          w[long(k)] = std::stod(cells[size_t(column[k])]);
-        } catch (const std::exception&) {
-          throw InputError(fmt::format("{}:{}: '{}' is not a number", file.string(), row, cells[size_t(column[k])]));
-        }
-      }
-    out.push_back(w);
-  }
-  return out;
-}
-
 const std::vector<std::string>& headChannelNames() {
   static const std::vector<std::string> names = {"head.rx", "head.ry", "head.rz", "head.tx", "head.ty", "head.tz"};
   return names;

@@ -42,7 +42,6 @@ void writeLandmarksCsv(const std::filesystem::path& file, const LandmarkTrack& t
 // The shot format's performance CSV: "frame,<target>,..." one row per frame.
 void writeWeightsCsv(const std::filesystem::path& file, const std::vector<std::string>& names, int firstFrame,
                      const tracking::WeightSequence& weights);
-tracking::WeightSequence readWeightsCsv(const std::filesystem::path& file, const std::vector<std::string>& names);
 
 // The head's motion since the first frame as a face rig's head channels: the motion in the
 // asset's own axes, M_i = P_0^-1 P_i (P: model to camera), written as the rig turns the head,
