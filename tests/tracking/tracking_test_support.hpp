@@ -2,14 +2,12 @@
 // What the tracking tests share: the ICT face's skin as a blendshape model, a camera pose for it,
 // and a synthetic capture of it (depth with a Kinect's noise, 68 landmarks with pixel noise).
 #include <cmath>
-#include <limits>
 #include <numbers>
 #include <string>
 #include <vector>
 
-#include "lacrima/geometry/sampler.hpp"
 #include "lacrima/tracking/blendshape_fit.hpp"
-#include "lacrima/tracking/depth_sensor.hpp"
+#include "lacrima/tracking/synthetic_capture.hpp"
 
 namespace lacrima::tracking::test {
 
@@ -43,22 +41,8 @@ struct Capture {
 // noise, landmarks with uniform noise of +-`landmarkNoise` pixels; `seed` draws both.
 inline Capture capture(const BlendshapeModel& model, const Eigen::VectorXd& weights, const Eigen::Isometry3d& pose,
                        double noise, double landmarkNoise, uint64_t seed) {
-  TriangleMesh mesh = model.shape(weights);
-  transformMesh(mesh, Affine3(pose.cast<float>().matrix()));
-  Capture c{rasterizeDepth(mesh, PinholeCamera{}), {}};
-  addSensorNoise(c.depth, noise, seed);
-  const std::vector<Vec3d> p = model.positions(weights);
-  for (size_t l = 0; l < 68; ++l) {
-    const int v = model.landmarkVertices[l];
-    if (v < 0) {
-      c.landmarks.emplace_back(std::numeric_limits<double>::quiet_NaN(), 0.0);
-      continue;
-    }
-    const Eigen::Vector2d jitter(double(uint64ToUnitFloat(hashCombine(hashCombine(seed, l), 1))) - 0.5,
-                                 double(uint64ToUnitFloat(hashCombine(hashCombine(seed, l), 2))) - 0.5);
-    c.landmarks.push_back(PinholeCamera{}.project(pose * p[size_t(v)]) + 2.0 * landmarkNoise * jitter);
-  }
-  return c;
+  return Capture{captureDepth(model, weights, pose, PinholeCamera{}, noise, seed),
+                 projectLandmarks(model, weights, pose, PinholeCamera{}, landmarkNoise, seed)};
 }
 
 // The root mean square distance between the model's vertices at two weight vectors, millimetres.

@@ -19,6 +19,7 @@
 #include "lacrima/tracking/depth_sensor.hpp"
 #include "lacrima/tracking/initial_pose.hpp"
 #include "lacrima/tracking/performance_tracker.hpp"
+#include "lacrima/tracking/synthetic_capture.hpp"
 #include "track_io.hpp"
 
 namespace lacrima::cli {
@@ -45,21 +46,6 @@ Eigen::Isometry3d syntheticHeadPose(double seconds) {
                         .toRotationMatrix();
   motion.translation() = Vec3d(0.01 * std::sin(tau * seconds / 5.0), 0.0, 0.0);
   return facing * motion;
-}
-
-std::vector<Eigen::Vector2d> projectedLandmarks(const BlendshapeModel& model, const Eigen::VectorXd& weights,
-                                                const Eigen::Isometry3d& pose, const PinholeCamera& camera,
-                                                double noise, uint64_t seed) {
-  const std::vector<Vec3d> p = model.positions(weights);
-  std::vector<Eigen::Vector2d> out(68, Eigen::Vector2d::Constant(std::nan("")));
-  for (size_t l = 0; l < 68; ++l) {
-    const int v = model.landmarkVertices[l];
-    if (v < 0) continue;
-    const Eigen::Vector2d jitter(double(uint64ToUnitFloat(hashCombine(hashCombine(seed, l), 1))) - 0.5,
-                                 double(uint64ToUnitFloat(hashCombine(hashCombine(seed, l), 2))) - 0.5);
-    out[l] = camera.project(pose * p[size_t(v)]) + 2.0 * noise * jitter;
-  }
-  return out;
 }
 
 // A shot that renders the face playing truth_performance.csv (weights and the head's channels,
@@ -134,14 +120,12 @@ int synthesize(const TrackOptions& o, const BlendshapeModel& model, const Vec3d&
     DepthFrame depth(m.camera);
     if (o.render) {
       depth = readDepthExr(expandFramePattern((dir / "render.####.exr").string(), frame), m.camera);
+      addSensorNoise(depth, o.noise, hashCombine(o.seed, uint64_t(frame)));
     } else {
-      TriangleMesh mesh = model.shape(truth[size_t(i)]);
-      transformMesh(mesh, Affine3(pose.cast<float>().matrix()));
-      depth = rasterizeDepth(mesh, m.camera);
+      depth = captureDepth(model, truth[size_t(i)], pose, m.camera, o.noise, hashCombine(o.seed, uint64_t(frame)));
     }
-    addSensorNoise(depth, o.noise, hashCombine(o.seed, uint64_t(frame)));
     writeDepthExr(expandFramePattern(m.depthPattern, frame), depth);
-    landmarks[frame] = projectedLandmarks(model, truth[size_t(i)], pose, m.camera, o.landmarkNoise, hashCombine(o.seed, uint64_t(frame) + 7));
+    landmarks[frame] = projectLandmarks(model, truth[size_t(i)], pose, m.camera, o.landmarkNoise, hashCombine(o.seed, uint64_t(frame) + 7));
   }
   writeLandmarksCsv(m.landmarks, landmarks);
   writePerformanceManifest(m);
