@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <map>
 
+#include "lacrima/scenes/shot.hpp"
+
 namespace lacrima::shotfile {
 
 namespace {
@@ -82,3 +84,11 @@ TriangleMesh posedPrimitive(const ShotAsset& asset, const AssetPose& assetPose, 
 }
 
 }  // namespace lacrima::shotfile
+
+namespace lacrima {
+
+FacePose assetFacePoseAt(const Shot& shot, size_t assetIndex, double frame) {
+  return shotfile::assetPoseAt(shot.assets.at(assetIndex), frame).face;
+}
+
+}  // namespace lacrima

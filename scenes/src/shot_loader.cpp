@@ -1767,10 +1767,45 @@ Shot loadShot(const std::filesystem::path& path) {
   return loadShot(path, [](const fs::path& file) { return std::make_shared<const GltfAsset>(loadGltfAsset(file)); });
 }
 
-Shot loadShot(const std::filesystem::path& path, const GltfAssetLoader& loadAsset) {
+namespace {
+
+// The asset's name as the shot reader gives it: "name", else the file's stem.
+std::string writtenAssetName(const Json& asset) {
+  if (const auto name = asset.find("name"); name != asset.end() && name->is_string()) return name->get<std::string>();
+  if (const auto file = asset.find("file"); file != asset.end() && file->is_string())
+    return fs::path(file->get<std::string>()).stem().string();
+  return "";
+}
+
+// Plays each take on its asset: the asset's own animation members give way to a "performance".
+void applyPerformanceOverrides(Json& root, const std::vector<PerformanceOverride>& performances, Checker& checker) {
+  for (const PerformanceOverride& take : performances) {
+    std::vector<std::string> names;
+    Json* target = nullptr;
+    if (root.is_object() && root.contains("assets") && root["assets"].is_array())
+      for (Json& asset : root["assets"]) {
+        if (!asset.is_object()) continue;
+        names.push_back(writtenAssetName(asset));
+        if (names.back() == take.asset && !target) target = &asset;
+      }
+    if (!target) {
+      checker.error("/assets", Anchor::Key,
+                    fmt::format("no asset named '{}' to play the performance {} on{}", take.asset, take.file.string(),
+                                names.empty() ? "" : " (the shot's assets: " + quotedList(names) + ")"));
+      continue;
+    }
+    for (const char* member : {"blendshapes", "controls", "joints", "performance"}) target->erase(member);
+    Json performance = {{"file", fs::absolute(take.file).lexically_normal().string()}};
+    if (take.fps) performance["fps"] = *take.fps;
+    (*target)["performance"] = std::move(performance);
+  }
+}
+
+Shot loadShotWith(const std::filesystem::path& path, const GltfAssetLoader& loadAsset,
+                  const std::vector<PerformanceOverride>& performances) {
   Shot shot;
   shot.path = path;
-  const ParsedJsonFile parsed = readJsonFile(path, "the shot file");
+  ParsedJsonFile parsed = readJsonFile(path, "the shot file");
   const JsonSource& source = parsed.source;
 
   Checker checker(path, source);
@@ -1780,6 +1815,7 @@ Shot loadShot(const std::filesystem::path& path, const GltfAssetLoader& loadAsse
     checker.error(d.pointer, Anchor::Key,
                   fmt::format("duplicate key '{}' (first given at line {}, column {})", key, first.line, first.column));
   }
+  applyPerformanceOverrides(parsed.json, performances, checker);
   ShotReader(checker, shot, loadAsset).read(parsed.json);
   if (checker.errorCount() > 0) throw ShotError(checker.diagnostics());
   // On the assets as loaded: the flesh volumes' boundaries are the skin's own tessellation.
@@ -1800,6 +1836,17 @@ Shot loadShot(const std::filesystem::path& path, const GltfAssetLoader& loadAsse
   for (const SphProblem& problem : resolveSphLiquids(shot)) checker.error(problem.pointer, Anchor::Value, problem.message);
   if (checker.errorCount() > 0) throw ShotError(checker.diagnostics());
   return shot;
+}
+
+}  // namespace
+
+Shot loadShot(const std::filesystem::path& path, const GltfAssetLoader& loadAsset) {
+  return loadShotWith(path, loadAsset, {});
+}
+
+Shot loadShot(const std::filesystem::path& path, const std::vector<PerformanceOverride>& performances) {
+  return loadShotWith(
+      path, [](const fs::path& file) { return std::make_shared<const GltfAsset>(loadGltfAsset(file)); }, performances);
 }
 
 }  // namespace lacrima

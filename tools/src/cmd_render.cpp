@@ -213,13 +213,25 @@ void printStopHint(const std::vector<int>& frames, const SequenceTally& tally, c
                why, formatFrameList(complete).c_str(), formatFrameList(framesNotDone(frames, tally)).c_str());
 }
 
+// --performance ASSET=FILE, each checked for its '=' and the file.
+std::vector<PerformanceOverride> performanceOverrides(const RenderOptions& o) {
+  std::vector<PerformanceOverride> takes;
+  for (const std::string& option : o.performances) {
+    const size_t equals = option.find('=');
+    if (equals == std::string::npos || equals == 0 || equals + 1 == option.size())
+      throw InputError(fmt::format("--performance {}: expected ASSET=FILE, such as face=track/performance.csv", option));
+    takes.push_back({option.substr(0, equals), option.substr(equals + 1), o.performanceFps});
+  }
+  return takes;
+}
+
 }  // namespace
 
 int runRender(const RenderOptions& o) {
   try {
     const auto start = std::chrono::steady_clock::now();
     useHeapSettingsForSequences();  // before the shot's allocations
-    const Shot shot = loadShot(o.shotPath);
+    const Shot shot = loadShot(o.shotPath, performanceOverrides(o));
     const std::vector<int> frames = selectShotFrames(o.frames, shot);
     const std::string pattern = resolveOutputPattern(o, shot, frames.size());
     checkPreviewConfig(o, shot);

@@ -20,6 +20,7 @@
 #include "lacrima/tracking/initial_pose.hpp"
 #include "lacrima/tracking/performance_tracker.hpp"
 #include "lacrima/tracking/synthetic_capture.hpp"
+#include "synthetic_take.hpp"
 #include "track_io.hpp"
 
 namespace lacrima::cli {
@@ -33,31 +34,17 @@ std::filesystem::path assetPath(const TrackOptions& o) {
                          : std::filesystem::path(o.asset);
 }
 
-// The synthetic head: 0.7 m from the camera, turning up to 8 degrees left and right every 3 s,
-// nodding 3 degrees every 4 s, swaying 1 cm.
-Eigen::Isometry3d syntheticHeadPose(double seconds) {
-  const double degree = std::numbers::pi / 180.0, tau = 2.0 * std::numbers::pi;
-  Eigen::Isometry3d facing = Eigen::Isometry3d::Identity();
-  facing.linear() = Vec3d(1, -1, -1).asDiagonal();  // the face (+z towards the viewer, +y up) to the camera's axes
-  facing.translation() = Vec3d(0, 0, 0.7);
-  Eigen::Isometry3d motion = Eigen::Isometry3d::Identity();
-  motion.linear() = (Eigen::AngleAxisd(8.0 * degree * std::sin(tau * seconds / 3.0), Vec3d::UnitY()) *
-                     Eigen::AngleAxisd(3.0 * degree * std::sin(tau * seconds / 4.0), Vec3d::UnitX()))
-                        .toRotationMatrix();
-  motion.translation() = Vec3d(0.01 * std::sin(tau * seconds / 5.0), 0.0, 0.0);
-  return facing * motion;
-}
-
 // A shot that renders the face playing truth_performance.csv (weights and the head's channels,
 // through the ICT rig) from (0, 0, distance) with the pinhole camera's vertical field of view, so
 // that its Z AOV is the camera's depth map.
-std::string captureShot(const TrackOptions& o, const PinholeCamera& camera, int frames, double fps, double distance) {
+std::string captureShot(const TrackOptions& o, const PinholeCamera& camera, int firstFrame, int lastFrame, double fps,
+                        double distance) {
   const double fov = 2.0 * std::atan(0.5 * camera.height / camera.fy) * 180.0 / std::numbers::pi;
   return fmt::format(R"({{
   // Written by `lacrima track --synthesize --render`: the face playing truth_performance.csv, seen by the
   // performance's depth camera (its Z AOV is the depth map; {}x{}, vertical field of view {:.4f} degrees).
   "version": 1,
-  "frames": {{"start": 1, "end": {}, "fps": {}}},
+  "frames": {{"start": {}, "end": {}, "fps": {}}},
   "output": "render.####.exr",
   "render": {{"width": {}, "height": {}, "spp": 4, "maxDepth": 2, "seed": {}}},
   "camera": {{"position": [0, 0, {}], "lookAt": [0, 0, 0], "fov": {:.6f}}},
@@ -70,17 +57,16 @@ std::string captureShot(const TrackOptions& o, const PinholeCamera& camera, int 
               "performance": {{"file": "truth_performance.csv", "fps": {}}}}}]
 }}
 )",
-                     camera.width, camera.height, fov, frames, fps, camera.width, camera.height, o.seed, distance, fov,
+                     camera.width, camera.height, fov, firstFrame, lastFrame, fps, camera.width, camera.height, o.seed, distance, fov,
                      assetPath(o).string(), o.part, fps);
 }
 
-// The weights and the head's channels about the rig's head pivot, one CSV a shot plays on an asset
-// with a rig (`"rig": {"preset": "ict"}`).
-void writePerformanceCsv(const std::filesystem::path& file, const BlendshapeModel& model, const Vec3d& pivot,
-                         int firstFrame, const WeightSequence& weights, const std::vector<Eigen::Isometry3d>& poses) {
+// The weights and the head's channels, one CSV a shot plays on an asset with a rig
+// (`"rig": {"preset": "ict"}`).
+void writePerformanceCsv(const std::filesystem::path& file, const BlendshapeModel& model, int firstFrame,
+                         const WeightSequence& weights, const WeightSequence& head) {
   std::vector<std::string> names = model.targetNames;
   names.insert(names.end(), headChannelNames().begin(), headChannelNames().end());
-  const WeightSequence head = headChannels(poses, pivot);
   WeightSequence rows;
   for (size_t i = 0; i < weights.size(); ++i) {
     Eigen::VectorXd row(weights[i].size() + 6);
@@ -92,48 +78,70 @@ void writePerformanceCsv(const std::filesystem::path& file, const BlendshapeMode
 
 int synthesize(const TrackOptions& o, const BlendshapeModel& model, const Vec3d& headPivot) {
   const std::filesystem::path dir = o.synthesize;
+  const SyntheticTake take =
+      o.fromShot.empty() ? keyedTake(model, o.frames, o.seed) : takeFromShot(o.fromShot, o.shotAsset, model, headPivot);
+  const int frames = int(take.weights.size());
   PerformanceManifest m;
   m.file = dir / "performance.json";
-  m.firstFrame = 1;
-  m.lastFrame = o.frames;
+  m.fps = take.fps;
+  m.firstFrame = take.firstFrame;
+  m.lastFrame = take.firstFrame + frames - 1;
   m.depthPattern = (dir / "depth.####.exr").string();
   m.landmarks = dir / "landmarks.csv";
-  const WeightSequence truth = keyedPerformance(archetypalExpressions(model.targetNames), o.frames, o.seed);
+  WeightSequence headTruth;
   std::vector<Eigen::Isometry3d> poses;
-  for (int i = 0; i < o.frames; ++i) poses.push_back(syntheticHeadPose(double(i) / m.fps));
-  writeWeightsCsv(dir / "truth_weights.csv", model.targetNames, m.firstFrame, truth);
-  writePerformanceCsv(dir / "truth_performance.csv", model, headPivot, m.firstFrame, truth, poses);
+  for (const Eigen::Isometry3d& motion : take.headMotions) {
+    headTruth.push_back(channelsOfHeadMotion(motion, headPivot));
+    poses.push_back(cameraFacing() * motion);
+  }
+  writeWeightsCsv(dir / "truth_weights.csv", model.targetNames, m.firstFrame, take.weights);
+  writePerformanceCsv(dir / "truth_performance.csv", model, m.firstFrame, take.weights, headTruth);
   if (o.render) {
     // The face rendered by the path tracer, every primitive of the asset in view; its Z AOV is read
     // back below as the sensor's depth.
-    writeFileAtomically(dir / "capture.json", "the capture shot",
-                        [&](std::ostream& out) { out << captureShot(o, m.camera, o.frames, m.fps, 0.7); });
+    writeFileAtomically(dir / "capture.json", "the capture shot", [&](std::ostream& out) {
+      out << captureShot(o, m.camera, m.firstFrame, m.lastFrame, m.fps, cameraFacing().translation().z());
+    });
     RenderOptions render;
     render.shotPath = (dir / "capture.json").string();
     render.quiet = true;
     if (const int status = runRender(render); status != kExitOk) return status;
   }
   LandmarkTrack landmarks;
-  for (int i = 0; i < o.frames; ++i) {
+  for (int i = 0; i < frames; ++i) {
     const int frame = m.firstFrame + i;
     const Eigen::Isometry3d& pose = poses[size_t(i)];
+    const uint64_t noiseSeed = hashCombine(o.seed, uint64_t(frame));
     DepthFrame depth(m.camera);
     if (o.render) {
       depth = readDepthExr(expandFramePattern((dir / "render.####.exr").string(), frame), m.camera);
-      addSensorNoise(depth, o.noise, hashCombine(o.seed, uint64_t(frame)));
+      addSensorNoise(depth, o.noise, noiseSeed);
     } else {
-      depth = captureDepth(model, truth[size_t(i)], pose, m.camera, o.noise, hashCombine(o.seed, uint64_t(frame)));
+      depth = captureDepth(model, take.weights[size_t(i)], pose, m.camera, o.noise, noiseSeed);
     }
     writeDepthExr(expandFramePattern(m.depthPattern, frame), depth);
-    landmarks[frame] = projectLandmarks(model, truth[size_t(i)], pose, m.camera, o.landmarkNoise, hashCombine(o.seed, uint64_t(frame) + 7));
+    landmarks[frame] = projectLandmarks(model, take.weights[size_t(i)], pose, m.camera, o.landmarkNoise,
+                                        hashCombine(o.seed, uint64_t(frame) + 7));
   }
   writeLandmarksCsv(m.landmarks, landmarks);
   writePerformanceManifest(m);
   std::printf("synthesized %d frames of %s (depth %s, noise x%g; landmarks +-%g px) in %s: performance.json, "
               "depth.####.exr, landmarks.csv, truth_weights.csv, truth_performance.csv\n",
-              o.frames, assetPath(o).filename().string().c_str(), o.render ? "rendered by lacrima (Z AOV)" : "rasterised",
-              o.noise, o.landmarkNoise, dir.string().c_str());
+              frames, take.description.c_str(), o.render ? "rendered by lacrima (Z AOV)" : "rasterised", o.noise,
+              o.landmarkNoise, dir.string().c_str());
   return kExitOk;
+}
+
+// --head-start: the head's channels at the first frame (rx, ry, rz in degrees, then optionally
+// tx, ty, tz in metres) as a motion about the pivot.
+Eigen::Isometry3d headStart(const TrackOptions& o, const Vec3d& headPivot) {
+  if (o.headStart.empty()) return Eigen::Isometry3d::Identity();
+  if (o.headStart.size() != 3 && o.headStart.size() != 6)
+    throw InputError(fmt::format("--head-start takes 3 values (rx ry rz, degrees) or 6 (and tx ty tz, metres), not {}",
+                                 o.headStart.size()));
+  Eigen::VectorXd channels = Eigen::VectorXd::Zero(6);
+  for (size_t i = 0; i < o.headStart.size(); ++i) channels[long(i)] = o.headStart[i];
+  return headMotionOfChannels(channels, headPivot);
 }
 
 int track(const TrackOptions& o, const BlendshapeModel& model, const Vec3d& headPivot) {
@@ -169,7 +177,7 @@ int track(const TrackOptions& o, const BlendshapeModel& model, const Vec3d& head
   }
   const std::filesystem::path out = o.out;
   writeWeightsCsv(out / "weights.csv", model.targetNames, m.firstFrame, weights);
-  writePerformanceCsv(out / "performance.csv", model, headPivot, m.firstFrame, weights, poses);
+  writePerformanceCsv(out / "performance.csv", model, m.firstFrame, weights, headChannels(poses, headPivot, headStart(o, headPivot)));
   std::printf("tracked %zu frames at %.1f frames a second (tracking alone, 1 thread) -> %s, %s (with head.*)\n", weights.size(),
               double(weights.size()) / trackingSeconds, (out / "weights.csv").string().c_str(),
               (out / "performance.csv").string().c_str());
@@ -185,17 +193,9 @@ int track(const TrackOptions& o, const BlendshapeModel& model, const Vec3d& head
         w[std::find(model.targetNames.begin(), model.targetNames.end(), track.names[c]) - model.targetNames.begin()] = row[c];
       truth.push_back(w);
     }
-    double squares = 0.0, vertexMm = 0.0;
-    const size_t n = std::min(truth.size(), weights.size());
-    for (size_t i = 0; i < n; ++i) {
-      squares += (weights[i] - truth[i]).squaredNorm() / double(model.targetCount());
-      const std::vector<Vec3d> a = model.positions(weights[i]), b = model.positions(truth[i]);
-      double s = 0.0;
-      for (size_t v = 0; v < a.size(); ++v) s += (a[v] - b[v]).squaredNorm();
-      vertexMm += 1e3 * std::sqrt(s / double(a.size())) / double(n);
-    }
-    std::printf("against truth_weights.csv: weight RMSE %.4f, mean vertex error %.3f mm\n", std::sqrt(squares / double(n)),
-                vertexMm);
+    const TrackAccuracy accuracy = trackAccuracy(model, truth, weights);
+    std::printf("against truth_weights.csv: weight RMSE %.4f, mean vertex error %.3f mm\n", accuracy.weightRmse,
+                accuracy.vertexMm);
   }
   return kExitOk;
 }

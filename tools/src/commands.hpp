@@ -29,6 +29,10 @@ struct RenderOptions {
   bool quiet = false;
   bool resume = false;  // skip frames whose EXR is already complete with these settings
   bool reportMemory = false;  // print the peak and current RSS after every frame and at the end
+  // --performance ASSET=FILE: takes played on the shot's assets instead of their animation
+  // (render only; the farm does not forward them), at --performance-fps (none: the shot's fps).
+  std::vector<std::string> performances;
+  std::optional<double> performanceFps;
 };
 
 struct ExportOptions {
@@ -60,6 +64,9 @@ struct TrackOptions {
   double landmarkNoise = 1.0;       // --synthesize: landmarks jittered by up to this (pixels)
   uint64_t seed = 1;                // --synthesize: the performance and the noise
   bool render = false;               // --synthesize: depth from lacrima's path tracer (Z AOV)
+  std::string fromShot;              // --synthesize: the take is this shot's animation of an asset ...
+  std::string shotAsset = "face";    // ... this one
+  std::vector<double> headStart;     // the head's channels at the first frame (3 rotations, or 6)
   bool noPrior = false, noFilter = false;
 };
 
@@ -90,6 +97,10 @@ struct BenchOptions {
   // --sph: the SPH liquid's cost on a dam break of this many particles, stepped this often (cmd_bench_sph.cpp).
   bool sph = false;
   int sphParticles = 100000, sphSteps = 10;
+  // --tracking: the face tracker's cost and accuracy on a synthetic take of this many frames,
+  // with lacrima's prior and one at the seed's size (cmd_bench_tracking.cpp).
+  bool tracking = false;
+  int trackFrames = 120;
   // --quality: time to equal error (cmd_bench_quality.cpp).
   bool quality = false;
   std::optional<int> frame;  // default: the shot's first frame
@@ -130,6 +141,7 @@ int runBench(const BenchOptions& options);
 int runBenchQuality(const BenchOptions& options);
 int runBenchFlesh(const BenchOptions& options);
 int runBenchSph(const BenchOptions& options);
+int runBenchTracking(const BenchOptions& options);
 int runExport(const ExportOptions& options);
 int runFlood(const FloodOptions& options);
 int runTrack(const TrackOptions& options);

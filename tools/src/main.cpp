@@ -82,6 +82,8 @@ const char* kRenderExamples =
     "      every 2nd frame of 1-48 at a quick preview quality\n"
     "  lacrima render shot.json --frames 12 --out /tmp/look.####.exr --seed 3\n"
     "      one frame to another place, with another seed\n"
+    "  lacrima render scenes/shots/tear_closeup.json --performance face=track/performance.csv --out /tmp/t.####.exr\n"
+    "      the crying shot played by a tracked performance (lacrima track) instead of its keyed one\n"
     "\n"
     "Overrides replace the shot file's render settings for this run only. Frames are written to a\n"
     "temporary name and renamed when complete, so an interrupted render never leaves a partial EXR.\n"
@@ -123,6 +125,13 @@ void addRender(CLI::App& app, RenderOptions& o) {
   render->add_flag("--resume", o.resume,
                    "Skip frames whose EXR already exists, reads back completely and was rendered with the same "
                    "resolution, spp, seed and max depth; render the others (a truncated or corrupt file again)");
+  render->add_option("--performance", o.performances,
+                     "ASSET=FILE: play a performance CSV (lacrima track's performance.csv: weights and head "
+                     "channels) on the shot's asset instead of its keyed blendshapes, controls and joints; tears, "
+                     "flesh and eyes follow the tracked face. Repeatable; write to another --out than the shot's")
+      ->type_name("ASSET=FILE");
+  render->add_option("--performance-fps", o.performanceFps, "The --performance tracks' frame rate (default: the shot's)")
+      ->check(CLI::PositiveNumber);
   render->add_flag("--report-memory", o.reportMemory,
                    "After every frame and at the end, print the process's peak and current resident memory "
                    "and malloc's heap in use / held (also after building and after rendering each frame); a "
@@ -240,6 +249,10 @@ const char* kTrackExamples =
     "      track it: /tmp/track/weights.csv (play it in a shot: \"performance\": {\"file\": ...})\n"
     "      and /tmp/track/performance.csv (the weights and the head's channels, for an asset with a\n"
     "      rig); beside a synthetic performance, the errors against its truth\n"
+    "  lacrima track --synthesize /tmp/cry --from-shot scenes/shots/tear_closeup.json\n"
+    "  lacrima track /tmp/cry/performance.json --out /tmp/cry-track --head-start 6,0,12\n"
+    "  lacrima render scenes/shots/tear_closeup.json --performance face=/tmp/cry-track/performance.csv -o t.####.exr\n"
+    "      the crying shot's own performance captured, tracked, and the shot played by the track\n"
     "\n"
     "The realtime tracker of Weise, Bouaziz, Li & Pauly 2011 (docs/tracking.md): per frame, ICP of the\n"
     "face's upper part against the depth map (point-plane, from the last frame's pose; the first frame's\n"
@@ -270,6 +283,16 @@ void addTrack(CLI::App& app, TrackOptions& o) {
   track->add_flag("--render", o.render,
                   "--synthesize: the depth from lacrima's own path tracer (the Z AOV of capture.json, every part of "
                   "the face in view, the head turned through the ICT rig) instead of a z-buffer of the tracked primitive");
+  track->add_option("--from-shot", o.fromShot,
+                    "--synthesize: capture this shot's animation of --shot-asset (its weights and head, over the "
+                    "shot's frames at its fps) instead of a keyed one");
+  track->add_option("--shot-asset", o.shotAsset, "--from-shot: the asset whose animation is captured (default: face)");
+  track->add_option("--head-start", o.headStart,
+                    "The head's channels at the first frame, as the shot stages it: rx ry rz (degrees) [tx ty tz "
+                    "(metres)]; performance.csv's head channels are this pose followed by the tracked motion "
+                    "(default: at rest)")
+      ->expected(3, 6)
+      ->delimiter(',');
   track->add_flag("--no-prior", o.noPrior, "Fit without the animation prior");
   track->add_flag("--no-filter", o.noFilter, "Do not filter the head pose");
   track->callback([&o] { throw CLI::RuntimeError(runTrack(o)); });
@@ -351,7 +374,8 @@ void addBench(CLI::App& app, BenchOptions& o) {
   bench->footer(
       "Renders the default shot (or SHOT) at a fixed small size and reports medians of the repetitions,\n"
       "then per frame (--frames) the milliseconds before the first ray: geometry stages, scene update, set-up.\n"
-      "With --sph, the SPH liquid's particle updates per second on a dam break.\n"
+      "With --sph, the SPH liquid's particle updates per second on a dam break; with --tracking, the face\n"
+      "tracker's milliseconds a frame against the seed's (Weise et al. 2011: 20 Hz).\n"
       "With --quality, reports time to equal error, e.g.\n"
       "  lacrima bench --quality --width 160 --height 90 --max-spp 64 --target 0.05");
   bench->add_option("shot", o.shotPath, "Shot file (default: scenes/shots/tear_closeup.json)");
@@ -378,6 +402,12 @@ void addBench(CLI::App& app, BenchOptions& o) {
                   "times; median step, particle updates per second, solver iterations, surfacing milliseconds");
   bench->add_option("--particles", o.sphParticles, "--sph: particles (default 100000)")->check(integerIn(100, 10000000));
   bench->add_option("--steps", o.sphSteps, "--sph: measured steps (default 10)")->check(integerIn(1, 10000));
+  bench->add_flag("--tracking", o.tracking,
+                  "The face tracker's cost instead (lacrima track): per frame the rigid and non-rigid stages' "
+                  "milliseconds and the frames a second on a synthetic take of the ICT face, with lacrima's prior "
+                  "and one trained at the seed's size (20 analysers, 50 starts), against the take's truth");
+  bench->add_option("--track-frames", o.trackFrames, "--tracking: frames of the take (default 120, at 30 fps)")
+      ->check(integerIn(5, 100000));
   bench->add_option("--frame", o.frame, "--quality: the frame (default: the shot's first); --flesh: the last frame");
   bench->add_option("--reference-spp", o.referenceSpp,
                     "--quality: samples of the reference (its own noise adds in quadrature: 1024 against 64 spp "
@@ -401,6 +431,7 @@ void addBench(CLI::App& app, BenchOptions& o) {
         throw CLI::RuntimeError(o.quality ? runBenchQuality(o)
                                 : o.flesh ? runBenchFlesh(o)
                                 : o.sph   ? runBenchSph(o)
+                                : o.tracking ? runBenchTracking(o)
                                           : runBench(o));
       });
 }

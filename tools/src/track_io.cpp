@@ -175,20 +175,33 @@ const std::vector<std::string>& headChannelNames() {
   return names;
 }
 
-tracking::WeightSequence headChannels(const std::vector<Eigen::Isometry3d>& poses, const Vec3d& pivot) {
+Eigen::VectorXd channelsOfHeadMotion(const Eigen::Isometry3d& motion, const Vec3d& pivot) {
+  const double degree = 180.0 / std::numbers::pi;
+  const Eigen::Matrix3d& r = motion.linear();
+  // R = Rz Ry Rx: x in (-180, 180], y in [-90, 90], z in (-180, 180].
+  Eigen::VectorXd channels(6);
+  channels << std::atan2(r(2, 1), r(2, 2)) * degree, std::asin(std::clamp(-r(2, 0), -1.0, 1.0)) * degree,
+      std::atan2(r(1, 0), r(0, 0)) * degree, motion.translation() + r * pivot - pivot;
+  return channels;
+}
+
+Eigen::Isometry3d headMotionOfChannels(const Eigen::VectorXd& channels, const Vec3d& pivot) {
+  const double radian = std::numbers::pi / 180.0;
+  Eigen::Isometry3d motion = Eigen::Isometry3d::Identity();
+  motion.linear() = (Eigen::AngleAxisd(channels[2] * radian, Vec3d::UnitZ()) *
+                     Eigen::AngleAxisd(channels[1] * radian, Vec3d::UnitY()) *
+                     Eigen::AngleAxisd(channels[0] * radian, Vec3d::UnitX()))
+                        .toRotationMatrix();
+  motion.translation() = pivot + channels.segment<3>(3) - motion.linear() * pivot;
+  return motion;
+}
+
+tracking::WeightSequence headChannels(const std::vector<Eigen::Isometry3d>& poses, const Vec3d& pivot,
+                                      const Eigen::Isometry3d& start) {
   tracking::WeightSequence out;
   if (poses.empty()) return out;
   const Eigen::Isometry3d first = poses.front();
-  const double degree = 180.0 / std::numbers::pi;
-  for (const Eigen::Isometry3d& pose : poses) {
-    const Eigen::Isometry3d motion = first.inverse() * pose;
-    const Eigen::Matrix3d& r = motion.linear();
-    // R = Rz Ry Rx: x in (-180, 180], y in [-90, 90], z in (-180, 180].
-    Eigen::VectorXd channels(6);
-    channels << std::atan2(r(2, 1), r(2, 2)) * degree, std::asin(std::clamp(-r(2, 0), -1.0, 1.0)) * degree,
-        std::atan2(r(1, 0), r(0, 0)) * degree, motion.translation() + r * pivot - pivot;
-    out.push_back(channels);
-  }
+  for (const Eigen::Isometry3d& pose : poses) out.push_back(channelsOfHeadMotion(start * first.inverse() * pose, pivot));
   return out;
 }
 

@@ -43,11 +43,16 @@ void writeLandmarksCsv(const std::filesystem::path& file, const LandmarkTrack& t
 void writeWeightsCsv(const std::filesystem::path& file, const std::vector<std::string>& names, int firstFrame,
                      const tracking::WeightSequence& weights);
 
-// The head's motion since the first frame as a face rig's head channels: the motion in the
-// asset's own axes, M_i = P_0^-1 P_i (P: model to camera), written as the rig turns the head,
-// p -> R (p - pivot) + pivot + t (Euler degrees, x first; metres): per frame
-// [head.rx, head.ry, head.rz, head.tx, head.ty, head.tz].
+// A face rig's head channels [head.rx, head.ry, head.rz, head.tx, head.ty, head.tz] (Euler
+// degrees, x first; metres) and the motion they make, p -> R (p - pivot) + pivot + t.
 const std::vector<std::string>& headChannelNames();
-tracking::WeightSequence headChannels(const std::vector<Eigen::Isometry3d>& poses, const Vec3d& pivot);
+Eigen::VectorXd channelsOfHeadMotion(const Eigen::Isometry3d& motion, const Vec3d& pivot);
+Eigen::Isometry3d headMotionOfChannels(const Eigen::VectorXd& channels, const Vec3d& pivot);
+
+// The head's motion since the first frame as the head channels, after the head's pose at the
+// first frame (`start`, a motion in the asset's own axes; identity: the track starts at rest):
+// start M_i with M_i = P_0^-1 P_i (P: model to camera).
+tracking::WeightSequence headChannels(const std::vector<Eigen::Isometry3d>& poses, const Vec3d& pivot,
+                                      const Eigen::Isometry3d& start = Eigen::Isometry3d::Identity());
 
 }  // namespace lacrima::cli

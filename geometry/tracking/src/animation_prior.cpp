@@ -251,6 +251,30 @@ WeightSequence keyedPerformance(const std::vector<Eigen::VectorXd>& expressions,
   return sequence;
 }
 
+void addSpontaneousBlinks(WeightSequence& performance, const Eigen::VectorXd& blink, double fps, uint64_t seed) {
+  const auto uniform = [&](uint64_t a, uint64_t b) { return double(uint64ToUnitFloat(hashCombine(hashCombine(seed, a), b))); };
+  const auto framesOf = [&](double seconds) { return std::max(1, int(std::lround(seconds * fps))); };
+  double start = 0.0;
+  for (uint64_t n = 0;; ++n) {
+    start += (2.0 + 4.0 * uniform(n, 0)) * fps;  // frames to the next blink
+    const int first = int(start);
+    if (first >= int(performance.size())) return;
+    const double closing = 0.07 + 0.03 * uniform(n, 1);
+    const int close = framesOf(closing), shut = int(std::lround(0.07 * uniform(n, 2) * fps)), open = framesOf(2.0 * closing);
+    for (int i = 0; i < close + shut + open && first + i < int(performance.size()); ++i) {
+      const double closure = i < close ? double(i + 1) / double(close)
+                             : i < close + shut ? 1.0
+                                                : 1.0 - double(i - close - shut + 1) / double(open + 1);
+      Eigen::VectorXd& w = performance[size_t(first + i)];
+      w = w.cwiseMax(closure * blink).cwiseMin(1.0);
+    }
+  }
+}
+
+Eigen::VectorXd blinkExpression(const std::vector<std::string>& targetNames) {
+  return archetypalExpressions(targetNames).at(7);  // the recipes' blink
+}
+
 std::vector<Eigen::VectorXd> archetypalExpressions(const std::vector<std::string>& targetNames) {
   using Recipe = std::vector<std::pair<const char*, double>>;
   // "_LR" stands for both sides.
@@ -291,14 +315,22 @@ std::vector<Eigen::VectorXd> archetypalExpressions(const std::vector<std::string
   return out;
 }
 
-AnimationPrior archetypalPrior(const std::vector<std::string>& targetNames) {
-  const std::vector<Eigen::VectorXd> expressions = archetypalExpressions(targetNames);
-  std::vector<WeightSequence> training;
-  for (uint64_t s = 0; s < 30; ++s) training.push_back(keyedPerformance(expressions, 120, 1000 + s));
+AnimationPriorParams archetypalPriorParams() {
   AnimationPriorParams params;
   params.components = 10;
   params.restarts = 1;
   params.iterations = 30;
+  params.keptVariance = 0.999;
+  return params;
+}
+
+AnimationPrior archetypalPrior(const std::vector<std::string>& targetNames, const AnimationPriorParams& params) {
+  const std::vector<Eigen::VectorXd> expressions = archetypalExpressions(targetNames);
+  std::vector<WeightSequence> training;
+  for (uint64_t s = 0; s < 30; ++s) {
+    training.push_back(keyedPerformance(expressions, 120, 1000 + s));
+    addSpontaneousBlinks(training.back(), blinkExpression(targetNames), 30.0, 2000 + s);
+  }
   return AnimationPrior::train(training, params);
 }
 

@@ -1,6 +1,7 @@
 // The tracker frame by frame; see performance_tracker.hpp.
 #include "lacrima/tracking/performance_tracker.hpp"
 
+#include <chrono>
 #include <stdexcept>
 
 namespace lacrima::tracking {
@@ -15,6 +16,8 @@ PerformanceTracker::PerformanceTracker(const BlendshapeModel& model, const Anima
 
 TrackedFrame PerformanceTracker::track(const DepthFrame& frame, const std::vector<Eigen::Vector2d>& landmarks) {
   TrackedFrame out;
+  const auto seconds = [](auto since) { return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count(); };
+  const auto rigidStart = std::chrono::steady_clock::now();
   // Rigid: the previous frame's reconstruction, its upper face, against the new depth.
   const TriangleMesh previous = model_.shape(history_.front());
   std::vector<Vec3d> points, normals;
@@ -26,6 +29,8 @@ TrackedFrame PerformanceTracker::track(const DepthFrame& frame, const std::vecto
   pose_ = out.rigid.pose;
   out.rawPose = pose_;
   out.pose = params_.filterPose ? filter_.add(pose_) : pose_;
+  out.rigidSeconds = seconds(rigidStart);
+  const auto fitStart = std::chrono::steady_clock::now();
   // Non-rigid, at the filtered pose, from the previous weights.
   // The first frame has no past: its window is the frame itself held (a still face), and it is
   // fitted from the neutral face, so with more iterations.
@@ -39,6 +44,7 @@ TrackedFrame PerformanceTracker::track(const DepthFrame& frame, const std::vecto
   BlendshapeFitParams fit = params_.fit;
   if (first) fit.iterations *= 3;
   out.fit = fitBlendshapes(model_, frame, landmarks, out.pose, history_.front(), fit, prior);
+  out.fitSeconds = seconds(fitStart);
   ++tracked_;
   out.weights = out.fit.weights;
   if (first) history_.clear();  // the neutral start was no frame

@@ -54,9 +54,28 @@ using GltfAssetLoader = std::function<std::shared_ptr<const GltfAsset>(const std
 // same large assets (the shot fuzzer, tests/fuzz) can share one loaded copy between them.
 Shot loadShot(const std::filesystem::path& path, const GltfAssetLoader& loadAsset);
 
+// A recorded or tracked take played on one of the shot's assets instead of the animation the shot
+// gives it (`lacrima render --performance`, docs/tracking.md): the asset's keyed blendshapes,
+// animator controls, keyed joints and performance track are dropped, and `file` (a performance
+// CSV: weights and, on an asset with a rig, joint channels such as head.rx) plays from the shot's
+// first frame. Everything else (tears, flesh, eyes, details) follows the face the track poses.
+struct PerformanceOverride {
+  std::string asset;            // the asset's name in the shot
+  std::filesystem::path file;   // absolute, or relative to the working directory
+  std::optional<double> fps;    // the track's frame rate; none: the shot's
+};
+
+// loadShot with takes played on assets; an unknown asset name is a ShotError at /assets.
+Shot loadShot(const std::filesystem::path& path, const std::vector<PerformanceOverride>& performances);
+
 // Builds the renderer input for one frame number (assets are loaded once and cached inside
 // the Shot's asset cache). Throws InputError for missing/corrupt assets.
 Frame buildFrame(const Shot& shot, int frameNumber);
+
+// The face pose of `shot.assets[assetIndex]` at a (fractional) frame: its blendshape weights from
+// every source (indexed like its glTF's targetNames, clamped to [0, 1]) and its rig joints, as the
+// frame is built with them.
+FacePose assetFacePoseAt(const Shot& shot, size_t assetIndex, double frame);
 
 // Replaces a run of '#' (e.g. "####") with the zero-padded frame number.
 std::string expandFramePattern(const std::string& pattern, int frameNumber);

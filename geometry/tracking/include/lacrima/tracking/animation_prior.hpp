@@ -82,15 +82,28 @@ class AnimationPrior {
 // keys by smoothstep, clamped to [0, 1]. Deterministic in `seed`.
 WeightSequence keyedPerformance(const std::vector<Eigen::VectorXd>& expressions, int frames, uint64_t seed);
 
+// Spontaneous blinks laid over a performance, as a face blinks whatever its expression: one every
+// 2-6 s (a resting adult's 15-20 a minute, Bentivoglio et al. 1997), the lids closing in 70-100 ms,
+// held shut for up to 70 ms and opening in twice the closing time (VanderWerf et al. 2003).
+// The lids close over whatever the face does: each weight is raised to at least the closure times
+// its `blink` weight (the eyes-shut weights), the others kept. Deterministic in `seed`.
+void addSpontaneousBlinks(WeightSequence& performance, const Eigen::VectorXd& blink, double fps, uint64_t seed);
+
 // Archetypal expressions over ARKit-style target names (the ICT face's), as FACS-style
 // combinations of action units (Ekman & Friesen 1978): smile, sadness (the default shot's), sob,
 // surprise, anger, disgust, fear, a blink, a pucker, jaw open, and a left and right smirk. Targets
 // the names do not have are left out.
 std::vector<Eigen::VectorXd> archetypalExpressions(const std::vector<std::string>& targetNames);
 
+// The eyes-shut weights: the archetypal blink's.
+Eigen::VectorXd blinkExpression(const std::vector<std::string>& targetNames);
+
 // The prior lacrima trains when a production gives no animations: 30 keyed performances of 120
-// frames blending the archetypal expressions, 10 analysers, one EM start of 30 iterations (about
-// 0.1 s for the ICT face's 57 targets; docs/tracking.md, "Training data").
-AnimationPrior archetypalPrior(const std::vector<std::string>& targetNames);
+// frames at 30 fps blending the archetypal expressions, with spontaneous blinks, 10 analysers, one EM start of 30 iterations (about
+// 0.1 s for the ICT face's 57 targets; docs/tracking.md, "Training data"); or with other EM
+// settings (`lacrima bench --tracking` trains it at the seed's size too).
+AnimationPriorParams archetypalPriorParams();
+AnimationPrior archetypalPrior(const std::vector<std::string>& targetNames,
+                               const AnimationPriorParams& params = archetypalPriorParams());
 
 }  // namespace lacrima::tracking

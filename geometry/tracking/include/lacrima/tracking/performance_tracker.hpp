@@ -29,6 +29,8 @@ struct TrackedFrame {
   Eigen::VectorXd weights;
   RigidIcpResult rigid;
   BlendshapeFitResult fit;
+  // Wall-clock seconds of the two stages (the rigid one with the pose filter), for benchmarks.
+  double rigidSeconds = 0.0, fitSeconds = 0.0;
 };
 
 class PerformanceTracker {
