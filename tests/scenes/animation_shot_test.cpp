@@ -146,6 +146,43 @@ TEST(AnimatedShot, APerformanceTracksHeadChannelsTurnTheHeadThroughTheRig) {
       << message;
 }
 
+TEST(AnimatedShot, APlayedTakeReplacesTheAssetsOwnAnimation) {
+  // `lacrima render --performance face=take.csv`: the keyed weights and joints give way to the take.
+  const auto dir = writeShot("placeholder.json", "").parent_path();
+  std::ofstream(dir / "take.csv") << "frame,mouthSmile_L,head.ry\n1,0.2,0\n5,0.6,8\n";
+  const auto shotFile = writeShot("keyed_then_played.json", faceShot(R"("rig": {"preset": "ict"},
+      "blendshapes": {"jawOpen": {"keys": [[1, 0.2], [5, 0.9]]}},
+      "joints": {"head.rx": 10})"));
+  const Shot keyed = loadShot(shotFile);
+  const FacePose own = assetFacePoseAt(keyed, 0, 3);
+  const GltfAsset& gltf = *keyed.assets[0].gltf;
+  const auto weightOf = [&](const FacePose& pose, const std::string& name) {
+    return pose.blendshapeWeights[size_t(std::find(gltf.targetNames.begin(), gltf.targetNames.end(), name) -
+                                         gltf.targetNames.begin())];
+  };
+  EXPECT_GT(weightOf(own, "jawOpen"), 0.2f);
+  EXPECT_FLOAT_EQ(own.head.eulerDegrees.x(), 10.0f);
+
+  const Shot played = loadShot(shotFile, {PerformanceOverride{"face", dir / "take.csv", 24.0}});
+  const FacePose take = assetFacePoseAt(played, 0, 3);  // halfway between the take's two samples
+  EXPECT_FLOAT_EQ(weightOf(take, "jawOpen"), 0.0f);
+  EXPECT_NEAR(weightOf(take, "mouthSmile_L"), 0.4f, 1e-6f);
+  EXPECT_TRUE(take.head.eulerDegrees.isApprox(Vec3(0, 4, 0), 1e-6f)) << take.head.eulerDegrees.transpose();
+  expectPositionsNear(faceMesh(buildFrame(played, 3), played).mesh.positions,
+                      FaceRig(gltf, ictFaceRigConfig(gltf)).evaluatePrimitive(facePrimitive(gltf), take).positions, 1e-5f);
+
+  // An asset the shot does not have is named, with the shot's assets.
+  try {
+    loadShot(shotFile, {PerformanceOverride{"nose", dir / "take.csv", std::nullopt}});
+    ADD_FAILURE() << "no error for an unknown asset";
+  } catch (const ShotError& e) {
+    ASSERT_EQ(e.diagnostics().size(), 1u);
+    EXPECT_EQ(e.diagnostics()[0].jsonPath, "/assets");
+    EXPECT_NE(e.diagnostics()[0].message.find("no asset named 'nose'"), std::string::npos) << e.what();
+    EXPECT_NE(e.diagnostics()[0].message.find("'face'"), std::string::npos) << e.what();
+  }
+}
+
 TEST(AnimatedShot, ShutterGivesMovingGeometryItsPositionsAtClose) {
   const std::string drop =
       R"("shapes": [{"type": "sphere", "radius": 0.01, "material": "water", "center": {"keys": [[1, [0, 0, 0]], [5, [0, -0.4, 0]]], "interpolation": "linear"}}])";

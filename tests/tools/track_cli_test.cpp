@@ -90,6 +90,77 @@ TEST(TrackCli, APerformanceRenderedByLacrimaItselfIsTrackedBack) {
   expectTrackedWithin(dir, 0.06, 1.0);  // measured on 30 frames: weight RMSE 0.030, 0.36 mm
 }
 
+// The value of `column` in the CSV's row `row` (0: the first after the header).
+double csvValue(const fs::path& file, const std::string& column, int row) {
+  std::ifstream in(file);
+  std::string line, cell;
+  std::getline(in, line);
+  std::stringstream header(line);
+  int index = 0;
+  while (std::getline(header, cell, ',') && cell != column) ++index;
+  for (int r = 0; r <= row; ++r) std::getline(in, line);
+  std::stringstream values(line);
+  for (int c = 0; c <= index; ++c) std::getline(values, cell, ',');
+  return std::stod(cell);
+}
+
+TEST(TrackCli, AShotsOwnPerformanceIsCapturedTrackedAndPlayedBackByTheShot) {
+  const fs::path dir = test::testDirectory("track_cli_shot", /*fresh=*/true);
+  // A bowed, tilted head (the staging) that sobs once while the brows rise and the jaw drops.
+  std::ofstream(dir / "cry.json") << R"({
+  "version": 1,
+  "frames": {"start": 1, "end": 8, "fps": 24},
+  "output": "cry.####.exr",
+  "render": {"width": 32, "height": 32, "spp": 1},
+  "camera": {"position": [0, 0, 0.6], "lookAt": [0, 0, 0], "fov": 30},
+  "materials": {"skin": {"type": "skin", "albedo": [0.62, 0.43, 0.35]}},
+  "lights": [{"type": "sphere", "center": [0.4, 0.5, 0.6], "radius": 0.05, "power": 40}],
+  "assets": [{"name": "face", "file": ")" + std::string(LACRIMA_SOURCE_DIR) + R"(/scenes/assets/ict-face/ict_face.glb",
+              "materials": {"M_Face": "skin"}, "rig": {"preset": "ict"},
+              "blendshapes": {"browInnerUp_L": {"keys": [[1, 0.2], [8, 0.8]]}, "browInnerUp_R": {"keys": [[1, 0.2], [8, 0.8]]},
+                              "jawOpen": {"keys": [[1, 0], [5, 0.4], [8, 0.1]]}},
+              "joints": {"head.rx": {"keys": [[1, 5], [4, 7], [8, 5.5]]}, "head.rz": 10}}]
+})";
+  const auto made = lacrima("track --synthesize " + test::shellQuote((dir / "perf").string()) + " --from-shot " +
+                            test::shellQuote((dir / "cry.json").string()));
+  ASSERT_EQ(made.exitStatus, 0) << made.output;
+  EXPECT_TRUE(fs::exists(dir / "perf" / "depth.0008.exr")) << "the shot's frames 1-8";
+  EXPECT_FALSE(fs::exists(dir / "perf" / "depth.0009.exr"));
+  EXPECT_NEAR(csvValue(dir / "perf" / "truth_performance.csv", "head.rx", 3), 7.0, 1e-4) << "the shot's head at frame 4";
+  EXPECT_NEAR(csvValue(dir / "perf" / "truth_performance.csv", "jawOpen", 4), 0.4, 1e-4);
+
+  const auto tracked = lacrima("track " + test::shellQuote((dir / "perf" / "performance.json").string()) + " --out " +
+                               test::shellQuote((dir / "track").string()) + " --head-start 5,0,10 --no-filter");
+  ASSERT_EQ(tracked.exitStatus, 0) << tracked.output;
+  EXPECT_NE(tracked.output.find("against truth_weights.csv"), std::string::npos) << tracked.output;
+  // The head's channels are the staging followed by the tracked motion.
+  for (int row : {0, 3, 7})
+    for (const char* channel : {"head.rx", "head.ry", "head.rz"})
+      EXPECT_NEAR(csvValue(dir / "track" / "performance.csv", channel, row),
+                  csvValue(dir / "perf" / "truth_performance.csv", channel, row), 0.3)
+          << channel << " at frame " << row + 1;
+
+  const auto played = lacrima("render " + test::shellQuote((dir / "cry.json").string()) + " --performance face=" +
+                              test::shellQuote((dir / "track" / "performance.csv").string()) + " --frames 4 --out " +
+                              test::shellQuote((dir / "played.####.exr").string()) + " -q");
+  EXPECT_EQ(played.exitStatus, 0) << played.output;
+  EXPECT_TRUE(fs::exists(dir / "played.0004.exr"));
+  const auto noEquals = lacrima("render " + test::shellQuote((dir / "cry.json").string()) + " --performance face --out " +
+                                test::shellQuote((dir / "bad.####.exr").string()));
+  EXPECT_EQ(noEquals.exitStatus, 2);
+  EXPECT_NE(noEquals.output.find("--performance face: expected ASSET=FILE"), std::string::npos) << noEquals.output;
+  const auto noAsset = lacrima("render " + test::shellQuote((dir / "cry.json").string()) + " --performance nose=" +
+                               test::shellQuote((dir / "track" / "performance.csv").string()) + " --out " +
+                               test::shellQuote((dir / "bad.####.exr").string()));
+  EXPECT_EQ(noAsset.exitStatus, 2);
+  EXPECT_NE(noAsset.output.find("no asset named 'nose'"), std::string::npos) << noAsset.output;
+  EXPECT_FALSE(fs::exists(dir / "bad.0001.exr"));
+  const auto twoValues = lacrima("track " + test::shellQuote((dir / "perf" / "performance.json").string()) +
+                                 " --head-start 5,0 --out " + test::shellQuote((dir / "bad_track").string()));
+  EXPECT_NE(twoValues.exitStatus, 0);
+  EXPECT_FALSE(fs::exists(dir / "bad_track"));
+}
+
 TEST(TrackCli, BadPerformancesAndOptionsAreReportedAndWriteNothing) {
   const fs::path dir = test::testDirectory("track_cli_bad", /*fresh=*/true);
   std::ofstream(dir / "performance.json") << R"({"version": 1, "frames": {"start": 1, "end": 2}, "depth": "d.####.exr"})";

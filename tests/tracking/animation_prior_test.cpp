@@ -51,6 +51,34 @@ TEST(KeyedPerformance, IsDeterministicBoundedAndSmooth) {
   EXPECT_FALSE(keyedPerformance(expressions, 200, 6)[50] == a[50]) << "another seed, another performance";
 }
 
+TEST(SpontaneousBlinks, AFaceBlinksEveryTwoToSixSecondsEachBlinkShortAndFull) {
+  // Two targets: the lid (the blink's) and another the blinks leave alone.
+  Eigen::VectorXd shut = Eigen::VectorXd::Zero(2);
+  shut[0] = 1.0;
+  const double fps = 30.0;
+  WeightSequence minute(size_t(60.0 * fps), Eigen::Vector2d(0.2, 0.7));
+  addSpontaneousBlinks(minute, shut, fps, 9);
+  WeightSequence again(minute.size(), Eigen::Vector2d(0.2, 0.7));
+  addSpontaneousBlinks(again, shut, fps, 9);
+  int blinks = 0, longest = 0, run = 0;
+  for (size_t i = 0; i < minute.size(); ++i) {
+    EXPECT_TRUE(minute[i] == again[i]) << "deterministic";
+    EXPECT_EQ(minute[i][1], 0.7) << "the other target untouched";
+    EXPECT_GE(minute[i][0], 0.2) << "a blink closes over the expression, never opens it";
+    const bool closing = minute[i][0] > 0.2;
+    if (closing && run == 0) ++blinks;
+    run = closing ? run + 1 : 0;
+    longest = std::max(longest, run);
+    if (minute[i][0] == 1.0) EXPECT_GT(minute[i - 1][0], 0.2) << "the lids shut over a frame or more, not at once";
+  }
+  const double shutFrames = double(std::count_if(minute.begin(), minute.end(), [](const Eigen::VectorXd& w) { return w[0] == 1.0; }));
+  std::printf("[ blinks ] %d in a minute, the longest %d frames at %g fps, %g frames shut\n", blinks, longest, fps, shutFrames);
+  EXPECT_GE(blinks, 10);  // one every 2-6 s: 10 to 30 a minute
+  EXPECT_LE(blinks, 30);
+  EXPECT_LE(longest, 12) << "a blink lasts under 400 ms";
+  EXPECT_GE(shutFrames, double(blinks)) << "every blink shuts the lids";
+}
+
 AnimationPriorParams smallPrior() {
   AnimationPriorParams p;
   p.components = 6;
