@@ -1795,8 +1795,12 @@ void applyPerformanceOverrides(Json& root, const std::vector<PerformanceOverride
       continue;
     }
     for (const char* member : {"blendshapes", "controls", "joints", "performance"}) target->erase(member);
-    Json performance = {{"file", fs::absolute(take.file).lexically_normal().string()}};
-    if (take.fps) performance["fps"] = *take.fps;
+    // A take's frames are the shot's unless told otherwise (a shot's own "performance" defaults to
+    // 30 fps, a capture rig's rate).
+    const Json* frames = root.contains("frames") ? &root["frames"] : nullptr;
+    const bool shotFps = frames && frames->is_object() && frames->contains("fps") && (*frames)["fps"].is_number();
+    Json performance = {{"file", fs::absolute(take.file).lexically_normal().string()},
+                        {"fps", take.fps ? *take.fps : shotFps ? (*frames)["fps"].get<double>() : Shot{}.fps}};
     (*target)["performance"] = std::move(performance);
   }
 }

@@ -20,6 +20,7 @@
 #include "lacrima/tracking/initial_pose.hpp"
 #include "lacrima/tracking/performance_tracker.hpp"
 #include "lacrima/tracking/synthetic_capture.hpp"
+#include "landmark_io.hpp"
 #include "synthetic_take.hpp"
 #include "track_io.hpp"
 
@@ -107,6 +108,7 @@ int synthesize(const TrackOptions& o, const BlendshapeModel& model, const Vec3d&
     render.quiet = true;
     if (const int status = runRender(render); status != kExitOk) return status;
   }
+  const LandmarkDetectorErrors detector{o.landmarkNoise, o.contourDrift, o.dropHiddenLandmarks};
   LandmarkTrack landmarks;
   for (int i = 0; i < frames; ++i) {
     const int frame = m.firstFrame + i;
@@ -120,15 +122,16 @@ int synthesize(const TrackOptions& o, const BlendshapeModel& model, const Vec3d&
       depth = captureDepth(model, take.weights[size_t(i)], pose, m.camera, o.noise, noiseSeed);
     }
     writeDepthExr(expandFramePattern(m.depthPattern, frame), depth);
-    landmarks[frame] = projectLandmarks(model, take.weights[size_t(i)], pose, m.camera, o.landmarkNoise,
-                                        hashCombine(o.seed, uint64_t(frame) + 7));
+    landmarks[frame] = detectLandmarks(model, take.weights[size_t(i)], pose, m.camera, detector, hashCombine(o.seed, 7),
+                                       frame, double(i) / take.fps, &depth);
   }
   writeLandmarksCsv(m.landmarks, landmarks);
   writePerformanceManifest(m);
-  std::printf("synthesized %d frames of %s (depth %s, noise x%g; landmarks +-%g px) in %s: performance.json, "
+  std::printf("synthesized %d frames of %s (depth %s, noise x%g; landmarks +-%g px%s%s) in %s: performance.json, "
               "depth.####.exr, landmarks.csv, truth_weights.csv, truth_performance.csv\n",
               frames, take.description.c_str(), o.render ? "rendered by lacrima (Z AOV)" : "rasterised", o.noise,
-              o.landmarkNoise, dir.string().c_str());
+              o.landmarkNoise, o.contourDrift > 0 ? fmt::format(", jaw line drifting {} px", o.contourDrift).c_str() : "",
+              o.dropHiddenLandmarks ? ", hidden ones dropped" : "", dir.string().c_str());
   return kExitOk;
 }
 
@@ -146,11 +149,12 @@ Eigen::Isometry3d headStart(const TrackOptions& o, const Vec3d& headPivot) {
 
 int track(const TrackOptions& o, const BlendshapeModel& model, const Vec3d& headPivot) {
   const PerformanceManifest m = readPerformanceManifest(o.performance);
-  const LandmarkTrack landmarks = m.landmarks.empty() ? LandmarkTrack{} : readLandmarksCsv(m.landmarks);
+  const LandmarkTrack landmarks = m.landmarks.empty() ? LandmarkTrack{} : readLandmarks(m.landmarks);
   const std::optional<AnimationPrior> prior = o.noPrior ? std::nullopt : std::optional(archetypalPrior(model.targetNames));
   TrackerParams params;
   params.filterPose = !o.noFilter;
   params.upperFaceAbove = noseTipHeight(model);
+  params.fit.sigmaLandmark = o.landmarkSigma;
   std::optional<PerformanceTracker> tracker;
   WeightSequence weights;
   std::vector<Eigen::Isometry3d> poses;

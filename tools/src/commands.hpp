@@ -62,6 +62,9 @@ struct TrackOptions {
   int frames = 60;                  // --synthesize: frames
   double noise = 1.0;               // --synthesize: x a Kinect's depth noise
   double landmarkNoise = 1.0;       // --synthesize: landmarks jittered by up to this (pixels)
+  double contourDrift = 0.0;        // --synthesize: jaw-line landmarks wander along it by up to this (pixels)
+  bool dropHiddenLandmarks = false;  // --synthesize: landmarks the camera does not see are missing
+  double landmarkSigma = 1.0;       // tracking: the landmark term's unit of error (pixels)
   uint64_t seed = 1;                // --synthesize: the performance and the noise
   bool render = false;               // --synthesize: depth from lacrima's path tracer (Z AOV)
   std::string fromShot;              // --synthesize: the take is this shot's animation of an asset ...

@@ -279,6 +279,17 @@ void addTrack(CLI::App& app, TrackOptions& o) {
   track->add_option("--noise", o.noise, "--synthesize: depth noise, times a Kinect's (default 1; 0: none)")->check(CLI::Range(0.0, 100.0));
   track->add_option("--landmark-noise", o.landmarkNoise, "--synthesize: landmarks jittered by up to this many pixels (default 1)")
       ->check(CLI::Range(0.0, 100.0));
+  track->add_option("--contour-drift", o.contourDrift,
+                    "--synthesize: the jaw line's 17 landmarks wander along the contour by up to this many pixels, "
+                    "each over 2-5 s, as a detector's do (default 0)")
+      ->check(CLI::Range(0.0, 100.0));
+  track->add_flag("--drop-hidden-landmarks", o.dropHiddenLandmarks,
+                  "--synthesize: landmarks the camera does not see (turned away, or behind the cheek) are missing, "
+                  "as a detector drops its low-confidence points");
+  track->add_option("--landmark-sigma", o.landmarkSigma,
+                    "The landmarks' typical error in pixels: how much the fit trusts them against the depth "
+                    "(default 1, a good detector on a sharp frame; 2-4 for a phone's video)")
+      ->check(CLI::Range(0.05, 1000.0));
   track->add_option("--seed", o.seed, "--synthesize: the performance's and the noise's seed (default 1)");
   track->add_flag("--render", o.render,
                   "--synthesize: the depth from lacrima's own path tracer (the Z AOV of capture.json, every part of "

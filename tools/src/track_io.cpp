@@ -31,13 +31,6 @@ double number(const Json& object, const char* key, const std::filesystem::path& 
   return value;
 }
 
-std::vector<std::string> splitCsvLine(const std::string& line) {
-  std::vector<std::string> cells;
-  std::stringstream in(line);
-  for (std::string cell; std::getline(in, cell, ',');) cells.push_back(cell);
-  return cells;
-}
-
 }  // namespace
 
 PerformanceManifest readPerformanceManifest(const std::filesystem::path& file) {
@@ -70,7 +63,8 @@ PerformanceManifest readPerformanceManifest(const std::filesystem::path& file) {
     throw InputError(fmt::format("{}: 'depth' must be the depth EXRs' path pattern, e.g. \"depth.####.exr\"", file.string()));
   m.depthPattern = (file.parent_path() / json["depth"].get<std::string>()).string();
   if (json.contains("landmarks")) {
-    if (!json["landmarks"].is_string()) throw InputError(fmt::format("{}: 'landmarks' must be a CSV file name", file.string()));
+    if (!json["landmarks"].is_string())
+      throw InputError(fmt::format("{}: 'landmarks' must be a file name (CSV or JSON)", file.string()));
     m.landmarks = file.parent_path() / json["landmarks"].get<std::string>();
   }
   return m;
@@ -120,40 +114,6 @@ void writeDepthExr(const std::filesystem::path& file, const tracking::DepthFrame
       !output->close())
     throw InputError(fmt::format("cannot write the depth map '{}': {}", file.string(), OIIO::geterror()));
   std::filesystem::rename(temporary, file);
-}
-
-LandmarkTrack readLandmarksCsv(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  if (!in) throw InputError(fmt::format("cannot open the landmarks '{}'", file.string()));
-  std::string line;
-  std::getline(in, line);
-  if (line.rfind("frame,landmark,u,v", 0) != 0)
-    throw InputError(fmt::format("{}:1: expected the header 'frame,landmark,u,v'", file.string()));
-  LandmarkTrack track;
-  for (int row = 2; std::getline(in, line); ++row) {
-    if (line.empty()) continue;
-    const std::vector<std::string> cells = splitCsvLine(line);
-    try {
-      if (cells.size() != 4) throw std::invalid_argument("cells");
-      const int frame = std::stoi(cells[0]), landmark = std::stoi(cells[1]);
-      if (landmark < 0 || landmark >= 68) throw std::out_of_range("landmark");
-      auto& points = track[frame];
-      if (points.empty()) points.assign(68, Eigen::Vector2d::Constant(std::numeric_limits<double>::quiet_NaN()));
-      points[size_t(landmark)] = Eigen::Vector2d(std::stod(cells[2]), std::stod(cells[3]));
-    } catch (const std::exception&) {
-      throw InputError(fmt::format("{}:{}: expected 'frame,landmark,u,v' with a landmark in 0-67, found '{}'", file.string(), row, line));
-    }
-  }
-  return track;
-}
-
-void writeLandmarksCsv(const std::filesystem::path& file, const LandmarkTrack& track) {
-  writeFileAtomically(file, "the landmarks", [&](std::ostream& out) {
-    out << "frame,landmark,u,v\n";
-    for (const auto& [frame, points] : track)
-      for (size_t l = 0; l < points.size(); ++l)
-        if (points[l].allFinite()) out << fmt::format("{},{},{:.3f},{:.3f}\n", frame, l, points[l].x(), points[l].y());
-  });
 }
 
 void writeWeightsCsv(const std::filesystem::path& file, const std::vector<std::string>& names, int firstFrame,

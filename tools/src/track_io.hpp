@@ -3,7 +3,6 @@
 // per-frame depth EXRs and the landmarks CSV), and the tracks it writes (a weight track in the
 // shot format's `performance` CSV, and the head pose per frame).
 #include <filesystem>
-#include <map>
 #include <string>
 #include <vector>
 
@@ -24,7 +23,7 @@ struct PerformanceManifest {
   std::filesystem::path landmarks;   // resolved; empty: none
 };
 
-// Reads and checks a manifest; throws InputError naming the file and the key.
+// Reads and checks a manifest (its landmarks: landmark_io.hpp); throws InputError naming the file and the key.
 PerformanceManifest readPerformanceManifest(const std::filesystem::path& file);
 void writePerformanceManifest(const PerformanceManifest& manifest);
 
@@ -32,12 +31,6 @@ void writePerformanceManifest(const PerformanceManifest& manifest);
 // camera's size. Throws InputError naming the file.
 tracking::DepthFrame readDepthExr(const std::filesystem::path& file, const tracking::PinholeCamera& camera);
 void writeDepthExr(const std::filesystem::path& file, const tracking::DepthFrame& frame);
-
-// landmarks.csv: "frame,landmark,u,v" (pixels, iBUG 68 numbering); per frame, 68 points (NaN
-// where a landmark is missing).
-using LandmarkTrack = std::map<int, std::vector<Eigen::Vector2d>>;
-LandmarkTrack readLandmarksCsv(const std::filesystem::path& file);
-void writeLandmarksCsv(const std::filesystem::path& file, const LandmarkTrack& track);
 
 // The shot format's performance CSV: "frame,<target>,..." one row per frame.
 void writeWeightsCsv(const std::filesystem::path& file, const std::vector<std::string>& names, int firstFrame,

@@ -49,7 +49,8 @@ BlendshapeModel blendshapeModelOf(const GltfAsset& asset, const std::string& par
 struct BlendshapeFitParams {
   int iterations = 6;
   double sigmaGeometry = 0.001;    // metres: the depth term's unit of error
-  double sigmaLandmark = 1.0;      // pixels: the landmark term's unit of error
+  double sigmaLandmark = 1.0;      // pixels: the landmark term's unit of error (a detector's on a
+                                   // sharp frame; raise it for a noisier one: lacrima track --landmark-sigma)
   double maxDistance = 0.01;       // metres between a vertex and its measured point
   double damping = 1e-3;           // added to the normal equations' diagonal (Levenberg's damping)
   double minTargetMotion = 1e-4;   // metres: targets moving no vertex this far are not fitted (the
