@@ -43,24 +43,31 @@ double finiteNumber(const std::string& cell) {
   return value;
 }
 
-LandmarkTrack readLongCsv(std::istream& in, const std::filesystem::path& file) {
-  LandmarkTrack track;
+// Calls readRow(cells) for every line after the header that is not blank; a row it rejects (by
+// any exception) is an InputError naming the file, the line and what was `expected`.
+template <class ReadRow>
+void readRows(std::istream& in, const std::filesystem::path& file, const std::string& expected, ReadRow readRow) {
   std::string line;
   for (int row = 2; std::getline(in, line); ++row) {
     if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-    const std::vector<std::string> cells = csvCells(line);
     try {
-      if (cells.size() != 4) throw std::invalid_argument("cells");
-      const int frame = std::stoi(cells[0]), landmark = std::stoi(cells[1]);
-      if (landmark < 0 || landmark >= int(kLandmarks)) throw std::out_of_range("landmark");
-      auto& points = track[frame];
-      if (points.empty()) points = noLandmarks();
-      points[size_t(landmark)] = Eigen::Vector2d(finiteNumber(cells[2]), finiteNumber(cells[3]));
+      readRow(csvCells(line));
     } catch (const std::exception&) {
-      throw InputError(fmt::format("{}:{}: expected 'frame,landmark,u,v' with a landmark in 0-67, found '{}'",
-                                   file.string(), row, line));
+      throw InputError(fmt::format("{}:{}: expected {}, found '{}'", file.string(), row, expected, line.substr(0, 80)));
     }
   }
+}
+
+LandmarkTrack readLongCsv(std::istream& in, const std::filesystem::path& file) {
+  LandmarkTrack track;
+  readRows(in, file, "'frame,landmark,u,v' with a landmark in 0-67", [&](const std::vector<std::string>& cells) {
+    if (cells.size() != 4) throw std::invalid_argument("cells");
+    const int frame = std::stoi(cells[0]), landmark = std::stoi(cells[1]);
+    if (landmark < 0 || landmark >= int(kLandmarks)) throw std::out_of_range("landmark");
+    auto& points = track[frame];
+    if (points.empty()) points = noLandmarks();
+    points[size_t(landmark)] = Eigen::Vector2d(finiteNumber(cells[2]), finiteNumber(cells[3]));
+  });
   return track;
 }
 
@@ -94,23 +101,15 @@ OpenFaceColumns openFaceColumns(const std::vector<std::string>& header, const st
 LandmarkTrack readOpenFaceCsv(std::istream& in, const std::vector<std::string>& header, const std::filesystem::path& file) {
   const OpenFaceColumns c = openFaceColumns(header, file);
   LandmarkTrack track;
-  std::string line;
-  for (int row = 2; std::getline(in, line); ++row) {
-    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-    const std::vector<std::string> cells = csvCells(line);
-    try {
-      if (cells.size() < header.size()) throw std::invalid_argument("cells");
-      if (c.faceId && std::stoi(cells[*c.faceId]) != 0) continue;
-      const int frame = std::stoi(cells[c.frame]);
-      std::vector<Eigen::Vector2d>& points = track[frame] = noLandmarks();
-      if (c.success && finiteNumber(cells[*c.success]) == 0.0) continue;  // OpenFace lost the face
-      for (size_t l = 0; l < kLandmarks; ++l)
-        points[l] = Eigen::Vector2d(finiteNumber(cells[c.x[l]]), finiteNumber(cells[c.y[l]]));
-    } catch (const std::exception&) {
-      throw InputError(fmt::format("{}:{}: expected {} numbers (OpenFace's frame, x_0..x_67, y_0..y_67), found '{}'",
-                                   file.string(), row, header.size(), line.substr(0, 80)));
-    }
-  }
+  const std::string expected = fmt::format("{} cells (OpenFace's frame, x_0..x_67, y_0..y_67)", header.size());
+  readRows(in, file, expected, [&](const std::vector<std::string>& cells) {
+    if (cells.size() < header.size()) throw std::invalid_argument("cells");
+    if (c.faceId && std::stoi(cells[*c.faceId]) != 0) return;
+    std::vector<Eigen::Vector2d>& points = track[std::stoi(cells[c.frame])] = noLandmarks();
+    if (c.success && finiteNumber(cells[*c.success]) == 0.0) return;  // OpenFace lost the face
+    for (size_t l = 0; l < kLandmarks; ++l)
+      points[l] = Eigen::Vector2d(finiteNumber(cells[c.x[l]]), finiteNumber(cells[c.y[l]]));
+  });
   return track;
 }
 
