@@ -349,6 +349,7 @@ void EmbreeScene::hitAt(const Ray& ray, const SurfaceCrossing& crossing, Surface
   hit.rayDistance = crossing.rayDistance;
   hit.lightIndex = -1;
   hit.meshIndex = -1;
+  hit.sphereIndex = -1;
   hit.geometryId = crossing.geometryId;
   hit.primitiveId = crossing.primitiveId;
   hit.barycentric = crossing.barycentric;
@@ -372,6 +373,7 @@ void EmbreeScene::hitAt(const Ray& ray, const SurfaceCrossing& crossing, Surface
       hit.wetness = 0.0f;
       hit.hasUv = false;
       const bool isLight = record.kind == Kind::SphereLight;
+      if (!isLight) hit.sphereIndex = int(record.index);
       const Vec3 center = isLight ? frame_->lights[record.index].center : frame_->spheres[record.index].centerAt(ray.time);
       const float radius = isLight ? frame_->lights[record.index].radius : frame_->spheres[record.index].radius;
       const Vec3 approx = ray.origin + hit.distance * ray.direction;

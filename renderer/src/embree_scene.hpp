@@ -24,6 +24,7 @@ struct SurfaceHit {
   float wetness = 0.0f;  // film thickness (m) interpolated from MeshInstance::wetness; 0 = dry
   unsigned geometryId = 0;   // Embree's: which mesh, sphere or light
   int meshIndex = -1;        // the index in Frame::meshes of a mesh hit; -1 for spheres and lights
+  int sphereIndex = -1;      // the index in Frame::spheres of a sphere hit; -1 otherwise
   unsigned primitiveId = 0;  // the triangle of a mesh
   Vec2 barycentric = Vec2::Zero();  // Embree's (u, v) on that triangle
   // Texture coordinates, for meshes with uvs and a textured material (hasUv; only textures read

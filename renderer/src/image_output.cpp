@@ -5,8 +5,9 @@
 // write the same path at once: they would share the temporary name.)
 //
 // EXR layout (single part, zip): R,G,B,A (half, or float with floatBeauty), albedo.R/G/B,
-// N.X/Y/Z, Z (float), under adaptive sampling "samples" (float: the pixel's camera samples), and
-// when denoising denoised.R/G/B (the beauty's format).
+// N.X/Y/Z, Z (float), under adaptive sampling "samples" (float: the pixel's camera samples),
+// when denoising denoised.R/G/B (the beauty's format), then the film's further layers (float:
+// Cryptomatte's <Type>00.R ...), with the film's attributes in the header.
 // Metadata: lacrima:version, lacrima:shot, lacrima:frame (int),
 // lacrima:seed (string: EXR has no 64-bit integer attribute and OIIO drops one),
 // lacrima:spp (int), lacrima:renderSeconds (float), lacrima:colorSpace ("ACEScg") with the
@@ -124,7 +125,9 @@ void checkFilm(const Film& film, const char* function) {
   };
   if (film.width < 1 || film.height < 1 || film.rgba.size() != n * 4 || !planeOk(film.albedo, 3) ||
       !planeOk(film.normal, 3) || !planeOk(film.depth, 1) || !planeOk(film.sampleCount, 1) ||
-      !planeOk(film.denoised, 3)) {
+      !planeOk(film.denoised, 3) ||
+      std::any_of(film.layers.begin(), film.layers.end(),
+                  [&](const FilmLayer& l) { return l.channels.empty() || l.data.size() != n * l.channels.size(); })) {
     throw std::invalid_argument(fmt::format("{}: inconsistent {}x{} film (rgba {}, albedo {}, normal {}, depth {})",
                                             function, film.width, film.height, film.rgba.size(),
                                             film.albedo.size(), film.normal.size(), film.depth.size()));
@@ -142,11 +145,15 @@ void writeExr(const fs::path& path, const Film& film, const ExrMetadata& metadat
 
   const bool withSamples = !film.sampleCount.empty(), withDenoised = !film.denoised.empty();
   const int samplesChannel = kExrChannels, denoisedChannel = kExrChannels + (withSamples ? 1 : 0);
-  const int channels = denoisedChannel + (withDenoised ? 3 : 0);
+  const int layersChannel = denoisedChannel + (withDenoised ? 3 : 0);
+  int channels = layersChannel;
+  for (const FilmLayer& layer : film.layers) channels += int(layer.channels.size());
   OIIO::ImageSpec spec(w, h, channels, OIIO::TypeDesc::FLOAT);
   spec.channelnames = {"R", "G", "B", "A", "albedo.R", "albedo.G", "albedo.B", "N.X", "N.Y", "N.Z", "Z"};
   if (withSamples) spec.channelnames.push_back("samples");
   if (withDenoised) spec.channelnames.insert(spec.channelnames.end(), {"denoised.R", "denoised.G", "denoised.B"});
+  for (const FilmLayer& layer : film.layers)
+    spec.channelnames.insert(spec.channelnames.end(), layer.channels.begin(), layer.channels.end());
   const OIIO::TypeDesc beauty = floatBeauty ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::HALF;
   spec.channelformats.assign(channels, OIIO::TypeDesc::FLOAT);
   if (withDenoised) std::fill_n(spec.channelformats.begin() + denoisedChannel, 3, beauty);
@@ -159,12 +166,13 @@ void writeExr(const fs::path& path, const Film& film, const ExrMetadata& metadat
   static const std::set<std::string> reserved = {
       "lacrima:version", "lacrima:shot", "lacrima:frame", "lacrima:seed", "lacrima:spp", "lacrima:renderSeconds",
       "lacrima:colorSpace", "worldToCamera", "worldToNDC", "chromaticities", "compression"};
-  for (const auto& [key, value] : metadata.extra) {
-    if (reserved.count(key) != 0) {
-      throw std::invalid_argument(fmt::format("writeExr: extra attribute '{}' would replace a standard one", key));
+  for (const auto* attributes : {&metadata.extra, &film.attributes})
+    for (const auto& [key, value] : *attributes) {
+      if (reserved.count(key) != 0) {
+        throw std::invalid_argument(fmt::format("writeExr: extra attribute '{}' would replace a standard one", key));
+      }
+      spec.attribute(key, value);
     }
-    spec.attribute(key, value);
-  }
   spec.attribute("lacrima:version", LACRIMA_VERSION);
   spec.attribute("Software", "lacrima " LACRIMA_VERSION);
   spec.attribute("lacrima:shot", metadata.shotFile);
@@ -190,6 +198,12 @@ void writeExr(const fs::path& path, const Film& film, const ExrMetadata& metadat
       out[10] = film.depth.empty() ? 0.0f : film.depth[p];
       if (withSamples) out[samplesChannel] = film.sampleCount[p];
       if (withDenoised) std::copy_n(&film.denoised[p * 3], 3, out + denoisedChannel);
+      float* layerOut = out + layersChannel;
+      for (const FilmLayer& layer : film.layers) {
+        const size_t count = layer.channels.size();
+        std::copy_n(&layer.data[p * count], count, layerOut);
+        layerOut += count;
+      }
     }
   });
   writeAtomically(path, "EXR", "openexr", spec, OIIO::TypeDesc::FLOAT, pixels.data());

@@ -318,6 +318,16 @@ Color PathIntegrator::shadowTransmittance(const Ray& shadowRay, float maxDistanc
   return Color::Zero();
 }
 
+FirstHitIds PathIntegrator::idsOf(const SurfaceHit& hit) const {
+  const int meshes = int(frame_.meshes.size()), spheres = int(frame_.spheres.size());
+  if (hit.lightIndex >= 0)
+    return {meshes + spheres + hit.lightIndex, int(frame_.materials.size()) + hit.lightIndex};
+  const int object = hit.meshIndex >= 0 ? hit.meshIndex : hit.sphereIndex >= 0 ? meshes + hit.sphereIndex : -1;
+  // As underSkinFilm: a film is rendered on skin only.
+  const bool wet = hit.wetness > 0.0f && std::holds_alternative<SkinParams>(frame_.materials[hit.materialId].params);
+  return {object, CryptomatteNames::materialIndex(frame_, hit.materialId, wet)};
+}
+
 Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, FirstHit& firstHit,
                                PathCounters& counters) const {
   Color result = Color::Zero();
@@ -362,7 +372,7 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
       const float lightPdf = lights_.pdfAreaLight(hit.lightIndex, previousPosition, hit.position, hit.geometricNormal);
       const float weight = previousSpecular ? 1.0f : powerHeuristic(previousBsdfPdf, lightPdf);
       result += throughput * emitted * weight;
-      if (depth == 0) firstHit = {true, emitted.cwiseMin(1.0f), hit.geometricNormal, hit.distance};
+      if (depth == 0) firstHit = {true, emitted.cwiseMin(1.0f), hit.geometricNormal, hit.distance, idsOf(hit)};
       break;
     }
 
@@ -402,7 +412,7 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
     v.frame = ShadingFrame::fromNormal(ns);
     v.woLocal = v.frame.toLocal(v.wo);
 
-    if (depth == 0) firstHit = {true, v.bsdf->albedo(), ns, hit.distance};
+    if (depth == 0) firstHit = {true, v.bsdf->albedo(), ns, hit.distance, idsOf(hit)};
     // Emissive opaque materials emit from both sides (an emitting box seen from inside).
     if ((material.emission > 0.0f).any() && (frontFacing || !v.bsdf->isTransmissive()))
       result += throughput * material.emission;

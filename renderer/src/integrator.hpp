@@ -16,6 +16,7 @@
 #include "lacrima/materials/bsdf.hpp"
 #include "lacrima/materials/skin.hpp"
 #include "lacrima/materials/subsurface.hpp"
+#include "lacrima/renderer/cryptomatte.hpp"
 #include "lacrima/renderer/medium_stack.hpp"
 #include "lacrima/renderer/specular_manifold.hpp"
 
@@ -27,6 +28,7 @@ struct FirstHit {
   Color albedo = Color::Zero();
   Vec3 normal = Vec3::Zero();
   float distance = 0.0f;
+  FirstHitIds ids;  // its object and material (Cryptomatte)
 };
 
 struct PathCounters {
@@ -51,6 +53,8 @@ class PathIntegrator {
   Color shadowTransmittance(const Ray& shadowRay, float maxDistance, MediumStack media, bool& crossedDielectric,
                             PathCounters& counters) const;
   bool countedByTransparentShadows(bool chainAfterNonSpecular, int crossings) const;
+  // The hit's object and material as cryptomatteNames lists them.
+  FirstHitIds idsOf(const SurfaceHit& hit) const;
 
   // Manifold next-event estimation (mnee_direct_light.cpp): the light sample's contribution
   // through the 1 or 2 smooth dielectric interfaces its straight shadow ray crosses; nothing

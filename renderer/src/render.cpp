@@ -70,6 +70,31 @@ float cameraDepth(const Camera& camera, const Ray& ray, float distance) {
   return distance * ray.direction.dot(forward);
 }
 
+// Cryptomatte's layers in the film (cryptomatte.hpp): per type, its IDs by name index and the
+// film layer its ranks go to.
+struct CryptomatteLayer {
+  std::vector<float> ids;     // cryptomatteIdOf(name) of each name
+  FilmLayer* layer = nullptr;
+};
+
+// Adds the film layer and header attributes of a Cryptomatte type named `type` over `names`.
+CryptomatteLayer addCryptomatteLayer(Film& film, const std::string& type, const std::vector<std::string>& names,
+                                     const std::vector<std::string>& manifest, int ranks) {
+  FilmLayer layer;
+  for (int sub = 0; sub < ranks / 2; ++sub)
+    for (const char* c : {"R", "G", "B", "A"}) layer.channels.push_back(fmt::format("{}{:02d}.{}", type, sub, c));
+  layer.data.assign(size_t(film.width) * film.height * layer.channels.size(), 0.0f);
+  film.layers.push_back(std::move(layer));
+  const std::string prefix = "cryptomatte/" + cryptomatteKey(type) + "/";
+  film.attributes[prefix + "name"] = type;
+  film.attributes[prefix + "hash"] = "MurmurHash3_32";
+  film.attributes[prefix + "conversion"] = "uint32_to_float32";
+  film.attributes[prefix + "manifest"] = cryptomatteManifest(manifest);
+  CryptomatteLayer out;
+  for (const std::string& name : names) out.ids.push_back(cryptomatteIdOf(name));
+  return out;
+}
+
 class TileRenderer {
  public:
   TileRenderer(const Frame& frame, const PathIntegrator& integrator, const FilterSampler& filter, Film& film)
@@ -80,7 +105,19 @@ class TileRenderer {
         cameraRays_(frame.camera, frame.settings.width, frame.settings.height),
         hasMotion_(frame.hasMotion()),
         order_(frame.settings.adaptive.enabled || frame.settings.denoise ? SampleOrder::Progressive
-                                                                          : SampleOrder::Shuffled) {}
+                                                                          : SampleOrder::Shuffled) {
+    const CryptomatteSettings& crypto = frame.settings.cryptomatte;
+    if (!crypto.any()) return;
+    const CryptomatteNames names = cryptomatteNames(frame);
+    film.layers.reserve(2);  // the layers' addresses are kept below
+    if (crypto.objects) objects_ = addCryptomatteLayer(film, "CryptoObject", names.objects, names.objects, crypto.ranks);
+    if (crypto.materials)
+      materials_ = addCryptomatteLayer(film, "CryptoMaterial", names.materials, names.materialManifest, crypto.ranks);
+    // Taken after both are added: the vector may have moved them.
+    size_t next = film.layers.size() - (crypto.objects ? 1 : 0) - (crypto.materials ? 1 : 0);
+    if (crypto.objects) objects_.layer = &film.layers[next++];
+    if (crypto.materials) materials_.layer = &film.layers[next];
+  }
 
   // Where store() also writes each pixel's two half buffers (null: nowhere).
   void keepHalvesIn(DenoiseInput* halves) { halves_ = halves; }
@@ -118,6 +155,9 @@ class TileRenderer {
       sum.weight += f.weight;
       addRadiance(sum, L);
       if (first.valid) {
+        if (objects_.layer && first.ids.object >= 0) sum.objectIds.add(objects_.ids[size_t(first.ids.object)], f.weight);
+        if (materials_.layer && first.ids.material >= 0)
+          sum.materialIds.add(materials_.ids[size_t(first.ids.material)], f.weight);
         sum.weightedCoverage += f.weight;
         sum.coverage += 1.0f;
         sum.albedo += first.albedo;
@@ -139,6 +179,8 @@ class TileRenderer {
     for (int c = 0; c < 3; ++c) film_.normal[3 * p + c] = n[c];
     film_.depth[p] = sum.depthSamples > 0 ? sum.depth * invHits : std::numeric_limits<float>::infinity();
     if (!film_.sampleCount.empty()) film_.sampleCount[p] = float(sum.samples);
+    storeRanks(objects_, sum.objectIds, p, sum.weight);
+    storeRanks(materials_, sum.materialIds, p, sum.weight);
     if (halves_) {
       const PixelHalves h = pixelHalves(sum);
       const Color variance = halfMeanVariance(sum);
@@ -151,6 +193,13 @@ class TileRenderer {
   }
 
  private:
+  void storeRanks(const CryptomatteLayer& crypto, const IdCoverage& coverage, size_t p, float totalWeight) const {
+    if (!crypto.layer) return;
+    const size_t channels = crypto.layer->channels.size();
+    const std::vector<float> ranked = coverage.ranked(int(channels / 2), totalWeight);
+    std::copy(ranked.begin(), ranked.end(), crypto.layer->data.begin() + long(p * channels));
+  }
+
   const Frame& frame_;
   const PathIntegrator& integrator_;
   const FilterSampler& filter_;
@@ -161,6 +210,7 @@ class TileRenderer {
   // (the half buffers are then stratified on their own).
   SampleOrder order_;
   DenoiseInput* halves_ = nullptr;
+  CryptomatteLayer objects_, materials_;  // no layer: not written
 };
 
 // The denoiser's input: the half buffers (already filled by the tiles) and the film's features.

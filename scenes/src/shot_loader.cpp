@@ -46,6 +46,7 @@ const std::vector<std::string> kRootKeys = {"version",   "frames", "output",    
 const std::vector<std::string> kMaterialTypes = {"diffuse", "skin", "water", "rough_dielectric"};
 const std::vector<std::string> kCausticsModes = {"mnee", "straight", "off"};  // order of readCaustics' modes
 const std::vector<std::string> kSamplerKinds = {"sobol", "independent"};  // order of readSampler's kinds
+const std::vector<std::string> kAovs = {"CryptoObject", "CryptoMaterial"};  // order of readAovs' switches
 const std::vector<std::string> kSubsurfaceMethods = {"randomWalk", "diffusion"};  // order of readSubsurfaceMethod's
 const std::vector<std::string> kFilterTypes = {"blackman-harris", "gaussian", "mitchell", "box"};  // readFilter's order
 // A filter wider than this blurs away the detail it should keep (and 16 px is already 8 pixels
@@ -308,7 +309,7 @@ class ShotReader {
     const size_t before = c_.errorCount();
     ObjectReader o(c_, v, "/render", {"width", "height", "spp", "maxDepth", "seed", "threads", "floatOutput",
                                            "transparentShadows", "caustics", "sampler", "filter", "bounces",
-                                           "adaptive", "denoise"});
+                                           "adaptive", "denoise", "aovs"});
     RenderSettings& s = shot_.render;
     if (auto x = o.integer("width", Range::closed(1, 16384), true)) s.width = int(*x);
     if (auto x = o.integer("height", Range::closed(1, 16384), true)) s.height = int(*x);
@@ -324,7 +325,35 @@ class ShotReader {
     readFilter(o, s);
     readBounces(o, s);
     readAdaptive(o, s);
+    readAovs(o, s);
     return c_.errorCount() == before;
+  }
+
+  // "aovs": ["CryptoObject", "CryptoMaterial"]: further layers of the EXR, by their names there
+  // (docs/compositing.md).
+  void readAovs(ObjectReader& render, RenderSettings& s) {
+    const Json* v = render.find("aovs");
+    if (!v) return;
+    if (!v->is_array()) {
+      render.error("aovs", "expected a list of layer names such as [\"CryptoObject\", \"CryptoMaterial\"], found " +
+                               describeValue(*v));
+      return;
+    }
+    bool* switches[] = {&s.cryptomatte.objects, &s.cryptomatte.materials};
+    for (size_t i = 0; i < v->size(); ++i) {
+      const std::string pointer = childPointer(render.at("aovs"), std::to_string(i));
+      const auto name = readString(c_, (*v)[i], pointer);
+      if (!name) continue;
+      const auto known = std::find(kAovs.begin(), kAovs.end(), *name);
+      if (known != kAovs.end()) {
+        *switches[known - kAovs.begin()] = true;
+        continue;
+      }
+      const std::string suggestion = didYouMean(*name, kAovs);
+      c_.error(pointer, Anchor::Value,
+               suggestion.empty() ? fmt::format("unknown AOV '{}' (expected one of {})", *name, quotedList(kAovs))
+                                  : fmt::format("unknown AOV '{}'{}", *name, suggestion));
+    }
   }
 
   // "adaptive": true | false | {"threshold": t > 0, "minSpp": n in [1, spp]} (docs/shot-format.md,

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "lacrima/renderer/cryptomatte.hpp"
 #include "lacrima/renderer/camera.hpp"
 #include "lacrima/scenes/shot.hpp"
 #include "support/run_command.hpp"
@@ -510,7 +511,7 @@ TEST(CliRender, TinyRenderWritesEachFrameAndItsPreviewWithMetadata) {
 
   const auto info = lacrima({"info", exr.string()});
   EXPECT_EQ(info.exitStatus, 0);
-  EXPECT_TRUE(startsWith(info.output, exr.string() + "\n  32 x 18, 11 channels: R(half) G(half) B(half) A(half)"))
+  EXPECT_TRUE(startsWith(info.output, exr.string() + "\n  32 x 18, 11 channels in 4 layers:\n    (beauty)             R G B A (half)"))
       << info.output;
   EXPECT_EQ(attributeLine(info.output, "lacrima:version"), std::string("  lacrima:version = ") + LACRIMA_VERSION);
   EXPECT_EQ(attributeLine(info.output, "lacrima:seed"), "  lacrima:seed = " + std::to_string(shot.render.seed));
@@ -543,7 +544,7 @@ TEST(CliRender, OverridesReachTheExr) {
   EXPECT_EQ(filesIn(dir), std::set<std::string>{exr});
   const auto info = lacrima({"info", (dir / exr).string()});
   EXPECT_EQ(info.exitStatus, 0);
-  EXPECT_NE(info.output.find("  8 x 8, 11 channels: R(float) G(float) B(float) A(float)"), std::string::npos)
+  EXPECT_NE(info.output.find("  8 x 8, 11 channels in 4 layers:\n    (beauty)             R G B A (float)"), std::string::npos)
       << info.output;
   EXPECT_EQ(attributeLine(info.output, "lacrima:seed"), "  lacrima:seed = 18446744073709551615");
   EXPECT_EQ(attributeLine(info.output, "lacrima:spp"), "  lacrima:spp = 1");
@@ -566,8 +567,8 @@ TEST(CliRender, DenoiseAndAdaptiveSamplingReachTheExr) {
   const std::string exr = (dir / "s.0001.exr").string();
   auto info = lacrima({"info", exr});
   EXPECT_NE(info.output.find("15 channels"), std::string::npos) << info.output;
-  EXPECT_NE(info.output.find("samples(float)"), std::string::npos) << info.output;
-  EXPECT_NE(info.output.find("denoised.R(half) denoised.G(half) denoised.B(half)"), std::string::npos) << info.output;
+  EXPECT_NE(info.output.find("    samples              (float)"), std::string::npos) << info.output;
+  EXPECT_NE(info.output.find("    denoised             R G B (half)"), std::string::npos) << info.output;
   EXPECT_EQ(attributeLine(info.output, "lacrima:denoise"), "  lacrima:denoise = on");
   EXPECT_EQ(attributeLine(info.output, "lacrima:adaptive"), "  lacrima:adaptive = threshold 0.05 min 2 spp");
 
@@ -578,6 +579,26 @@ TEST(CliRender, DenoiseAndAdaptiveSamplingReachTheExr) {
   EXPECT_EQ(attributeLine(info.output, "lacrima:denoise"), "  lacrima:denoise = off");
   const auto both = lacrima({"render", shot.string(), "--denoise", "--no-denoise", "--out", out});
   EXPECT_EQ(both.exitStatus, 2) << both.output;
+}
+
+// The shot's Cryptomattes reach the EXR, and lacrima info lists their layers and manifests.
+TEST(CliRender, CryptomattesReachTheExrAndInfoListsThem) {
+  const fs::path dir = freshDir();
+  const fs::path shot = test::writeSphereShot(dir, 1, R"(, "aovs": ["CryptoObject", "CryptoMaterial"])");
+  const std::string exr = (dir / "c.0001.exr").string();
+  const auto rendered = lacrima({"render", shot.string(), "--out", (dir / "c.####.exr").string(), "--quiet"});
+  ASSERT_EQ(rendered.exitStatus, 0) << rendered.output;
+  const auto info = lacrima({"info", exr});
+  EXPECT_NE(info.output.find("35 channels in 10 layers"), std::string::npos) << info.output;
+  EXPECT_NE(info.output.find("    CryptoObject02       R G B A (float)"), std::string::npos) << info.output;
+  EXPECT_NE(info.output.find("  Cryptomatte CryptoObject (key " + cryptomatteKey("CryptoObject") +
+                             ", MurmurHash3_32, uint32_to_float32): "),
+            std::string::npos)
+      << info.output;
+  EXPECT_NE(info.output.find("  Cryptomatte CryptoMaterial (key "), std::string::npos) << info.output;
+  EXPECT_NE(info.output.find("    sphere 0                                 " + cryptomatteHex(cryptomatteIdOf("sphere 0"))),
+            std::string::npos)
+      << info.output;
 }
 
 TEST(CliRender, WarningsComeBeforeRenderingAndFrameStepsAreHonoured) {

@@ -1,10 +1,14 @@
 // `lacrima info`: what a glTF asset or an EXR frame contains.
 #include <OpenImageIO/imageio.h>
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
 
 #include "commands.hpp"
 #include "lacrima/geometry/error.hpp"
@@ -20,14 +24,68 @@ std::string lowerExtension(const std::string& path) {
   return ext;
 }
 
+// The channels grouped by layer, in file order: the part of a name before its last '.' ("" for
+// the beauty's R, G, B, A and bare channels such as Z), each with its channels' suffixes.
+struct ChannelLayer {
+  std::string name;
+  std::vector<std::string> channels;
+  std::string format;  // the channels' format, or "mixed"
+};
+
+std::vector<ChannelLayer> channelLayers(const OIIO::ImageSpec& spec) {
+  std::vector<ChannelLayer> layers;
+  for (int c = 0; c < spec.nchannels; ++c) {
+    const std::string& full = spec.channelnames[c];
+    const size_t dot = full.rfind('.');
+    const bool bare = dot == std::string::npos;
+    // A bare channel other than R, G, B, A is a layer of its own (Z, samples).
+    const bool beauty = bare && (full == "R" || full == "G" || full == "B" || full == "A");
+    const std::string layer = bare ? (beauty ? "" : full) : full.substr(0, dot);
+    const std::string channel = bare ? (beauty ? full : "") : full.substr(dot + 1);
+    const std::string format = spec.channelformat(c).c_str();
+    auto it = std::find_if(layers.begin(), layers.end(), [&](const ChannelLayer& l) { return l.name == layer; });
+    if (it == layers.end()) it = layers.insert(layers.end(), ChannelLayer{layer, {}, format});
+    if (!channel.empty()) it->channels.push_back(channel);
+    if (it->format != format) it->format = "mixed";
+  }
+  return layers;
+}
+
+// Each Cryptomatte type of the header: its name, key, hash, conversion and manifest.
+void printCryptomattes(const OIIO::ImageSpec& spec) {
+  std::map<std::string, std::map<std::string, std::string>> types;  // key -> field -> value
+  for (const auto& attribute : spec.extra_attribs) {
+    const std::string name = attribute.name().string();
+    if (name.rfind("cryptomatte/", 0) != 0) continue;
+    const size_t slash = name.find('/', 12);
+    if (slash == std::string::npos) continue;
+    types[name.substr(12, slash - 12)][name.substr(slash + 1)] = attribute.get_string(0);
+  }
+  for (auto& [key, fields] : types) {
+    nlohmann::ordered_json manifest = nlohmann::ordered_json::object();
+    if (fields.count("manifest")) manifest = nlohmann::ordered_json::parse(fields["manifest"], nullptr, false);
+    std::printf("  Cryptomatte %s (key %s, %s, %s): %zu names in the manifest\n", fields["name"].c_str(), key.c_str(),
+                fields["hash"].c_str(), fields["conversion"].c_str(), manifest.is_object() ? manifest.size() : 0);
+    if (manifest.is_object())
+      for (const auto& [name, id] : manifest.items())
+        std::printf("    %-40s %s\n", name.c_str(), id.is_string() ? id.get<std::string>().c_str() : "?");
+  }
+}
+
 int describeImage(const std::string& path) {
   auto input = OIIO::ImageInput::open(path);
   if (!input) throw InputError(fmt::format("{}: cannot read image: {}", path, OIIO::geterror()));
   const OIIO::ImageSpec& spec = input->spec();
-  std::printf("%s\n  %d x %d, %d channels:", path.c_str(), spec.width, spec.height, spec.nchannels);
-  for (int c = 0; c < spec.nchannels; ++c)
-    std::printf(" %s(%s)", spec.channelnames[c].c_str(), spec.channelformat(c).c_str());
-  std::printf("\n");
+  const std::vector<ChannelLayer> layers = channelLayers(spec);
+  std::printf("%s\n  %d x %d, %d channels in %zu layers:\n", path.c_str(), spec.width, spec.height, spec.nchannels,
+              layers.size());
+  for (const ChannelLayer& layer : layers) {
+    std::string channels;
+    for (const std::string& c : layer.channels) channels += (channels.empty() ? "" : " ") + c;
+    std::printf("    %-20s %s%s(%s)\n", layer.name.empty() ? "(beauty)" : layer.name.c_str(), channels.c_str(),
+                channels.empty() ? "" : " ", layer.format.c_str());
+  }
+  printCryptomattes(spec);
   for (const auto& attribute : spec.extra_attribs) {
     const std::string name = attribute.name().string();
     if (name.rfind("lacrima:", 0) == 0 || name == "worldToCamera" || name == "worldToNDC" || name == "compression")

@@ -1,11 +1,19 @@
 #pragma once
 // The film: beauty and AOVs of one frame, float per channel, row 0 at the top.
 #include <cstdint>
+#include <map>
+#include <string>
 #include <vector>
 
 #include "lacrima/geometry/math.hpp"
 
 namespace lacrima {
+
+// A further layer of float channels, written after the standard ones (Cryptomatte's).
+struct FilmLayer {
+  std::vector<std::string> channels;  // full EXR names, e.g. "CryptoObject00.R"
+  std::vector<float> data;            // channels.size() a pixel, interleaved
+};
 
 struct Film {
   int width = 0, height = 0;
@@ -17,6 +25,9 @@ struct Film {
   std::vector<float> sampleCount;
   // 3 per pixel, the denoised beauty RGB (denoiser.hpp): filled when denoising (else empty).
   std::vector<float> denoised;
+  std::vector<FilmLayer> layers;
+  // EXR header strings the render adds (the Cryptomatte types' names, hashes and manifests).
+  std::map<std::string, std::string> attributes;
 
   Film() = default;
   Film(int w, int h)

@@ -112,6 +112,16 @@ struct AdaptiveSampling {
   bool operator==(const AdaptiveSampling&) const = default;
 };
 
+// Cryptomatte ID mattes (cryptomatte.hpp) of the first hits' objects and materials, each with
+// `ranks` (ID, coverage) pairs a pixel (the specification's suggested 6).
+struct CryptomatteSettings {
+  bool objects = false;
+  bool materials = false;
+  int ranks = 6;
+  bool any() const { return objects || materials; }
+  bool operator==(const CryptomatteSettings&) const = default;
+};
+
 struct RenderSettings {
   int width = 640;
   int height = 360;
@@ -133,6 +143,7 @@ struct RenderSettings {
   Caustics causticsMode() const { return transparentShadows ? caustics : Caustics::Off; }
   // Pixel reconstruction filter, importance-sampled per camera sample (pixel_filter.hpp).
   PixelFilter filter;
+  CryptomatteSettings cryptomatte;
 };
 
 struct Frame {

@@ -22,7 +22,8 @@ struct ExrMetadata {
 
 // Channels: R,G,B,A (half, or float when floatBeauty), albedo.R/G/B, N.X/Y/Z, Z (float), and
 // "samples" (float) when the film has sample counts (adaptive sampling), denoised.R/G/B (the
-// beauty's format) when it has a denoised beauty; the preview shows the denoised one then.
+// beauty's format) when it has a denoised beauty; the preview shows the denoised one then; then
+// the film's further layers (float: Cryptomatte's), and its attributes in the header.
 // Writes to "<path>.tmp-<pid>" then renames over <path>; creates parent directories.
 // Throws InputError (names the path) when the file cannot be written.
 void writeExr(const std::filesystem::path& path, const Film& film, const ExrMetadata& metadata,

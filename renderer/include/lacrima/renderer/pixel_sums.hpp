@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "lacrima/geometry/math.hpp"
+#include "lacrima/renderer/cryptomatte.hpp"
 
 namespace lacrima {
 
@@ -24,6 +25,8 @@ struct PixelSums {
   Vec3 normal = Vec3::Zero();
   float depth = 0.0f;
   int depthSamples = 0;
+  // Cryptomatte's ranking filter (only when the render writes it): the first hits' IDs.
+  IdCoverage objectIds, materialIds;
 };
 
 // Adds one sample's radiance to the plain sums (the filter-weighted ones are the caller's).

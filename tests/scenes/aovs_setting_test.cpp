@@ -1,0 +1,37 @@
+// The `render.aovs` key (docs/shot-format.md, "AOVs"; docs/compositing.md).
+#include <gtest/gtest.h>
+
+#include "lacrima/scenes/shot.hpp"
+#include "scenes/shot_test_support.hpp"
+
+namespace lacrima {
+namespace {
+
+using test::expectSingleError;
+using test::shotWithRender;
+using test::writeShot;
+
+CryptomatteSettings cryptomatteOf(const std::string& name, const std::string& renderExtra) {
+  return loadShot(writeShot(name, shotWithRender(renderExtra))).render.cryptomatte;
+}
+
+TEST(AovsSetting, NoneByDefaultEachCryptomatteByItsLayerName) {
+  EXPECT_EQ(cryptomatteOf("aovs_default.json", ""), CryptomatteSettings{});
+  EXPECT_EQ(cryptomatteOf("aovs_empty.json", R"(, "aovs": [])"), CryptomatteSettings{});
+  EXPECT_EQ(cryptomatteOf("aovs_object.json", R"(, "aovs": ["CryptoObject"])"), (CryptomatteSettings{true, false, 6}));
+  EXPECT_EQ(cryptomatteOf("aovs_both.json", R"(, "aovs": ["CryptoMaterial", "CryptoObject"])"),
+            (CryptomatteSettings{true, true, 6}));
+}
+
+TEST(AovsSetting, BadValuesAreReportedAtTheirPath) {
+  expectSingleError("aovs_typo.json", shotWithRender(R"(, "aovs": ["CryptoObjects"])"),
+                    "/render/aovs/0: unknown AOV 'CryptoObjects'; did you mean 'CryptoObject'?");
+  expectSingleError("aovs_unknown.json", shotWithRender(R"(, "aovs": ["CryptoObject", "emission"])"),
+                    "/render/aovs/1: unknown AOV 'emission' (expected one of 'CryptoObject', 'CryptoMaterial')");
+  expectSingleError("aovs_type.json", shotWithRender(R"(, "aovs": "CryptoObject")"),
+                    "/render/aovs: expected a list of layer names such as [\"CryptoObject\", \"CryptoMaterial\"], "
+                    "found \"CryptoObject\"");
+}
+
+}  // namespace
+}  // namespace lacrima
