@@ -116,6 +116,7 @@ PathIntegrator::PathIntegrator(const Frame& frame, const EmbreeScene& scene, con
     : frame_(frame),
       scene_(scene),
       lights_(lights),
+      groups_(lightGroupsOf(frame)),
       textures_(frame.materials),
       pixelSpread_(2.0f * std::tan(0.5f * frame.camera.verticalFovRadians) / float(std::max(1, frame.settings.height))),
       maxDepth_(frame.settings.maxDepth) {
@@ -224,13 +225,14 @@ PathIntegrator::Trace PathIntegrator::traceToRealSurface(Ray& ray, SurfaceHit& h
 }
 
 Color PathIntegrator::sampleDirectLight(const Vertex& v, const MediumStack& media, PixelSampler& sampler,
-                                        PathCounters& counters) const {
+                                        PathCounters& counters, int& source) const {
   const std::array<float, 4> light4 = sampler.get4D();  // the light's choice, the point on it
   const float uSelect = light4[0];
   const Vec2 u(light4[1], light4[2]);
   if (v.bsdf->isPureSpecular() || lights_.empty()) return Color::Zero();
   const LightSample light = lights_.sample(v.position, uSelect, u);
   if (light.pdf <= 0.0f || (light.radiance <= 0.0f).all()) return Color::Zero();
+  source = light.lightIndex;
 
   const Vec3 wiLocal = v.frame.toLocal(light.direction);
   // No leaks: the shading frame and the geometric surface must agree on reflect vs transmit.
@@ -329,8 +331,14 @@ FirstHitIds PathIntegrator::idsOf(const SurfaceHit& hit) const {
 }
 
 Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, FirstHit& firstHit,
-                               PathCounters& counters) const {
+                               PathCounters& counters, Color* groupRadiance) const {
   Color result = Color::Zero();
+  // Every contribution goes to the beauty and, when asked, to its light's group.
+  const auto gather = [&](const Color& contribution, int group) {
+    result += contribution;
+    if (groupRadiance) groupRadiance[size_t(group)] += contribution;
+  };
+  int source = -1;  // the light of the last next-event estimate
   Color throughput = Color::Ones();
   float etaScale = 1.0f;         // undoes the 1/eta^2 radiance scaling for Russian roulette
   bool previousSpecular = true;  // camera rays count as specular: no MIS on what they see
@@ -359,10 +367,10 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
       // A uniform background is not light-sampled, so only the environment map can be counted twice.
       if (lights_.environmentIsSampled() && countedByTransparentShadows(chainAfterNonSpecular, crossings)) break;
       if (previousSpecular) {
-        result += throughput * lights_.background(ray.direction);
+        gather(throughput * lights_.background(ray.direction), groups_.environment);
       } else {
         const LightSampler::Background background = lights_.backgroundWithPdf(ray.direction);
-        result += throughput * background.radiance * powerHeuristic(previousBsdfPdf, background.pdf);
+        gather(throughput * background.radiance * powerHeuristic(previousBsdfPdf, background.pdf), groups_.environment);
       }
       break;
     }
@@ -371,7 +379,7 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
       const Color emitted = lights_.emitted(hit.lightIndex, -ray.direction);
       const float lightPdf = lights_.pdfAreaLight(hit.lightIndex, previousPosition, hit.position, hit.geometricNormal);
       const float weight = previousSpecular ? 1.0f : powerHeuristic(previousBsdfPdf, lightPdf);
-      result += throughput * emitted * weight;
+      gather(throughput * emitted * weight, groups_.ofLight[size_t(hit.lightIndex)]);
       if (depth == 0) firstHit = {true, emitted.cwiseMin(1.0f), hit.geometricNormal, hit.distance, idsOf(hit)};
       break;
     }
@@ -415,12 +423,13 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
     if (depth == 0) firstHit = {true, v.bsdf->albedo(), ns, hit.distance, idsOf(hit)};
     // Emissive opaque materials emit from both sides (an emitting box seen from inside).
     if ((material.emission > 0.0f).any() && (frontFacing || !v.bsdf->isTransmissive()))
-      result += throughput * material.emission;
+      gather(throughput * material.emission, groups_.emission);
     if (depth >= maxDepth_ || lastSegment) break;
 
     const uint32_t dimensions = sample_dimensions::bounceBase(depth);
     sampler.setDimension(dimensions + sample_dimensions::kLight);
-    result += throughput * sampleDirectLight(v, media, sampler, counters);
+    const Color direct = sampleDirectLight(v, media, sampler, counters, source);
+    gather(throughput * direct, groups_.ofSource(source));
     if (subsurface_[hit.materialId]) {  // skin with subsurface: v.bsdf's lobes or a random walk
       const float dryFraction = 1.0f - (wetSkin ? wetSkin->coverage() : 0.0f);
       const SubsurfaceSkin& skin = *subsurface_[hit.materialId];
@@ -431,7 +440,8 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
       const Below below = scatterBelowSurface(skin, beneath, surface, v, dryFraction, sampler, counters);
       if (below.exit) {  // the light that leaves at the exit, whichever way the path goes on
         sampler.setDimension(dimensions + sample_dimensions::kExitLight);
-        result += throughput * below.exitWeight * sampleDirectLight(*below.exit, media, sampler, counters);
+        const Color exitDirect = sampleDirectLight(*below.exit, media, sampler, counters, source);
+        gather(throughput * below.exitWeight * exitDirect, groups_.ofSource(source));
       }
       if (!below.goesBelow) {
         throughput /= below.pSurface;

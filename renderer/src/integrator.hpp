@@ -17,6 +17,7 @@
 #include "lacrima/materials/skin.hpp"
 #include "lacrima/materials/subsurface.hpp"
 #include "lacrima/renderer/cryptomatte.hpp"
+#include "lacrima/renderer/light_groups.hpp"
 #include "lacrima/renderer/medium_stack.hpp"
 #include "lacrima/renderer/specular_manifold.hpp"
 
@@ -39,15 +40,20 @@ class PathIntegrator {
  public:
   PathIntegrator(const Frame& frame, const EmbreeScene& scene, const LightSampler& lights);
 
-  Color radiance(const Ray& cameraRay, PixelSampler& sampler, FirstHit& firstHit, PathCounters& counters) const;
+  // The camera path's radiance; with `groupRadiance` (lightGroups().size() colours, zeroed by the
+  // caller), also split by light group (light_groups.hpp).
+  Color radiance(const Ray& cameraRay, PixelSampler& sampler, FirstHit& firstHit, PathCounters& counters,
+                 Color* groupRadiance = nullptr) const;
+  const LightGroups& lightGroups() const { return groups_; }
 
  private:
   struct Vertex;  // the shading point of the current bounce (integrator.cpp)
 
   enum class Trace { Hit, Miss, Lost };
 
+  // Next-event estimation of one light; `source` gets the light's index (-1: the environment).
   Color sampleDirectLight(const Vertex& vertex, const MediumStack& media, PixelSampler& sampler,
-                          PathCounters& counters) const;
+                          PathCounters& counters, int& source) const;
   // What reaches the shading point along shadowRay, known to be blocked, within maxDistance
   // (see integrator.cpp); media: the media the shadow ray starts in.
   Color shadowTransmittance(const Ray& shadowRay, float maxDistance, MediumStack media, bool& crossedDielectric,
@@ -109,6 +115,7 @@ class PathIntegrator {
   const Frame& frame_;
   const EmbreeScene& scene_;
   const LightSampler& lights_;
+  LightGroups groups_;
   SurfaceTextures textures_;  // the maps of textured materials; empty (no texture system) without any
   // Radians per pixel at the image centre: a path that has travelled d metres from the camera
   // meets surfaces with a footprint of about d * pixelSpread_ (texture mip levels). Ignores

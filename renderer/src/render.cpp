@@ -18,6 +18,7 @@
 #include "embree_scene.hpp"
 #include "lacrima/renderer/adaptive_sampling.hpp"
 #include "lacrima/renderer/denoiser.hpp"
+#include "lacrima/renderer/light_groups.hpp"
 #include "lacrima/renderer/pixel_sums.hpp"
 #include "integrator.hpp"
 #include "lacrima/geometry/error.hpp"
@@ -84,7 +85,7 @@ CryptomatteLayer addCryptomatteLayer(Film& film, const std::string& type, const 
   for (int sub = 0; sub < ranks / 2; ++sub)
     for (const char* c : {"R", "G", "B", "A"}) layer.channels.push_back(fmt::format("{}{:02d}.{}", type, sub, c));
   layer.data.assign(size_t(film.width) * film.height * layer.channels.size(), 0.0f);
-  film.layers.push_back(std::move(layer));
+  film.layers.push_back(std::move(layer));  // into room the caller reserved
   const std::string prefix = "cryptomatte/" + cryptomatteKey(type) + "/";
   film.attributes[prefix + "name"] = type;
   film.attributes[prefix + "hash"] = "MurmurHash3_32";
@@ -92,6 +93,7 @@ CryptomatteLayer addCryptomatteLayer(Film& film, const std::string& type, const 
   film.attributes[prefix + "manifest"] = cryptomatteManifest(manifest);
   CryptomatteLayer out;
   for (const std::string& name : names) out.ids.push_back(cryptomatteIdOf(name));
+  out.layer = &film.layers.back();
   return out;
 }
 
@@ -106,17 +108,15 @@ class TileRenderer {
         hasMotion_(frame.hasMotion()),
         order_(frame.settings.adaptive.enabled || frame.settings.denoise ? SampleOrder::Progressive
                                                                           : SampleOrder::Shuffled) {
+    // Every further layer is added here, into room reserved first: their addresses are kept.
+    film.layers.reserve(integrator.lightGroups().size() + 2);
+    if (frame.settings.lightGroups) addLightGroupLayers(film, integrator.lightGroups());
     const CryptomatteSettings& crypto = frame.settings.cryptomatte;
     if (!crypto.any()) return;
     const CryptomatteNames names = cryptomatteNames(frame);
-    film.layers.reserve(2);  // the layers' addresses are kept below
     if (crypto.objects) objects_ = addCryptomatteLayer(film, "CryptoObject", names.objects, names.objects, crypto.ranks);
     if (crypto.materials)
       materials_ = addCryptomatteLayer(film, "CryptoMaterial", names.materials, names.materialManifest, crypto.ranks);
-    // Taken after both are added: the vector may have moved them.
-    size_t next = film.layers.size() - (crypto.objects ? 1 : 0) - (crypto.materials ? 1 : 0);
-    if (crypto.objects) objects_.layer = &film.layers[next++];
-    if (crypto.materials) materials_.layer = &film.layers[next];
   }
 
   // Where store() also writes each pixel's two half buffers (null: nowhere).
@@ -135,6 +135,7 @@ class TileRenderer {
   // The pixel's samples from sum.samples up to (not including) `end`, added to its sums.
   void addSamples(int x, int y, int end, PixelSums& sum, PathCounters& counters, uint64_t& nonFinite) const {
     const RenderSettings& s = frame_.settings;
+    std::vector<Color> groups(groupLayers_.size(), Color::Zero());  // this sample's radiance by light group
     for (int i = sum.samples; i < end; ++i) {
       PixelSampler sampler(s.sampler, s.seed, s.frameNumber, x, y, i, s.samplesPerPixel, order_);
       // The point in the filter's footprint and the point on the lens: one 4D block
@@ -146,11 +147,14 @@ class TileRenderer {
       const float time = hasMotion_ ? sampler.get1D() : 0.0f;
       const Ray ray = cameraRays_.generate(float(x) + 0.5f + f.offset.x(), float(y) + 0.5f + f.offset.y(), lens, time);
       FirstHit first;
-      Color L = integrator_.radiance(ray, sampler, first, counters);
+      std::fill(groups.begin(), groups.end(), Color::Zero());
+      Color L = integrator_.radiance(ray, sampler, first, counters, groups.empty() ? nullptr : groups.data());
       if (!isFinite(L)) {
         L = Color::Zero();  // discarded, counted, reported: never on the film (the sample counts as black)
+        std::fill(groups.begin(), groups.end(), Color::Zero());
         ++nonFinite;
       }
+      addGroups(sum, groups, f.weight);
       sum.weightedRadiance += f.weight * L;
       sum.weight += f.weight;
       addRadiance(sum, L);
@@ -179,6 +183,10 @@ class TileRenderer {
     for (int c = 0; c < 3; ++c) film_.normal[3 * p + c] = n[c];
     film_.depth[p] = sum.depthSamples > 0 ? sum.depth * invHits : std::numeric_limits<float>::infinity();
     if (!film_.sampleCount.empty()) film_.sampleCount[p] = float(sum.samples);
+    for (size_t g = 0; g < groupLayers_.size(); ++g) {
+      const Color value = groupValue(sum, g);
+      std::copy_n(value.data(), 3, groupLayers_[g]->data.begin() + long(3 * p));
+    }
     storeRanks(objects_, sum.objectIds, p, sum.weight);
     storeRanks(materials_, sum.materialIds, p, sum.weight);
     if (halves_) {
@@ -193,6 +201,26 @@ class TileRenderer {
   }
 
  private:
+  // A layer per light group, "lightgroup_<name>.R/G/B".
+  void addLightGroupLayers(Film& film, const LightGroups& groups) {
+    for (const std::string& name : groups.names) {
+      const std::string layer = lightGroupLayer(name);
+      film.layers.push_back(FilmLayer{{layer + ".R", layer + ".G", layer + ".B"},
+                                      std::vector<float>(size_t(film.width) * film.height * 3, 0.0f)});
+      groupLayers_.push_back(&film.layers.back());
+    }
+  }
+
+  static void addGroups(PixelSums& sum, const std::vector<Color>& groups, float weight) {
+    if (groups.empty()) return;
+    if (sum.groupWeighted.empty()) sum.groupWeighted.assign(groups.size(), Color::Zero());
+    if (sum.groupPlain.empty()) sum.groupPlain.assign(groups.size(), Color::Zero());
+    for (size_t g = 0; g < groups.size(); ++g) {
+      sum.groupWeighted[g] += weight * groups[g];
+      sum.groupPlain[g] += groups[g];
+    }
+  }
+
   void storeRanks(const CryptomatteLayer& crypto, const IdCoverage& coverage, size_t p, float totalWeight) const {
     if (!crypto.layer) return;
     const size_t channels = crypto.layer->channels.size();
@@ -211,6 +239,7 @@ class TileRenderer {
   SampleOrder order_;
   DenoiseInput* halves_ = nullptr;
   CryptomatteLayer objects_, materials_;  // no layer: not written
+  std::vector<FilmLayer*> groupLayers_;    // per light group; empty: not written
 };
 
 // The denoiser's input: the half buffers (already filled by the tiles) and the film's features.

@@ -46,7 +46,7 @@ const std::vector<std::string> kRootKeys = {"version",   "frames", "output",    
 const std::vector<std::string> kMaterialTypes = {"diffuse", "skin", "water", "rough_dielectric"};
 const std::vector<std::string> kCausticsModes = {"mnee", "straight", "off"};  // order of readCaustics' modes
 const std::vector<std::string> kSamplerKinds = {"sobol", "independent"};  // order of readSampler's kinds
-const std::vector<std::string> kAovs = {"CryptoObject", "CryptoMaterial"};  // order of readAovs' switches
+const std::vector<std::string> kAovs = {"CryptoObject", "CryptoMaterial", "lightGroups"};  // order of readAovs' switches
 const std::vector<std::string> kSubsurfaceMethods = {"randomWalk", "diffusion"};  // order of readSubsurfaceMethod's
 const std::vector<std::string> kFilterTypes = {"blackman-harris", "gaussian", "mitchell", "box"};  // readFilter's order
 // A filter wider than this blurs away the detail it should keep (and 16 px is already 8 pixels
@@ -329,7 +329,7 @@ class ShotReader {
     return c_.errorCount() == before;
   }
 
-  // "aovs": ["CryptoObject", "CryptoMaterial"]: further layers of the EXR, by their names there
+  // "aovs": ["CryptoObject", "CryptoMaterial", "lightGroups"]: further layers of the EXR
   // (docs/compositing.md).
   void readAovs(ObjectReader& render, RenderSettings& s) {
     const Json* v = render.find("aovs");
@@ -339,7 +339,7 @@ class ShotReader {
                                describeValue(*v));
       return;
     }
-    bool* switches[] = {&s.cryptomatte.objects, &s.cryptomatte.materials};
+    bool* switches[] = {&s.cryptomatte.objects, &s.cryptomatte.materials, &s.lightGroups};
     for (size_t i = 0; i < v->size(); ++i) {
       const std::string pointer = childPointer(render.at("aovs"), std::to_string(i));
       const auto name = readString(c_, (*v)[i], pointer);
@@ -1048,11 +1048,16 @@ class ShotReader {
     const bool rectangle = *type == "rectangle";
     ObjectReader o(c_, v, pointer,
                    rectangle ? std::vector<std::string>{"type", "center", "u", "v", "size", "normal", "lookAt", "up",
-                                                        "radiance", "power", "twoSided", "intensity"}
-                             : std::vector<std::string>{"type", "center", "radius", "radiance", "power", "intensity"});
+                                                        "radiance", "power", "twoSided", "intensity", "lightGroup"}
+                             : std::vector<std::string>{"type", "center", "radius", "radiance", "power", "intensity",
+                                                        "lightGroup"});
     const size_t before = c_.errorCount();
     AreaLight light;
     light.shape = rectangle ? AreaLight::Shape::Rectangle : AreaLight::Shape::Sphere;
+    if (auto group = o.string("lightGroup")) {
+      if (group->empty()) o.error("lightGroup", "expected a light group's name, found \"\"");
+      light.group = *group;
+    }
     // A keyed center moves the light; its orientation is the one at the first key.
     const auto animatedCenter = readAnimatedMember(o, "center");
     const auto center = animatedCenter ? std::optional<Vec3>(animatedCenter->constant) : std::nullopt;

@@ -23,11 +23,18 @@ TEST(AovsSetting, NoneByDefaultEachCryptomatteByItsLayerName) {
             (CryptomatteSettings{true, true, 6}));
 }
 
+TEST(AovsSetting, LightGroupsByTheirLayerNameAndLightsByTheirGroup) {
+  EXPECT_FALSE(loadShot(writeShot("aovs_no_groups.json", shotWithRender(""))).render.lightGroups);
+  const Shot shot = loadShot(writeShot("aovs_groups.json", shotWithRender(R"(, "aovs": ["lightGroups"])")));
+  EXPECT_TRUE(shot.render.lightGroups);
+  EXPECT_EQ(shot.render.cryptomatte, CryptomatteSettings{});
+}
+
 TEST(AovsSetting, BadValuesAreReportedAtTheirPath) {
   expectSingleError("aovs_typo.json", shotWithRender(R"(, "aovs": ["CryptoObjects"])"),
                     "/render/aovs/0: unknown AOV 'CryptoObjects'; did you mean 'CryptoObject'?");
   expectSingleError("aovs_unknown.json", shotWithRender(R"(, "aovs": ["CryptoObject", "emission"])"),
-                    "/render/aovs/1: unknown AOV 'emission' (expected one of 'CryptoObject', 'CryptoMaterial')");
+                    "/render/aovs/1: unknown AOV 'emission' (expected one of 'CryptoObject', 'CryptoMaterial', 'lightGroups')");
   expectSingleError("aovs_type.json", shotWithRender(R"(, "aovs": "CryptoObject")"),
                     "/render/aovs: expected a list of layer names such as [\"CryptoObject\", \"CryptoMaterial\"], "
                     "found \"CryptoObject\"");

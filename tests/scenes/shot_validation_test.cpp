@@ -191,6 +191,25 @@ TEST(ShotValidation, LightPowerBecomesRadiance) {
   EXPECT_TRUE((shot.lights[1].radiance == Color(1, 2, 3)).all());
 }
 
+TEST(ShotValidation, ALightNamesItsLightGroup) {
+  const auto f = writeShot("light_group.json", shotText(R"("lights": [
+    {"type": "rectangle", "center": [0, 1, 0], "u": [0.5, 0, 0], "v": [0, 0, -0.2], "power": 2, "lightGroup": "key"},
+    {"type": "sphere", "center": [0, 1, 0], "radius": 0.1, "power": 1, "lightGroup": "key"},
+    {"type": "sphere", "center": [1, 1, 0], "radius": 0.1, "power": 1}
+  ])"));
+  const Shot shot = loadShot(f);
+  ASSERT_EQ(shot.lights.size(), 3u);
+  EXPECT_EQ(shot.lights[0].group, "key");
+  EXPECT_EQ(shot.lights[1].group, "key");
+  EXPECT_EQ(shot.lights[2].group, "");
+  const auto empty = writeShot("light_group_empty.json", shotText(R"("lights": [
+    {"type": "sphere", "center": [0, 1, 0], "radius": 0.1, "power": 1, "lightGroup": ""}])"));
+  std::vector<Diagnostic> diagnostics;
+  test::shotErrorOf(empty, &diagnostics);
+  ASSERT_EQ(diagnostics.size(), 1u);
+  EXPECT_EQ(diagnostics[0].jsonPath, "/lights/0/lightGroup");
+}
+
 TEST(ShotValidation, RectangleEdgesAndSizeCannotBeMixed) {
   const auto f = writeShot("rectangle_mixed.json", shotText(R"("materials": {"grey": {"type": "diffuse"}},
   "shapes": [{"type": "rectangle", "center": [0, 0, 0], "u": [1, 0, 0], "v": [0, 0, -1], "size": [1, 1], "material": "grey"}])"));

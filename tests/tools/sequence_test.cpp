@@ -253,6 +253,8 @@ TEST(SequenceResume, FramesOfOtherShotRenderSettingsAreRenderedAgain) {
        "its lacrima:bounces is diffuse 1024 glossy 1024 transmission 1024, not diffuse 1024 glossy 2 transmission 1024"},
       {R"(, "caustics": "straight")", "its lacrima:caustics is mnee, not straight"},
       {R"(, "adaptive": {"threshold": 0.05, "minSpp": 2})", "its lacrima:adaptive is off, not threshold 0.05 min 2 spp"},
+      {R"(, "aovs": ["CryptoMaterial"])", "it has no 'CryptoMaterial00.R' channel, which this run writes"},
+      {R"(, "aovs": ["lightGroups"])", "it has no 'lightgroup_environment.R' channel, which this run writes"},
   };
   for (const auto& change : changes) {
     SCOPED_TRACE(change.renderExtra);

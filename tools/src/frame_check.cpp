@@ -12,8 +12,16 @@ namespace lacrima::cli {
 
 namespace {
 
-std::string checkChannels(const OIIO::ImageSpec& spec, bool floatBeauty) {
-  const OIIO::TypeDesc beauty = floatBeauty ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::HALF;
+std::string checkChannels(const OIIO::ImageSpec& spec, const RenderSettings& s) {
+  // The further layers this run writes (their first channel; light groups: the environment's).
+  std::vector<const char*> layers;
+  if (s.cryptomatte.objects) layers.push_back("CryptoObject00.R");
+  if (s.cryptomatte.materials) layers.push_back("CryptoMaterial00.R");
+  if (s.lightGroups) layers.push_back("lightgroup_environment.R");
+  for (const char* name : layers)
+    if (std::find(spec.channelnames.begin(), spec.channelnames.end(), name) == spec.channelnames.end())
+      return fmt::format("it has no '{}' channel, which this run writes", name);
+  const OIIO::TypeDesc beauty = s.floatOutput ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::HALF;
   for (const char* name : {"R", "G", "B", "A"}) {
     const auto it = std::find(spec.channelnames.begin(), spec.channelnames.end(), name);
     if (it == spec.channelnames.end()) return fmt::format("it has no '{}' channel", name);
@@ -74,7 +82,7 @@ std::string whyFrameMustBeRendered(const std::filesystem::path& exr, const Rende
   if (spec.deep || spec.width != expected.width || spec.height != expected.height)
     return fmt::format("it is {}x{}, this run renders {}x{}", spec.width, spec.height, expected.width,
                        expected.height);
-  if (std::string why = checkChannels(spec, expected.floatOutput); !why.empty()) return why;
+  if (std::string why = checkChannels(spec, expected); !why.empty()) return why;
   if (std::string why = checkMetadata(spec, expected); !why.empty()) return why;
   // A truncated or damaged file often has an intact header: only reading every pixel tells.
   std::vector<float> pixels(size_t(spec.width) * size_t(spec.height) * size_t(spec.nchannels));

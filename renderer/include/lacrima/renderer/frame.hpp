@@ -78,6 +78,7 @@ struct AreaLight {
   float radius = 0.0f;
   Color radiance = Color(1, 1, 1);
   bool twoSided = false;
+  std::string group;  // its light group (light_groups.hpp); empty: a group of its own, "light<i>"
 };
 
 // How light reaches a diffuse or glossy point through smooth dielectrics (drops, tears, the
@@ -144,6 +145,8 @@ struct RenderSettings {
   // Pixel reconstruction filter, importance-sampled per camera sample (pixel_filter.hpp).
   PixelFilter filter;
   CryptomatteSettings cryptomatte;
+  // A beauty layer per light group (light_groups.hpp), the groups adding up to the beauty.
+  bool lightGroups = false;
 };
 
 struct Frame {
