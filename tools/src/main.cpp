@@ -250,7 +250,7 @@ const char* kTrackExamples =
     "      and /tmp/track/performance.csv (the weights and the head's channels, for an asset with a\n"
     "      rig); beside a synthetic performance, the errors against its truth\n"
     "  lacrima track --synthesize /tmp/cry --from-shot scenes/shots/tear_closeup.json\n"
-    "  lacrima track /tmp/cry/performance.json --out /tmp/cry-track --head-start 6,0,12\n"
+    "  lacrima track /tmp/cry/performance.json --out /tmp/cry-track --head-start 6,0,12 --no-filter\n"
     "  lacrima render scenes/shots/tear_closeup.json --performance face=/tmp/cry-track/performance.csv -o t.####.exr\n"
     "      the crying shot's own performance captured, tracked, and the shot played by the track\n"
     "\n"
@@ -258,13 +258,15 @@ const char* kTrackExamples =
     "face's upper part against the depth map (point-plane, from the last frame's pose; the first frame's\n"
     "from the inner landmarks and their depth), the seed's adaptive pose filter (--no-filter: off), then\n"
     "the blendshape weights in [0, 1] fitted to the depth and the landmarks with the seed's animation\n"
-    "prior (--no-prior: off; trained on synthetic keyed blends of twelve archetypal expressions).\n"
+    "prior (--no-prior: off; trained on synthetic keyed blends of twelve archetypal expressions with\n"
+    "spontaneous blinks).\n"
     "A performance is performance.json: {\"version\": 1, \"fps\": 30, \"frames\": {\"start\": 1, \"end\": 60},\n"
     "\"camera\": {\"width\", \"height\", \"fx\", \"fy\", \"cx\", \"cy\"} (pixels), \"depth\": \"depth.####.exr\" (one\n"
     "float channel Z in metres, 0 = none), \"landmarks\": \"landmarks.csv\" (frame,landmark,u,v in pixels,\n"
-    "iBUG 68 numbering)}. performance.csv adds to the weights the head's motion since the first frame\n"
-    "as the rig's channels head.rx/ry/rz (Euler degrees, x first) and head.tx/ty/tz (metres), turning\n"
-    "about the ICT rig's head pivot.\n"
+    "iBUG 68 numbering; or OpenFace 2.0's CSV, or JSON: docs/tracking.md)}. On a moving head the pose\n"
+    "filter lags (--no-filter tracks it closer). performance.csv adds to the weights the head's\n"
+    "motion since the first frame as the rig's channels head.rx/ry/rz (Euler degrees, x first) and\n"
+    "head.tx/ty/tz (metres), turning about the ICT rig's head pivot.\n"
     "Exit status: 0 success, 2 a bad performance, asset or option.";
 
 void addTrack(CLI::App& app, TrackOptions& o) {
