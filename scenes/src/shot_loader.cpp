@@ -46,7 +46,6 @@ const std::vector<std::string> kRootKeys = {"version",   "frames", "output",    
 const std::vector<std::string> kMaterialTypes = {"diffuse", "skin", "water", "rough_dielectric"};
 const std::vector<std::string> kCausticsModes = {"mnee", "straight", "off"};  // order of readCaustics' modes
 const std::vector<std::string> kSamplerKinds = {"sobol", "independent"};  // order of readSampler's kinds
-const std::vector<std::string> kAovs = {"CryptoObject", "CryptoMaterial", "lightGroups"};  // order of readAovs' switches
 const std::vector<std::string> kSubsurfaceMethods = {"randomWalk", "diffusion"};  // order of readSubsurfaceMethod's
 const std::vector<std::string> kFilterTypes = {"blackman-harris", "gaussian", "mitchell", "box"};  // readFilter's order
 // A filter wider than this blurs away the detail it should keep (and 16 px is already 8 pixels
@@ -339,19 +338,13 @@ class ShotReader {
                                describeValue(*v));
       return;
     }
-    bool* switches[] = {&s.cryptomatte.objects, &s.cryptomatte.materials, &s.lightGroups};
     for (size_t i = 0; i < v->size(); ++i) {
       const std::string pointer = childPointer(render.at("aovs"), std::to_string(i));
       const auto name = readString(c_, (*v)[i], pointer);
-      if (!name) continue;
-      const auto known = std::find(kAovs.begin(), kAovs.end(), *name);
-      if (known != kAovs.end()) {
-        *switches[known - kAovs.begin()] = true;
-        continue;
-      }
-      const std::string suggestion = didYouMean(*name, kAovs);
+      if (!name || enableAov(s, *name)) continue;
+      const std::string suggestion = didYouMean(*name, aovNames());
       c_.error(pointer, Anchor::Value,
-               suggestion.empty() ? fmt::format("unknown AOV '{}' (expected one of {})", *name, quotedList(kAovs))
+               suggestion.empty() ? fmt::format("unknown AOV '{}' (expected one of {})", *name, quotedList(aovNames()))
                                   : fmt::format("unknown AOV '{}'{}", *name, suggestion));
     }
   }

@@ -599,6 +599,17 @@ TEST(CliRender, CryptomattesReachTheExrAndInfoListsThem) {
   EXPECT_NE(info.output.find("    sphere 0                                 " + cryptomatteHex(cryptomatteIdOf("sphere 0"))),
             std::string::npos)
       << info.output;
+
+  // --aov adds a layer to the shot's; an unknown one is refused with the names it takes.
+  const auto groups = lacrima({"render", shot.string(), "--out", (dir / "g.####.exr").string(), "--aov", "lightGroups", "--quiet"});
+  ASSERT_EQ(groups.exitStatus, 0) << groups.output;
+  const auto groupInfo = lacrima({"info", (dir / "g.0001.exr").string()});
+  EXPECT_NE(groupInfo.output.find("    lightgroup_environment R G B (float)"), std::string::npos) << groupInfo.output;
+  EXPECT_NE(groupInfo.output.find("    CryptoObject00"), std::string::npos) << "the shot's stay" << groupInfo.output;
+  const auto unknown = lacrima({"render", shot.string(), "--out", (dir / "u.####.exr").string(), "--aov", "emission"});
+  EXPECT_EQ(unknown.exitStatus, 2) << unknown.output;
+  EXPECT_NE(unknown.output.find("CryptoObject"), std::string::npos) << unknown.output;
+  EXPECT_FALSE(fs::exists(dir / "u.0001.exr"));
 }
 
 TEST(CliRender, WarningsComeBeforeRenderingAndFrameStepsAreHonoured) {

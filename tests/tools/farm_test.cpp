@@ -133,7 +133,7 @@ TEST(FarmStatus, TheJobHasQueuedTasksUntilItsOwnTasksLeaveTheQueue) {
 TEST(FarmCommand, DryRunWritesTheJobAndSubmitsNothing) {
   const fs::path dir = test::testDirectory("farm", /*fresh=*/true);
   const fs::path shot = writeSphereShot(dir, 5);
-  const auto run = lacrima({"farm", "submit", shot.string(), "--chunk", "2", "--spp", "3", "--dry-run"});
+  const auto run = lacrima({"farm", "submit", shot.string(), "--chunk", "2", "--spp", "3", "--aov", "lightGroups", "--dry-run"});
   ASSERT_EQ(run.exitStatus, 0) << run.output;
   EXPECT_TRUE(contains(run.output, "--dry-run: 3 task(s) for frames 1-5 (0 complete frames skipped), not submitted"))
       << run.output;
@@ -143,6 +143,8 @@ TEST(FarmCommand, DryRunWritesTheJobAndSubmitsNothing) {
   const FarmJob job = readFarmJob(jobDir);
   EXPECT_EQ(job.frames, (std::vector<int>{1, 2, 3, 4, 5}));
   EXPECT_EQ(job.render.spp, 3);
+  EXPECT_EQ(job.render.aovs, (std::vector<std::string>{"lightGroups"})) << "each task renders with the --aov";
+  EXPECT_TRUE(contains(readText(jobDir / "job-1.sh"), "'--aov' 'lightGroups'")) << readText(jobDir / "job-1.sh");
   EXPECT_EQ(job.render.outputPattern, (dir / "out" / "spheres.####.exr").string());
   ASSERT_EQ(job.submissions.size(), 1u);
   EXPECT_EQ(job.submissions[0].jobId, "");

@@ -23,6 +23,7 @@ struct RenderOptions {
   std::optional<int> spp, width, height, threads, maxDepth;
   std::optional<uint64_t> seed;
   std::optional<bool> denoise;  // --denoise / --no-denoise; none: the shot's render.denoise
+  std::vector<std::string> aovs;  // --aov: further layers, beside the shot's render.aovs
   std::string outputPattern;  // empty: the shot's
   bool preview = false;
   bool floatOutput = false;

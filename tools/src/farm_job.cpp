@@ -41,6 +41,7 @@ std::vector<std::string> renderArguments(const RenderOptions& r) {
   if (r.preview) args.push_back("--preview");
   if (r.floatOutput) args.push_back("--float");
   if (r.denoise) args.push_back(*r.denoise ? "--denoise" : "--no-denoise");
+  for (const std::string& aov : r.aovs) args.insert(args.end(), {"--aov", aov});
   return args;
 }
 
@@ -114,6 +115,7 @@ json renderToJson(const RenderOptions& r) {
   j["preview"] = r.preview;
   j["float"] = r.floatOutput;
   if (r.denoise) j["denoise"] = *r.denoise;
+  if (!r.aovs.empty()) j["aovs"] = r.aovs;
   return j;
 }
 
@@ -129,6 +131,7 @@ RenderOptions renderFromJson(const json& j, const fs::path& shot) {
   r.preview = j.at("preview").get<bool>();
   r.floatOutput = j.at("float").get<bool>();
   if (j.contains("denoise")) r.denoise = j["denoise"].get<bool>();
+  if (j.contains("aovs")) r.aovs = j["aovs"].get<std::vector<std::string>>();
   return r;
 }
 

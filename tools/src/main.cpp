@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "lacrima/renderer/frame.hpp"
 
 using namespace lacrima::cli;
 
@@ -113,6 +114,10 @@ void addShotAndOverrides(CLI::App& command, RenderOptions& o) {
   auto* noDenoise = command.add_flag_callback("--no-denoise", [&o] { o.denoise = false; },
                                               "Do not denoise, whatever the shot's render.denoise says");
   denoise->excludes(noDenoise);
+  command.add_option("--aov", o.aovs,
+                     "A further EXR layer, beside the shot's render.aovs (repeatable): CryptoObject, CryptoMaterial "
+                     "(Cryptomatte ID mattes), lightGroups (a beauty layer per light group); docs/compositing.md")
+      ->check(CLI::IsMember(lacrima::aovNames()));
 }
 
 void addRender(CLI::App& app, RenderOptions& o) {

@@ -18,6 +18,7 @@ void applyOverrides(const RenderOptions& o, RenderSettings& s) {
   if (o.seed) s.seed = *o.seed;
   if (o.floatOutput) s.floatOutput = true;
   if (o.denoise) s.denoise = *o.denoise;
+  for (const std::string& aov : o.aovs) enableAov(s, aov);  // names checked by the command line
 }
 
 RenderSettings settingsFor(const RenderOptions& o, const Shot& shot, int frameNumber) {

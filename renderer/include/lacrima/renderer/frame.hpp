@@ -149,6 +149,12 @@ struct RenderSettings {
   bool lightGroups = false;
 };
 
+// The further EXR layers a render can write, by the names shots and `--aov` give them:
+// "CryptoObject", "CryptoMaterial", "lightGroups".
+const std::vector<std::string>& aovNames();
+// Turns on the AOV `name` in `s`; false (and `s` unchanged) for a name not in aovNames().
+bool enableAov(RenderSettings& s, const std::string& name);
+
 struct Frame {
   std::vector<Material> materials;  // indexed by materialId
   std::vector<MeshInstance> meshes;
