@@ -76,9 +76,12 @@ CryptomatteNames cryptomatteNames(const Frame& frame) {
     const std::string& name = frame.materials[i].name;
     names.materials.push_back(name.empty() ? fmt::format("material {}", i) : name);
   }
+  // A light is named as its light group (light_groups.hpp), so "key" picks the same light in both.
   for (size_t i = 0; i < frame.lights.size(); ++i) {
-    names.objects.push_back(fmt::format("light {}", i));
-    names.materials.push_back(fmt::format("light {}", i));
+    const std::string& group = frame.lights[i].group;
+    const std::string name = group.empty() ? fmt::format("light{}", i) : group;
+    names.objects.push_back(name);
+    names.materials.push_back(name);
   }
   names.materialManifest = names.materials;
   std::vector<bool> filmed(frame.materials.size(), false);

@@ -118,7 +118,7 @@ TEST(Cryptomatte, ARenderRanksEachPixelsObjectsAndMaterialsAndNamesThemAll) {
   // The manifests name every object and material, with their IDs.
   const std::string objects = film.attributes.at("cryptomatte/" + cryptomatteKey("CryptoObject") + "/manifest");
   const nlohmann::json manifest = nlohmann::json::parse(objects);
-  for (const char* name : {"wall", "sphere 0", "light 0"})
+  for (const char* name : {"wall", "sphere 0", "light0"})
     EXPECT_EQ(manifest.at(name).get<std::string>(), cryptomatteHex(cryptomatteIdOf(name))) << name;
   EXPECT_EQ(manifest.size(), 3u);
   const nlohmann::json materials = nlohmann::json::parse(
@@ -126,6 +126,16 @@ TEST(Cryptomatte, ARenderRanksEachPixelsObjectsAndMaterialsAndNamesThemAll) {
   EXPECT_TRUE(materials.contains("plaster") && materials.contains("porcelain"));
   EXPECT_EQ(film.attributes.at("cryptomatte/" + cryptomatteKey("CryptoObject") + "/hash"), "MurmurHash3_32");
   EXPECT_EQ(film.attributes.at("cryptomatte/" + cryptomatteKey("CryptoObject") + "/conversion"), "uint32_to_float32");
+}
+
+TEST(Cryptomatte, ALightIsNamedAsItsLightGroup) {
+  Frame frame = ballBeforeAWall();
+  frame.lights.push_back(frame.lights[0]);
+  frame.lights[1].group = "key";
+  const CryptomatteNames names = cryptomatteNames(frame);
+  EXPECT_EQ(names.objects[names.objects.size() - 2], "light0") << "no lightGroup: its default group's name";
+  EXPECT_EQ(names.objects.back(), "key");
+  EXPECT_EQ(names.materialManifest.back(), "key");
 }
 
 TEST(Cryptomatte, SkinUnderATearsFilmHasAWetNameOfItsOwn) {

@@ -1,7 +1,8 @@
 #pragma once
 // Cryptomatte ID mattes (Friedman & Jones 2015; the Cryptomatte specification of Psyop's
 // committee): every camera sample's first hit is named (its object: the frame mesh's name such as
-// "face/M_Face" or "tear", "sphere <i>", "light <i>"; its material: the shot's material name); a
+// "face/M_Face" or "tear", "sphere <i>", a light by its light group's name, "light<i>" without one;
+// its material: the shot's material name); a
 // name becomes a float ID by MurmurHash3_x86_32 (Appleby 2011) converted "uint32_to_float32"; per
 // pixel a ranking filter sums each ID's filter weights over the pixel's samples, divides by the
 // sum of all of them (coverage), and keeps the IDs of the largest coverage, ranked. The EXR holds
