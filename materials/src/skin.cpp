@@ -85,14 +85,25 @@ float SkinBsdf::specularPdf(const Vec3& wo, const Vec3& wi) const {
   return visible / (4.0f * std::abs(wo.dot(*wm)));
 }
 
-Color SkinBsdf::eval(const Vec3& wo, const Vec3& wi) const {
-  if (!bothAbove(wo, wi)) return Color::Zero();
-  // Fresnel-weighted Lambertian base, reciprocal form (Shirley et al. 1997), see skin.hpp.
-  if (!hasDiffuseLobe_) return Color::Constant(specularF(wo, wi));
+// Fresnel-weighted Lambertian base, reciprocal form (Shirley et al. 1997), see skin.hpp.
+Color SkinBsdf::diffuseF(const Vec3& wo, const Vec3& wi) const {
   const float transO = 1.0f - fresnelDielectric(wo.z(), ior_);
   const float transI = 1.0f - fresnelDielectric(wi.z(), ior_);
-  const Color diffuse = albedo_ * (diffuseNorm_ * transO * transI);
-  return diffuse + Color::Constant(specularF(wo, wi));
+  return albedo_ * (diffuseNorm_ * transO * transI);
+}
+
+Color SkinBsdf::eval(const Vec3& wo, const Vec3& wi) const {
+  if (!bothAbove(wo, wi)) return Color::Zero();
+  if (!hasDiffuseLobe_) return Color::Constant(specularF(wo, wi));
+  return diffuseF(wo, wi) + Color::Constant(specularF(wo, wi));
+}
+
+BsdfLobes SkinBsdf::evalLobes(const Vec3& wo, const Vec3& wi) const {
+  BsdfLobes lobes;
+  if (!bothAbove(wo, wi)) return lobes;
+  if (hasDiffuseLobe_) lobes.diffuse = diffuseF(wo, wi);
+  lobes.glossy = Color::Constant(specularF(wo, wi));
+  return lobes;
 }
 
 float SkinBsdf::specularProbability(const Vec3& wo) const {

@@ -85,19 +85,25 @@ float WetSkinBsdf::coatProbability(const Vec3& wo) const {
   return std::clamp(fo / std::max(fo + underEstimate, 1e-6f), 0.1f, 0.9f);
 }
 
-Color WetSkinBsdf::wetEval(const Vec3& wo, const Vec3& wi) const {
+BsdfLobes WetSkinBsdf::wetLobes(const Vec3& wo, const Vec3& wi) const {
+  BsdfLobes lobes;
   // The film's base, through its top twice (wet_skin.hpp, f_under).
   const float transO = 1.0f - fresnelDielectric(wo.z(), kWaterIor);
   const float transI = 1.0f - fresnelDielectric(wi.z(), kWaterIor);
-  Color f = wetAlbedo_ * (underNorm_ * transO * transI);
+  lobes.diffuse = wetAlbedo_ * (underNorm_ * transO * transI);
   // The film's top: GGX reflection, f = D G F / (4 cos_o cos_i) (Walter 2007 eq. 20).
   const Vec3 h = wo + wi;
   if (h.squaredNorm() > 0.0f) {
     const Vec3 wm = h.normalized();
     const float F = fresnelDielectric(wo.dot(wm), kWaterIor);
-    f += Color::Constant(coat_.D(wm) * coat_.G(wo, wi) * F / (4.0f * wo.z() * wi.z()));
+    lobes.glossy = Color::Constant(coat_.D(wm) * coat_.G(wo, wi) * F / (4.0f * wo.z() * wi.z()));
   }
-  return f;
+  return lobes;
+}
+
+Color WetSkinBsdf::wetEval(const Vec3& wo, const Vec3& wi) const {
+  const BsdfLobes wet = wetLobes(wo, wi);
+  return wet.diffuse + wet.glossy;
 }
 
 float WetSkinBsdf::wetPdf(const Vec3& wo, const Vec3& wi) const {
@@ -118,6 +124,16 @@ Color WetSkinBsdf::eval(const Vec3& wo, const Vec3& wi) const {
   const Color wet = wetEval(wo, wi);
   if (coverage_ == 1.0f) return wet;
   return (1.0f - coverage_) * skin_.eval(wo, wi) + coverage_ * wet;
+}
+
+BsdfLobes WetSkinBsdf::evalLobes(const Vec3& wo, const Vec3& wi) const {
+  if (coverage_ == 0.0f) return skin_.evalLobes(wo, wi);
+  if (!bothAbove(wo, wi)) return {};
+  const BsdfLobes wet = wetLobes(wo, wi);
+  if (coverage_ == 1.0f) return wet;
+  const BsdfLobes dry = skin_.evalLobes(wo, wi);
+  const float c = coverage_;
+  return {(1.0f - c) * dry.diffuse + c * wet.diffuse, (1.0f - c) * dry.glossy + c * wet.glossy, Color::Zero()};
 }
 
 float WetSkinBsdf::pdf(const Vec3& wo, const Vec3& wi) const {

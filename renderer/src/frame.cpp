@@ -12,7 +12,11 @@ bool Frame::hasMotion() const {
 }
 
 const std::vector<std::string>& aovNames() {
-  static const std::vector<std::string> names = {"CryptoObject", "CryptoMaterial", "lightGroups"};
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> all = {"CryptoObject", "CryptoMaterial", "lightGroups", "lightPaths"};
+    for (const LightPath pass : allLightPaths()) all.push_back(lightPathName(pass));
+    return all;
+  }();
   return names;
 }
 
@@ -20,7 +24,13 @@ bool enableAov(RenderSettings& s, const std::string& name) {
   if (name == "CryptoObject") s.cryptomatte.objects = true;
   else if (name == "CryptoMaterial") s.cryptomatte.materials = true;
   else if (name == "lightGroups") s.lightGroups = true;
-  else return false;
+  else if (name == "lightPaths") s.lightPaths.addAll();
+  else {
+    const auto& passes = allLightPaths();
+    const auto pass = std::find_if(passes.begin(), passes.end(), [&](LightPath p) { return lightPathName(p) == name; });
+    if (pass == passes.end()) return false;
+    s.lightPaths.add(*pass);
+  }
   return true;
 }
 

@@ -10,6 +10,7 @@
 #include "lacrima/materials/fresnel.hpp"
 #include "lacrima/materials/skin_relief.hpp"
 #include "lacrima/materials/wet_skin.hpp"
+#include "light_path_split.hpp"
 #include "ray_offset.hpp"
 #include "sample_dimensions.hpp"
 #include "subsurface_probe.hpp"
@@ -224,27 +225,27 @@ PathIntegrator::Trace PathIntegrator::traceToRealSurface(Ray& ray, SurfaceHit& h
   }
 }
 
-Color PathIntegrator::sampleDirectLight(const Vertex& v, const MediumStack& media, PixelSampler& sampler,
-                                        PathCounters& counters, int& source) const {
+PathIntegrator::DirectLight PathIntegrator::sampleDirectLight(const Vertex& v, const MediumStack& media,
+                                                             PixelSampler& sampler, PathCounters& counters) const {
   const std::array<float, 4> light4 = sampler.get4D();  // the light's choice, the point on it
   const float uSelect = light4[0];
   const Vec2 u(light4[1], light4[2]);
-  if (v.bsdf->isPureSpecular() || lights_.empty()) return Color::Zero();
+  if (v.bsdf->isPureSpecular() || lights_.empty()) return {};
   const LightSample light = lights_.sample(v.position, uSelect, u);
-  if (light.pdf <= 0.0f || (light.radiance <= 0.0f).all()) return Color::Zero();
-  source = light.lightIndex;
+  if (light.pdf <= 0.0f || (light.radiance <= 0.0f).all()) return {};
 
   const Vec3 wiLocal = v.frame.toLocal(light.direction);
+  DirectLight direct{Color::Zero(), light.lightIndex, wiLocal};
   // No leaks: the shading frame and the geometric surface must agree on reflect vs transmit.
   const bool geometricReflect = light.direction.dot(v.geometricNormal) * v.wo.dot(v.geometricNormal) > 0.0f;
   const bool shadingReflect = wiLocal.z() * v.woLocal.z() > 0.0f;
-  if (geometricReflect != shadingReflect) return Color::Zero();
+  if (geometricReflect != shadingReflect) return {};
   // A shadow ray through a (rough) dielectric starts in the media on the far side.
   MediumStack shadowMedia = media;
   if (!geometricReflect && !v.thinSheet) crossInterface(shadowMedia, v.materialId, v.entering);
 
   const Color f = v.bsdf->eval(v.woLocal, wiLocal) * absCosTheta(wiLocal);
-  if ((f <= 0.0f).all()) return Color::Zero();
+  if ((f <= 0.0f).all()) return {};
   const Vec3 origin = offsetOrigin(v.position, v.geometricNormal, light.direction);
   const float maxDistance = std::isinf(light.distance) ? light.distance : light.distance * (1.0f - 1e-4f);
   ++counters.rays;
@@ -254,21 +255,25 @@ Color PathIntegrator::sampleDirectLight(const Vertex& v, const MediumStack& medi
   // hit that MNEE's seed or the transparent shadow would trace to find that out.
   if (blocked) {
     ++counters.rays;
-    if (!scene_.dielectricOnSegment(origin, light.direction, maxDistance, v.time)) return Color::Zero();
+    if (!scene_.dielectricOnSegment(origin, light.direction, maxDistance, v.time)) return {};
   }
   // MNEE seeds its chain with this straight shadow ray (so a sample whose straight direction
   // is below the surface, f = 0 above, finds no caustic either).
   if (blocked && frame_.settings.causticsMode() == Caustics::Mnee)
-    if (const std::optional<Color> caustic = manifoldDirectLight(v, light, shadowMedia, counters)) return *caustic;
+    if (const std::optional<Color> caustic = manifoldDirectLight(v, light, shadowMedia, counters, direct.wiLocal)) {
+      direct.radiance = *caustic;
+      return direct;
+    }
   bool crossedDielectric = false;
   const Color transmittance =
       blocked ? shadowTransmittance(Ray{origin, light.direction, v.time}, maxDistance, shadowMedia, crossedDielectric, counters)
               : Color::Ones();
-  if ((transmittance <= 0.0f).all()) return Color::Zero();
+  if ((transmittance <= 0.0f).all()) return {};
   // Through a dielectric, only this strategy counts the path (the BSDF strategy drops it, see
   // radiance()), so it takes the full weight.
   const float weight = crossedDielectric ? 1.0f : powerHeuristic(light.pdf, v.bsdf->pdf(v.woLocal, wiLocal));
-  return f * light.radiance * transmittance * (weight / light.pdf);
+  direct.radiance = f * light.radiance * transmittance * (weight / light.pdf);
+  return direct;
 }
 
 // Transparent shadows: a shadow ray that meets smooth dielectric surfaces (drops, the cornea)
@@ -320,7 +325,8 @@ Color PathIntegrator::shadowTransmittance(const Ray& shadowRay, float maxDistanc
   return Color::Zero();
 }
 
-FirstHitIds PathIntegrator::idsOf(const SurfaceHit& hit) const {
+FirstHitIds PathIntegrator::cryptomatteIdsOf(const SurfaceHit& hit) const {
+  if (!frame_.settings.cryptomatte.any()) return {};  // only Cryptomatte reads them
   const int meshes = int(frame_.meshes.size()), spheres = int(frame_.spheres.size());
   if (hit.lightIndex >= 0)
     return {meshes + spheres + hit.lightIndex, int(frame_.materials.size()) + hit.lightIndex};
@@ -331,14 +337,15 @@ FirstHitIds PathIntegrator::idsOf(const SurfaceHit& hit) const {
 }
 
 Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, FirstHit& firstHit,
-                               PathCounters& counters, Color* groupRadiance) const {
+                               PathCounters& counters, const RadianceSplits& splits) const {
   Color result = Color::Zero();
   // Every contribution goes to the beauty and, when asked, to its light's group.
   const auto gather = [&](const Color& contribution, int group) {
     result += contribution;
-    if (groupRadiance) groupRadiance[size_t(group)] += contribution;
+    if (splits.groups) splits.groups[size_t(group)] += contribution;
   };
-  int source = -1;  // the light of the last next-event estimate
+  // And, when asked, to its light path (light_paths.hpp).
+  LightPathSplit paths(splits.paths);
   Color throughput = Color::Ones();
   float etaScale = 1.0f;         // undoes the 1/eta^2 radiance scaling for Russian roulette
   bool previousSpecular = true;  // camera rays count as specular: no MIS on what they see
@@ -366,12 +373,16 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
     if (trace == Trace::Miss) {
       // A uniform background is not light-sampled, so only the environment map can be counted twice.
       if (lights_.environmentIsSampled() && countedByTransparentShadows(chainAfterNonSpecular, crossings)) break;
+      Color contribution;
       if (previousSpecular) {
-        gather(throughput * lights_.background(ray.direction), groups_.environment);
+        contribution = throughput * lights_.background(ray.direction);
       } else {
         const LightSampler::Background background = lights_.backgroundWithPdf(ray.direction);
-        gather(throughput * background.radiance * powerHeuristic(previousBsdfPdf, background.pdf), groups_.environment);
+        contribution = throughput * background.radiance * powerHeuristic(previousBsdfPdf, background.pdf);
       }
+      gather(contribution, groups_.environment);
+      if (depth == 0) paths.seenDirectly(contribution, LightPath::Environment);
+      else paths.afterFirstBounce(contribution, depth == 1);
       break;
     }
     if (hit.lightIndex >= 0) {
@@ -379,8 +390,11 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
       const Color emitted = lights_.emitted(hit.lightIndex, -ray.direction);
       const float lightPdf = lights_.pdfAreaLight(hit.lightIndex, previousPosition, hit.position, hit.geometricNormal);
       const float weight = previousSpecular ? 1.0f : powerHeuristic(previousBsdfPdf, lightPdf);
-      gather(throughput * emitted * weight, groups_.ofLight[size_t(hit.lightIndex)]);
-      if (depth == 0) firstHit = {true, emitted.cwiseMin(1.0f), hit.geometricNormal, hit.distance, idsOf(hit)};
+      const Color contribution = throughput * emitted * weight;
+      gather(contribution, groups_.ofLight[size_t(hit.lightIndex)]);
+      if (depth == 0) paths.seenDirectly(contribution, LightPath::Emission);
+      else paths.afterFirstBounce(contribution, depth == 1);
+      if (depth == 0) firstHit = {true, emitted.cwiseMin(1.0f), hit.geometricNormal, hit.distance, cryptomatteIdsOf(hit)};
       break;
     }
 
@@ -420,16 +434,24 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
     v.frame = ShadingFrame::fromNormal(ns);
     v.woLocal = v.frame.toLocal(v.wo);
 
-    if (depth == 0) firstHit = {true, v.bsdf->albedo(), ns, hit.distance, idsOf(hit)};
+    if (depth == 0) firstHit = {true, v.bsdf->albedo(), ns, hit.distance, cryptomatteIdsOf(hit)};
     // Emissive opaque materials emit from both sides (an emitting box seen from inside).
-    if ((material.emission > 0.0f).any() && (frontFacing || !v.bsdf->isTransmissive()))
-      gather(throughput * material.emission, groups_.emission);
+    if ((material.emission > 0.0f).any() && (frontFacing || !v.bsdf->isTransmissive())) {
+      const Color contribution = throughput * material.emission;
+      gather(contribution, groups_.emission);
+      if (depth == 0) paths.seenDirectly(contribution, LightPath::Emission);
+      else paths.afterFirstBounce(contribution, depth == 1);
+    }
     if (depth >= maxDepth_ || lastSegment) break;
 
     const uint32_t dimensions = sample_dimensions::bounceBase(depth);
     sampler.setDimension(dimensions + sample_dimensions::kLight);
-    const Color direct = sampleDirectLight(v, media, sampler, counters, source);
-    gather(throughput * direct, groups_.ofSource(source));
+    const DirectLight direct = sampleDirectLight(v, media, sampler, counters);
+    gather(throughput * direct.radiance, groups_.ofSource(direct.source));
+    if (depth == 0 && paths.active())
+      paths.firstVertexDirect(throughput * direct.radiance, v.bsdf->evalLobes(v.woLocal, direct.wiLocal));
+    else
+      paths.afterFirstBounce(throughput * direct.radiance, false);
     if (subsurface_[hit.materialId]) {  // skin with subsurface: v.bsdf's lobes or a random walk
       const float dryFraction = 1.0f - (wetSkin ? wetSkin->coverage() : 0.0f);
       const SubsurfaceSkin& skin = *subsurface_[hit.materialId];
@@ -440,13 +462,17 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
       const Below below = scatterBelowSurface(skin, beneath, surface, v, dryFraction, sampler, counters);
       if (below.exit) {  // the light that leaves at the exit, whichever way the path goes on
         sampler.setDimension(dimensions + sample_dimensions::kExitLight);
-        const Color exitDirect = sampleDirectLight(*below.exit, media, sampler, counters, source);
-        gather(throughput * below.exitWeight * exitDirect, groups_.ofSource(source));
+        const DirectLight exitDirect = sampleDirectLight(*below.exit, media, sampler, counters);
+        const Color contribution = throughput * below.exitWeight * exitDirect.radiance;
+        gather(contribution, groups_.ofSource(exitDirect.source));
+        if (depth == 0) paths.belowFirstVertex(contribution);
+        else paths.afterFirstBounce(contribution, false);
       }
       if (!below.goesBelow) {
         throughput /= below.pSurface;
       } else {
         if (!below.exit) break;  // absorbed below the skin
+        if (depth == 0) paths.leftBelowTheSkin();
         throughput *= below.exitWeight / (1.0f - below.pSurface);
         v = *below.exit;
         hit.position = v.position;  // the path goes on from the exit point
@@ -462,6 +488,10 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
     const bool geometricReflect = wi.dot(ng) * v.wo.dot(ng) > 0.0f;
     if (geometricReflect == bs->transmitted) break;  // the shading normal sent it through the surface
     lastSegment = bounces.countIsOverLimit(*bs);
+    if (depth == 0 && paths.active()) {
+      if (bs->specular) paths.leftByDeltaLobe(bs->transmitted);
+      else paths.leftWithLobes(v.bsdf->evalLobes(v.woLocal, bs->wi));
+    }
     throughput *= bs->f * (absCosTheta(bs->wi) / bs->pdf);
     if (bs->transmitted) {
       etaScale *= bs->eta * bs->eta;

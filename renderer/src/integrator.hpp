@@ -18,6 +18,7 @@
 #include "lacrima/materials/subsurface.hpp"
 #include "lacrima/renderer/cryptomatte.hpp"
 #include "lacrima/renderer/light_groups.hpp"
+#include "lacrima/renderer/light_paths.hpp"
 #include "lacrima/renderer/medium_stack.hpp"
 #include "lacrima/renderer/specular_manifold.hpp"
 
@@ -32,6 +33,12 @@ struct FirstHit {
   FirstHitIds ids;  // its object and material (Cryptomatte)
 };
 
+// Where a camera path's radiance also goes, split (each zeroed by the caller; null: not split).
+struct RadianceSplits {
+  Color* groups = nullptr;  // PathIntegrator::lightGroups().size() colours: by light group (light_groups.hpp)
+  Color* paths = nullptr;   // kLightPathCount colours: by light path (light_paths.hpp)
+};
+
 struct PathCounters {
   uint64_t rays = 0;
 };
@@ -40,10 +47,8 @@ class PathIntegrator {
  public:
   PathIntegrator(const Frame& frame, const EmbreeScene& scene, const LightSampler& lights);
 
-  // The camera path's radiance; with `groupRadiance` (lightGroups().size() colours, zeroed by the
-  // caller), also split by light group (light_groups.hpp).
   Color radiance(const Ray& cameraRay, PixelSampler& sampler, FirstHit& firstHit, PathCounters& counters,
-                 Color* groupRadiance = nullptr) const;
+                 const RadianceSplits& splits = {}) const;
   const LightGroups& lightGroups() const { return groups_; }
 
  private:
@@ -51,22 +56,29 @@ class PathIntegrator {
 
   enum class Trace { Hit, Miss, Lost };
 
-  // Next-event estimation of one light; `source` gets the light's index (-1: the environment).
-  Color sampleDirectLight(const Vertex& vertex, const MediumStack& media, PixelSampler& sampler,
-                          PathCounters& counters, int& source) const;
+  // A next-event estimate: the light's contribution (f cos Le / pdf, MIS-weighted), its source
+  // (the light's index; -1 the environment) and the local direction f was evaluated in.
+  struct DirectLight {
+    Color radiance = Color::Zero();
+    int source = -1;
+    Vec3 wiLocal = Vec3::Zero();
+  };
+  DirectLight sampleDirectLight(const Vertex& vertex, const MediumStack& media, PixelSampler& sampler,
+                                PathCounters& counters) const;
   // What reaches the shading point along shadowRay, known to be blocked, within maxDistance
   // (see integrator.cpp); media: the media the shadow ray starts in.
   Color shadowTransmittance(const Ray& shadowRay, float maxDistance, MediumStack media, bool& crossedDielectric,
                             PathCounters& counters) const;
   bool countedByTransparentShadows(bool chainAfterNonSpecular, int crossings) const;
-  // The hit's object and material as cryptomatteNames lists them.
-  FirstHitIds idsOf(const SurfaceHit& hit) const;
+  // The hit's object and material as cryptomatteNames lists them (none when no Cryptomatte is written).
+  FirstHitIds cryptomatteIdsOf(const SurfaceHit& hit) const;
 
   // Manifold next-event estimation (mnee_direct_light.cpp): the light sample's contribution
   // through the 1 or 2 smooth dielectric interfaces its straight shadow ray crosses; nothing
   // when that ray crosses none, or more than 2 (the caller then goes on as without caustics).
+  // wiLocal: where f was evaluated (the chain's first segment), when there is a contribution.
   std::optional<Color> manifoldDirectLight(const Vertex& v, const LightSample& light, const MediumStack& shadowMedia,
-                                           PathCounters& counters) const;
+                                           PathCounters& counters, Vec3& wiLocal) const;
   struct CausticSeed;  // mnee_direct_light.cpp
   bool traceCausticSeed(const Vertex& v, const LightSample& light, MediumStack media, CausticSeed& seed,
                         PathCounters& counters) const;

@@ -175,7 +175,8 @@ bool PathIntegrator::causticChainIsVisible(const Vertex& v, const LightSample& l
 }
 
 std::optional<Color> PathIntegrator::manifoldDirectLight(const Vertex& v, const LightSample& light,
-                                                         const MediumStack& shadowMedia, PathCounters& counters) const {
+                                                         const MediumStack& shadowMedia, PathCounters& counters,
+                                                         Vec3& wiLocalOut) const {
   CausticSeed seed;
   if (!traceCausticSeed(v, light, shadowMedia, seed, counters)) return std::nullopt;
   if (seed.count == 0) return Color::Zero();  // blocked by an opaque surface
@@ -221,6 +222,7 @@ std::optional<Color> PathIntegrator::manifoldDirectLight(const Vertex& v, const 
   if (geometricReflect != (wiLocal.z() * v.woLocal.z() > 0.0f)) return Color::Zero();
   const Color f = v.bsdf->eval(v.woLocal, wiLocal) * absCosTheta(wiLocal);
   if ((f <= 0.0f).all()) return Color::Zero();
+  wiLocalOut = wiLocal;
 
   // Fresnel transmission with the n^2 radiance scaling at each vertex (as the BSDF strategy's
   // refraction weight, smooth_dielectric.hpp), seen from the x0 side.

@@ -19,6 +19,7 @@
 #include "lacrima/renderer/adaptive_sampling.hpp"
 #include "lacrima/renderer/denoiser.hpp"
 #include "lacrima/renderer/light_groups.hpp"
+#include "lacrima/renderer/light_paths.hpp"
 #include "lacrima/renderer/pixel_sums.hpp"
 #include "integrator.hpp"
 #include "lacrima/geometry/error.hpp"
@@ -109,8 +110,9 @@ class TileRenderer {
         order_(frame.settings.adaptive.enabled || frame.settings.denoise ? SampleOrder::Progressive
                                                                           : SampleOrder::Shuffled) {
     // Every further layer is added here, into room reserved first: their addresses are kept.
-    film.layers.reserve(integrator.lightGroups().size() + 2);
+    film.layers.reserve(integrator.lightGroups().size() + kLightPathCount + 2);
     if (frame.settings.lightGroups) addLightGroupLayers(film, integrator.lightGroups());
+    if (frame.settings.lightPaths.any()) addLightPathLayers(film, frame.settings.lightPaths);
     const CryptomatteSettings& crypto = frame.settings.cryptomatte;
     if (!crypto.any()) return;
     const CryptomatteNames names = cryptomatteNames(frame);
@@ -135,7 +137,11 @@ class TileRenderer {
   // The pixel's samples from sum.samples up to (not including) `end`, added to its sums.
   void addSamples(int x, int y, int end, PixelSums& sum, PathCounters& counters, uint64_t& nonFinite) const {
     const RenderSettings& s = frame_.settings;
-    std::vector<Color> groups(groupLayers_.size(), Color::Zero());  // this sample's radiance by light group
+    // This sample's radiance by light group and by light path.
+    std::vector<Color> splits(splitLayers_.size(), Color::Zero());
+    RadianceSplits into;
+    if (groupCount_ > 0) into.groups = splits.data();
+    if (splits.size() > groupCount_) into.paths = splits.data() + groupCount_;
     for (int i = sum.samples; i < end; ++i) {
       PixelSampler sampler(s.sampler, s.seed, s.frameNumber, x, y, i, s.samplesPerPixel, order_);
       // The point in the filter's footprint and the point on the lens: one 4D block
@@ -147,14 +153,14 @@ class TileRenderer {
       const float time = hasMotion_ ? sampler.get1D() : 0.0f;
       const Ray ray = cameraRays_.generate(float(x) + 0.5f + f.offset.x(), float(y) + 0.5f + f.offset.y(), lens, time);
       FirstHit first;
-      std::fill(groups.begin(), groups.end(), Color::Zero());
-      Color L = integrator_.radiance(ray, sampler, first, counters, groups.empty() ? nullptr : groups.data());
+      std::fill(splits.begin(), splits.end(), Color::Zero());
+      Color L = integrator_.radiance(ray, sampler, first, counters, into);
       if (!isFinite(L)) {
         L = Color::Zero();  // discarded, counted, reported: never on the film (the sample counts as black)
-        std::fill(groups.begin(), groups.end(), Color::Zero());
+        std::fill(splits.begin(), splits.end(), Color::Zero());
         ++nonFinite;
       }
-      addGroups(sum, groups, f.weight);
+      addSplits(sum, splits, f.weight);
       sum.weightedRadiance += f.weight * L;
       sum.weight += f.weight;
       addRadiance(sum, L);
@@ -183,9 +189,10 @@ class TileRenderer {
     for (int c = 0; c < 3; ++c) film_.normal[3 * p + c] = n[c];
     film_.depth[p] = sum.depthSamples > 0 ? sum.depth * invHits : std::numeric_limits<float>::infinity();
     if (!film_.sampleCount.empty()) film_.sampleCount[p] = float(sum.samples);
-    for (size_t g = 0; g < groupLayers_.size(); ++g) {
-      const Color value = groupValue(sum, g);
-      std::copy_n(value.data(), 3, groupLayers_[g]->data.begin() + long(3 * p));
+    for (size_t i = 0; i < splitLayers_.size(); ++i) {
+      if (!splitLayers_[i]) continue;
+      const Color value = splitValue(sum, i);
+      std::copy_n(value.data(), 3, splitLayers_[i]->data.begin() + long(3 * p));
     }
     storeRanks(objects_, sum.objectIds, p, sum.weight);
     storeRanks(materials_, sum.materialIds, p, sum.weight);
@@ -201,23 +208,32 @@ class TileRenderer {
   }
 
  private:
-  // A layer per light group, "lightgroup_<name>.R/G/B".
-  void addLightGroupLayers(Film& film, const LightGroups& groups) {
-    for (const std::string& name : groups.names) {
-      const std::string layer = lightGroupLayer(name);
-      film.layers.push_back(FilmLayer{{layer + ".R", layer + ".G", layer + ".B"},
-                                      std::vector<float>(size_t(film.width) * film.height * 3, 0.0f)});
-      groupLayers_.push_back(&film.layers.back());
-    }
+  static FilmLayer* addRgbLayer(Film& film, const std::string& layer) {
+    film.layers.push_back(FilmLayer{{layer + ".R", layer + ".G", layer + ".B"},
+                                    std::vector<float>(size_t(film.width) * film.height * 3, 0.0f)});
+    return &film.layers.back();
   }
 
-  static void addGroups(PixelSums& sum, const std::vector<Color>& groups, float weight) {
-    if (groups.empty()) return;
-    if (sum.groupWeighted.empty()) sum.groupWeighted.assign(groups.size(), Color::Zero());
-    if (sum.groupPlain.empty()) sum.groupPlain.assign(groups.size(), Color::Zero());
-    for (size_t g = 0; g < groups.size(); ++g) {
-      sum.groupWeighted[g] += weight * groups[g];
-      sum.groupPlain[g] += groups[g];
+  // A layer per light group, "lightgroup_<name>.R/G/B"; they come first among the splits.
+  void addLightGroupLayers(Film& film, const LightGroups& groups) {
+    for (const std::string& name : groups.names) splitLayers_.push_back(addRgbLayer(film, lightGroupLayer(name)));
+    groupCount_ = splitLayers_.size();
+  }
+
+  // After the groups, every light path is split (so the integrator's split is whole); only the
+  // passes asked for get a layer ("diffuse_direct.R/G/B", ...).
+  void addLightPathLayers(Film& film, const LightPathSet& passes) {
+    for (const LightPath pass : allLightPaths())
+      splitLayers_.push_back(passes.has(pass) ? addRgbLayer(film, lightPathName(pass)) : nullptr);
+  }
+
+  static void addSplits(PixelSums& sum, const std::vector<Color>& splits, float weight) {
+    if (splits.empty()) return;
+    if (sum.splitWeighted.empty()) sum.splitWeighted.assign(splits.size(), Color::Zero());
+    if (sum.splitPlain.empty()) sum.splitPlain.assign(splits.size(), Color::Zero());
+    for (size_t i = 0; i < splits.size(); ++i) {
+      sum.splitWeighted[i] += weight * splits[i];
+      sum.splitPlain[i] += splits[i];
     }
   }
 
@@ -239,7 +255,10 @@ class TileRenderer {
   SampleOrder order_;
   DenoiseInput* halves_ = nullptr;
   CryptomatteLayer objects_, materials_;  // no layer: not written
-  std::vector<FilmLayer*> groupLayers_;    // per light group; empty: not written
+  // Per split of the radiance: the light groups (groupCount_ of them), then the light paths; null
+  // for a light path not written.
+  std::vector<FilmLayer*> splitLayers_;
+  size_t groupCount_ = 0;
 };
 
 // The denoiser's input: the half buffers (already filled by the tiles) and the film's features.

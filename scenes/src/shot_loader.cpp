@@ -328,7 +328,7 @@ class ShotReader {
     return c_.errorCount() == before;
   }
 
-  // "aovs": ["CryptoObject", "CryptoMaterial", "lightGroups"]: further layers of the EXR
+  // "aovs": ["CryptoObject", "CryptoMaterial", "lightGroups", "lightPaths", "diffuse_direct", ...]: further layers of the EXR
   // (docs/compositing.md).
   void readAovs(ObjectReader& render, RenderSettings& s) {
     const Json* v = render.find("aovs");

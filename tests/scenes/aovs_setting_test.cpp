@@ -30,11 +30,27 @@ TEST(AovsSetting, LightGroupsByTheirLayerNameAndLightsByTheirGroup) {
   EXPECT_EQ(shot.render.cryptomatte, CryptomatteSettings{});
 }
 
+TEST(AovsSetting, LightPathsAllTogetherOrEachByItsLayerName) {
+  EXPECT_FALSE(loadShot(writeShot("aovs_no_paths.json", shotWithRender(""))).render.lightPaths.any());
+  const LightPathSet all = loadShot(writeShot("aovs_paths.json", shotWithRender(R"(, "aovs": ["lightPaths"])"))).render.lightPaths;
+  for (const LightPath pass : allLightPaths()) EXPECT_TRUE(all.has(pass)) << lightPathName(pass);
+  const LightPathSet two =
+      loadShot(writeShot("aovs_two_paths.json", shotWithRender(R"(, "aovs": ["specular_direct", "subsurface"])")))
+          .render.lightPaths;
+  for (const LightPath pass : allLightPaths())
+    EXPECT_EQ(two.has(pass), pass == LightPath::SpecularDirect || pass == LightPath::Subsurface) << lightPathName(pass);
+}
+
 TEST(AovsSetting, BadValuesAreReportedAtTheirPath) {
   expectSingleError("aovs_typo.json", shotWithRender(R"(, "aovs": ["CryptoObjects"])"),
                     "/render/aovs/0: unknown AOV 'CryptoObjects'; did you mean 'CryptoObject'?");
-  expectSingleError("aovs_unknown.json", shotWithRender(R"(, "aovs": ["CryptoObject", "emission"])"),
-                    "/render/aovs/1: unknown AOV 'emission' (expected one of 'CryptoObject', 'CryptoMaterial', 'lightGroups')");
+  expectSingleError("aovs_unknown.json", shotWithRender(R"(, "aovs": ["CryptoObject", "glitter"])"),
+                    "/render/aovs/1: unknown AOV 'glitter' (expected one of 'CryptoObject', 'CryptoMaterial', "
+                    "'lightGroups', 'lightPaths', 'diffuse_direct', 'diffuse_indirect', 'specular_direct', "
+                    "'specular_indirect', 'transmission_direct', 'transmission_indirect', 'subsurface', 'emission', "
+                    "'environment')");
+  expectSingleError("aovs_path_typo.json", shotWithRender(R"(, "aovs": ["diffuse_indrect"])"),
+                    "/render/aovs/0: unknown AOV 'diffuse_indrect'; did you mean 'diffuse_indirect'?");
   expectSingleError("aovs_type.json", shotWithRender(R"(, "aovs": "CryptoObject")"),
                     "/render/aovs: expected a list of layer names such as [\"CryptoObject\", \"CryptoMaterial\"], "
                     "found \"CryptoObject\"");

@@ -606,7 +606,13 @@ TEST(CliRender, CryptomattesReachTheExrAndInfoListsThem) {
   const auto groupInfo = lacrima({"info", (dir / "g.0001.exr").string()});
   EXPECT_NE(groupInfo.output.find("    lightgroup_environment R G B (float)"), std::string::npos) << groupInfo.output;
   EXPECT_NE(groupInfo.output.find("    CryptoObject00"), std::string::npos) << "the shot's stay" << groupInfo.output;
-  const auto unknown = lacrima({"render", shot.string(), "--out", (dir / "u.####.exr").string(), "--aov", "emission"});
+  const auto paths = lacrima({"render", shot.string(), "--out", (dir / "p.####.exr").string(), "--aov", "lightPaths", "--quiet"});
+  ASSERT_EQ(paths.exitStatus, 0) << paths.output;
+  const auto pathInfo = lacrima({"info", (dir / "p.0001.exr").string()});
+  // The names are padded to the longest (transmission_indirect) so the channels line up.
+  for (const char* pass : {"    diffuse_direct        R G B (float)", "    transmission_indirect R G B (float)"})
+    EXPECT_NE(pathInfo.output.find(pass), std::string::npos) << pass << pathInfo.output;
+  const auto unknown = lacrima({"render", shot.string(), "--out", (dir / "u.####.exr").string(), "--aov", "glitter"});
   EXPECT_EQ(unknown.exitStatus, 2) << unknown.output;
   EXPECT_NE(unknown.output.find("CryptoObject"), std::string::npos) << unknown.output;
   EXPECT_FALSE(fs::exists(dir / "u.0001.exr"));

@@ -79,10 +79,12 @@ int describeImage(const std::string& path) {
   const std::vector<ChannelLayer> layers = channelLayers(spec);
   std::printf("%s\n  %d x %d, %d channels in %zu layers:\n", path.c_str(), spec.width, spec.height, spec.nchannels,
               layers.size());
+  int nameWidth = 20;  // the longest layer name's, so the channels line up
+  for (const ChannelLayer& layer : layers) nameWidth = std::max(nameWidth, int(layer.name.size()));
   for (const ChannelLayer& layer : layers) {
     std::string channels;
     for (const std::string& c : layer.channels) channels += (channels.empty() ? "" : " ") + c;
-    std::printf("    %-20s %s%s(%s)\n", layer.name.empty() ? "(beauty)" : layer.name.c_str(), channels.c_str(),
+    std::printf("    %-*s %s%s(%s)\n", nameWidth, layer.name.empty() ? "(beauty)" : layer.name.c_str(), channels.c_str(),
                 channels.empty() ? "" : " ", layer.format.c_str());
   }
   printCryptomattes(spec);

@@ -14,11 +14,13 @@ namespace {
 
 std::string checkChannels(const OIIO::ImageSpec& spec, const RenderSettings& s) {
   // The further layers this run writes (their first channel; light groups: the environment's).
-  std::vector<const char*> layers;
+  std::vector<std::string> layers;
   if (s.cryptomatte.objects) layers.push_back("CryptoObject00.R");
   if (s.cryptomatte.materials) layers.push_back("CryptoMaterial00.R");
   if (s.lightGroups) layers.push_back("lightgroup_environment.R");
-  for (const char* name : layers)
+  for (const LightPath pass : allLightPaths())
+    if (s.lightPaths.has(pass)) layers.push_back(lightPathName(pass) + ".R");
+  for (const std::string& name : layers)
     if (std::find(spec.channelnames.begin(), spec.channelnames.end(), name) == spec.channelnames.end())
       return fmt::format("it has no '{}' channel, which this run writes", name);
   const OIIO::TypeDesc beauty = s.floatOutput ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::HALF;

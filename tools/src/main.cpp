@@ -116,7 +116,9 @@ void addShotAndOverrides(CLI::App& command, RenderOptions& o) {
   denoise->excludes(noDenoise);
   command.add_option("--aov", o.aovs,
                      "A further EXR layer, beside the shot's render.aovs (repeatable): CryptoObject, CryptoMaterial "
-                     "(Cryptomatte ID mattes), lightGroups (a beauty layer per light group); docs/compositing.md")
+                     "(Cryptomatte ID mattes), lightGroups (a beauty layer per light group), lightPaths (diffuse, "
+                     "specular and transmission direct/indirect, subsurface, emission, environment: adding up to the "
+                     "beauty) or one of those passes by its layer name (diffuse_direct, ...); docs/compositing.md")
       ->check(CLI::IsMember(lacrima::aovNames()));
 }
 

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <bit>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -18,9 +19,9 @@ uint64_t estimatedFrameBytes(const RenderSettings& s, bool preview) {
   const uint64_t pixels = uint64_t(s.width) * uint64_t(s.height);
   const uint64_t channels = 11 + (s.adaptive.enabled ? 1 : 0) + (s.denoise ? 3 : 0);
   // Further float layers: each Cryptomatte's ranks (2 channels a rank), light groups (3 a group,
-  // about four groups a shot).
+  // about four groups a shot), light paths (3 each).
   const uint64_t floatLayers = uint64_t(s.cryptomatte.objects + s.cryptomatte.materials) * 2 * uint64_t(s.cryptomatte.ranks) +
-                               (s.lightGroups ? 12 : 0);
+                               (s.lightGroups ? 12 : 0) + 3 * uint64_t(std::popcount(s.lightPaths.bits));
   const uint64_t exr = (pixels * channels * (s.floatOutput ? 4 : 2) + pixels * floatLayers * 4) / 2;
   return exr + (preview ? pixels * 3 / 2 : 0);
 }

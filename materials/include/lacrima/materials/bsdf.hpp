@@ -24,11 +24,24 @@ struct BsdfSample {
   float eta = 1.0f;         // relative IOR crossed (eta_wi_side / eta_wo_side) for transmission, else 1
 };
 
+// eval(wo, wi) split by the kind of scattering, for the renderer's light-path AOVs
+// (renderer/light_paths.hpp): diffuse (a Lambertian base, the light leaving the skin), glossy
+// (specular and microfacet reflection) and transmission (through a dielectric); the three add up
+// to eval(wo, wi).
+struct BsdfLobes {
+  Color diffuse = Color::Zero();
+  Color glossy = Color::Zero();
+  Color transmission = Color::Zero();
+  Color sum() const { return diffuse + glossy + transmission; }
+};
+
 class Bsdf {
  public:
   virtual ~Bsdf() = default;
 
   virtual Color eval(const Vec3& wo, const Vec3& wi) const = 0;
+  // eval(wo, wi) by kind of scattering (BsdfLobes); zero where eval is (delta lobes).
+  virtual BsdfLobes evalLobes(const Vec3& wo, const Vec3& wi) const = 0;
   virtual float pdf(const Vec3& wo, const Vec3& wi) const = 0;
   // uLobe picks a lobe (reflect/refract, diffuse/specular); u picks the direction.
   virtual std::optional<BsdfSample> sample(const Vec3& wo, float uLobe, const Vec2& u) const = 0;
@@ -50,6 +63,13 @@ class Bsdf {
   // Reflectance-like colour for the albedo AOV.
   virtual Color albedo() const = 0;
 };
+
+// A dielectric's lobes: f reflected is glossy, f transmitted (wi across the surface) transmission.
+inline BsdfLobes reflectionOrTransmission(const Color& f, const Vec3& wo, const Vec3& wi) {
+  BsdfLobes lobes;
+  (wo.z() * wi.z() > 0.0f ? lobes.glossy : lobes.transmission) = f;
+  return lobes;
+}
 
 // The mirror lobe of a smooth interface picked with probability R (its Fresnel reflectance):
 // wi = mirror of wo, f = R / |cos_i|, pdf = R, so the weight f |cos_i| / pdf is 1 (pbrt-v4

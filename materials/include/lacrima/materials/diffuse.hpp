@@ -18,6 +18,7 @@ class DiffuseBsdf final : public Bsdf {
   explicit DiffuseBsdf(const DiffuseParams& params);
 
   Color eval(const Vec3& wo, const Vec3& wi) const override;
+  BsdfLobes evalLobes(const Vec3& wo, const Vec3& wi) const override { return {eval(wo, wi)}; }
   float pdf(const Vec3& wo, const Vec3& wi) const override;
   std::optional<BsdfSample> sample(const Vec3& wo, float uLobe, const Vec2& u) const override;
   Color albedo() const override { return albedo_; }

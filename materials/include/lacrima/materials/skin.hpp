@@ -68,6 +68,7 @@ class SkinBsdf final : public Bsdf {
   explicit SkinBsdf(const SkinParams& params, std::optional<Vec3> reliefGradientHere = std::nullopt);
 
   Color eval(const Vec3& wo, const Vec3& wi) const override;
+  BsdfLobes evalLobes(const Vec3& wo, const Vec3& wi) const override;
   float pdf(const Vec3& wo, const Vec3& wi) const override;
   std::optional<BsdfSample> sample(const Vec3& wo, float uLobe, const Vec2& u) const override;
   Color albedo() const override { return albedo_; }  // clamped base albedo
@@ -81,6 +82,7 @@ class SkinBsdf final : public Bsdf {
   float specularProbability(const Vec3& wo) const;
 
  private:
+  Color diffuseF(const Vec3& wo, const Vec3& wi) const;  // the base's f (both above)
   float specularF(const Vec3& wo, const Vec3& wi) const;
   float specularPdf(const Vec3& wo, const Vec3& wi) const;
 

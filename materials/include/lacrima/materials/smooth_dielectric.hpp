@@ -33,6 +33,9 @@ class SmoothDielectricBsdf final : public Bsdf {
   explicit SmoothDielectricBsdf(const SmoothDielectricParams& params);
 
   Color eval(const Vec3& wo, const Vec3& wi) const override;
+  BsdfLobes evalLobes(const Vec3& wo, const Vec3& wi) const override {
+    return reflectionOrTransmission(eval(wo, wi), wo, wi);
+  }
   float pdf(const Vec3& wo, const Vec3& wi) const override;
   std::optional<BsdfSample> sample(const Vec3& wo, float uLobe, const Vec2& u) const override;
   bool isPureSpecular() const override { return true; }

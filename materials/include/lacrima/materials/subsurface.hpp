@@ -47,6 +47,8 @@ class SubsurfaceExitBsdf final : public Bsdf {
   explicit SubsurfaceExitBsdf(float ior);
 
   Color eval(const Vec3& wo, const Vec3& wi) const override;
+  // The light leaving the skin: diffuse (the renderer counts it as subsurface).
+  BsdfLobes evalLobes(const Vec3& wo, const Vec3& wi) const override { return {eval(wo, wi)}; }
   float pdf(const Vec3& wo, const Vec3& wi) const override;
   std::optional<BsdfSample> sample(const Vec3& wo, float uLobe, const Vec2& u) const override;
   Color albedo() const override { return Color::Ones(); }

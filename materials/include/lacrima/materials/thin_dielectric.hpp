@@ -24,6 +24,9 @@ class ThinDielectricBsdf final : public Bsdf {
   float reflectance(float cosTheta) const;
 
   Color eval(const Vec3& wo, const Vec3& wi) const override;
+  BsdfLobes evalLobes(const Vec3& wo, const Vec3& wi) const override {
+    return reflectionOrTransmission(eval(wo, wi), wo, wi);
+  }
   float pdf(const Vec3& wo, const Vec3& wi) const override;
   std::optional<BsdfSample> sample(const Vec3& wo, float uLobe, const Vec2& u) const override;
   bool isPureSpecular() const override { return true; }

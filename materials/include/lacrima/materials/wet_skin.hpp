@@ -82,6 +82,7 @@ class WetSkinBsdf final : public Bsdf {
   WetSkinBsdf(const SkinBsdf& skin, float coverage);
 
   Color eval(const Vec3& wo, const Vec3& wi) const override;
+  BsdfLobes evalLobes(const Vec3& wo, const Vec3& wi) const override;
   float pdf(const Vec3& wo, const Vec3& wi) const override;
   std::optional<BsdfSample> sample(const Vec3& wo, float uLobe, const Vec2& u) const override;
   Color albedo() const override;
@@ -93,6 +94,7 @@ class WetSkinBsdf final : public Bsdf {
   float coatProbability(const Vec3& wo) const;
 
  private:
+  BsdfLobes wetLobes(const Vec3& wo, const Vec3& wi) const;  // the wet layer's base and coat
   Color wetEval(const Vec3& wo, const Vec3& wi) const;
   float wetPdf(const Vec3& wo, const Vec3& wi) const;
 

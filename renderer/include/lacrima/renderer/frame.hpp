@@ -13,6 +13,7 @@
 #include "lacrima/geometry/mesh.hpp"
 #include "lacrima/geometry/sampler.hpp"
 #include "lacrima/materials/material.hpp"
+#include "lacrima/renderer/light_paths.hpp"
 #include "lacrima/renderer/pixel_filter.hpp"
 
 namespace lacrima {
@@ -147,10 +148,13 @@ struct RenderSettings {
   CryptomatteSettings cryptomatte;
   // A beauty layer per light group (light_groups.hpp), the groups adding up to the beauty.
   bool lightGroups = false;
+  // The light-path layers written (light_paths.hpp); all of them add up to the beauty.
+  LightPathSet lightPaths;
 };
 
 // The further EXR layers a render can write, by the names shots and `--aov` give them:
-// "CryptoObject", "CryptoMaterial", "lightGroups".
+// "CryptoObject", "CryptoMaterial", "lightGroups", "lightPaths" (every light path), and each
+// light path's own name ("diffuse_direct", ..., light_paths.hpp).
 const std::vector<std::string>& aovNames();
 // Turns on the AOV `name` in `s`; false (and `s` unchanged) for a name not in aovNames().
 bool enableAov(RenderSettings& s, const std::string& name);

@@ -28,8 +28,9 @@ struct PixelSums {
   int depthSamples = 0;
   // Cryptomatte's ranking filter (only when the render writes it): the first hits' IDs.
   IdCoverage objectIds, materialIds;
-  // Light groups (only when the render writes them): per group, sum of w L_g and of L_g.
-  std::vector<Color> groupWeighted, groupPlain;
+  // Light groups and light paths (only when the render writes them): per split of the radiance,
+  // sum of w L_s and of L_s.
+  std::vector<Color> splitWeighted, splitPlain;
 };
 
 // Adds one sample's radiance to the plain sums (the filter-weighted ones are the caller's).
@@ -82,11 +83,12 @@ struct PixelValue {
 // negative lobes every w is exactly 1 and this is the plain mean, bitwise. With them (Mitchell),
 // w = +-c and sum(w) can be 0 or negative with few samples (2 samples of opposite signs); such a
 // pixel takes the plain mean instead, the estimate of the filter |f|.
-// A light group's value in the pixel, made as pixelValue makes the beauty (so the groups add up to it).
-inline Color groupValue(const PixelSums& sum, size_t group) {
-  if (sum.samples == 0 || group >= sum.groupWeighted.size()) return Color::Zero();
-  if (sum.weight > 0.0f) return sum.groupWeighted[group] * (1.0f / sum.weight);
-  return sum.groupPlain[group] * (1.0f / float(sum.samples));
+// A split's value in the pixel (a light group's, a light path's), made as pixelValue makes the
+// beauty, so that the splits add up to it.
+inline Color splitValue(const PixelSums& sum, size_t split) {
+  if (sum.samples == 0 || split >= sum.splitWeighted.size()) return Color::Zero();
+  if (sum.weight > 0.0f) return sum.splitWeighted[split] * (1.0f / sum.weight);
+  return sum.splitPlain[split] * (1.0f / float(sum.samples));
 }
 
 inline PixelValue pixelValue(const PixelSums& sum) {
