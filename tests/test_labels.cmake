@@ -12,7 +12,7 @@ set(_cluster "^FarmCluster\\.")
 set(_slow "^(DefaultShotStory|CryingRivuletStory|FarmCluster|RenderMemory)\\.|^LiquidTearCourse\\.OnTheDefaultShot|^SequenceInterrupt\\.Killed")
 set(_statistical
     "^(AllBsdfs/BsdfChi2|BsdfEnergy|VndfChi2|Chi2SelfTest|Chi2Family|SubsurfaceAlbedo|DiffusionProfile|SubsurfaceDiffusion|AnalyticScenes|BounceLimits|Caustics|SamplerConvergence|WaterAnalytic)\\.")
-set(_render_in_tools "^(Shots/ImageRegression|TestSuiteCli|CliRender|BenchQuality)\\.")
+set(_render_in_tools "^(Shots/ImageRegression|Shots/LayerRecombination|TestSuiteCli|CliRender|BenchQuality)\\.")
 
 foreach(_executable geometry flesh sph crowd tracking materials renderer scenes tools fuzz)
   foreach(_test IN LISTS lacrima_${_executable}_tests_TESTS)

@@ -23,10 +23,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 config="$here/../../scenes/ocio/config.ocio"
 lacrima=${LACRIMA:-lacrima}
 mkdir -p "$out"
-toPng() {  # EXR (3 channels, ACEScg) -> sRGB PNG
-  oiiotool --colorconfig "$config" "$1" --iscolorspace ACEScg --ociodisplay "sRGB - Display" "ACES 1.0 - SDR Video" \
-    -d uint8 -o "$2"
-}
+source "$here/layer_tools.sh"
 groups=$(oiiotool --info -v "$frame" | tr ',' '\n' | sed -n 's/^ *\(lightgroup_[^.]*\)\.R.*/\1/p' | sort -u)
 if [ -z "$groups" ]; then
   echo "$0: $frame has no light group layers (render it with \"aovs\": [\"lightGroups\"])" >&2
@@ -34,15 +31,11 @@ if [ -z "$groups" ]; then
 fi
 parts=()
 for g in $groups; do
-  oiiotool "$frame" --ch "$g.R,$g.G,$g.B" --chnames R,G,B -o "$out/$g.exr"
+  extractLayer "$frame" "$g" "$out/$g.exr"
   parts+=("$out/$g.exr")
 done
-adds=()
-for ((i = 1; i < ${#parts[@]}; ++i)); do adds+=(--add); done
-oiiotool "${parts[@]}" "${adds[@]}" -o "$out/recombined.exr"
-oiiotool "$frame" --ch R,G,B -o "$out/beauty.exr"
 echo "the groups ($groups) summed against the beauty:"
-oiiotool "$out/recombined.exr" "$out/beauty.exr" --diff || true
+sumAgainstBeauty "$frame" "$out" "${parts[@]}"
 LACRIMA="$lacrima" "$here/cryptomatte_matte.sh" "$frame" CryptoMaterial "$out/matte.exr" "${materials[@]}" >/dev/null
 oiiotool "$out/beauty.exr" "$out/lightgroup_$key.exr" "$out/matte.exr" --ch 0,0,0 --chnames R,G,B --mul \
   --mulc "$dim" --sub -o "$out/regraded.exr"

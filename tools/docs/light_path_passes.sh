@@ -23,10 +23,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 config="$here/../../scenes/ocio/config.ocio"
 lacrima=${LACRIMA:-lacrima}
 mkdir -p "$out"
-toPng() {  # EXR (3 channels, ACEScg) -> sRGB PNG
-  oiiotool --colorconfig "$config" "$1" --iscolorspace ACEScg --ociodisplay "sRGB - Display" "ACES 1.0 - SDR Video" \
-    -d uint8 -o "$2"
-}
+source "$here/layer_tools.sh"
 passes=(diffuse_direct diffuse_indirect specular_direct specular_indirect transmission_direct transmission_indirect
   subsurface emission environment)
 channels=$(oiiotool --info -v "$frame")
@@ -36,15 +33,11 @@ for p in "${passes[@]}"; do
     echo "$0: $frame has no $p layer (render it with \"aovs\": [\"lightPaths\"])" >&2
     exit 1
   fi
-  oiiotool "$frame" --ch "$p.R,$p.G,$p.B" --chnames R,G,B -o "$out/$p.exr"
+  extractLayer "$frame" "$p" "$out/$p.exr"
   parts+=("$out/$p.exr")
 done
-adds=()
-for ((i = 1; i < ${#parts[@]}; ++i)); do adds+=(--add); done
-oiiotool "${parts[@]}" "${adds[@]}" -o "$out/recombined.exr"
-oiiotool "$frame" --ch R,G,B -o "$out/beauty.exr"
 echo "the nine passes summed against the beauty:"
-oiiotool "$out/recombined.exr" "$out/beauty.exr" --diff || true
+sumAgainstBeauty "$frame" "$out" "${parts[@]}"
 pngs=()
 for p in "${passes[@]}"; do
   toPng "$out/$p.exr" "$out/$p.png"
