@@ -381,8 +381,7 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
         contribution = throughput * background.radiance * powerHeuristic(previousBsdfPdf, background.pdf);
       }
       gather(contribution, groups_.environment);
-      if (depth == 0) paths.seenDirectly(contribution, LightPath::Environment);
-      else paths.afterFirstBounce(contribution, depth == 1);
+      paths.lightHit(contribution, depth, LightPath::Environment);
       break;
     }
     if (hit.lightIndex >= 0) {
@@ -392,8 +391,7 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
       const float weight = previousSpecular ? 1.0f : powerHeuristic(previousBsdfPdf, lightPdf);
       const Color contribution = throughput * emitted * weight;
       gather(contribution, groups_.ofLight[size_t(hit.lightIndex)]);
-      if (depth == 0) paths.seenDirectly(contribution, LightPath::Emission);
-      else paths.afterFirstBounce(contribution, depth == 1);
+      paths.lightHit(contribution, depth, LightPath::Emission);
       if (depth == 0) firstHit = {true, emitted.cwiseMin(1.0f), hit.geometricNormal, hit.distance, cryptomatteIdsOf(hit)};
       break;
     }
@@ -439,8 +437,7 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
     if ((material.emission > 0.0f).any() && (frontFacing || !v.bsdf->isTransmissive())) {
       const Color contribution = throughput * material.emission;
       gather(contribution, groups_.emission);
-      if (depth == 0) paths.seenDirectly(contribution, LightPath::Emission);
-      else paths.afterFirstBounce(contribution, depth == 1);
+      paths.lightHit(contribution, depth, LightPath::Emission);
     }
     if (depth >= maxDepth_ || lastSegment) break;
 
@@ -448,10 +445,10 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
     sampler.setDimension(dimensions + sample_dimensions::kLight);
     const DirectLight direct = sampleDirectLight(v, media, sampler, counters);
     gather(throughput * direct.radiance, groups_.ofSource(direct.source));
-    if (depth == 0 && paths.active())
-      paths.firstVertexDirect(throughput * direct.radiance, v.bsdf->evalLobes(v.woLocal, direct.wiLocal));
-    else
+    if (depth > 0)
       paths.afterFirstBounce(throughput * direct.radiance, false);
+    else if (paths.active() && (direct.radiance != 0.0f).any())  // lobes only where light arrived
+      paths.firstVertexDirect(throughput * direct.radiance, v.bsdf->evalLobes(v.woLocal, direct.wiLocal));
     if (subsurface_[hit.materialId]) {  // skin with subsurface: v.bsdf's lobes or a random walk
       const float dryFraction = 1.0f - (wetSkin ? wetSkin->coverage() : 0.0f);
       const SubsurfaceSkin& skin = *subsurface_[hit.materialId];

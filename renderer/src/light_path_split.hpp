@@ -17,6 +17,12 @@ class LightPathSplit {
   void seenDirectly(const Color& contribution, LightPath pass) {
     if (passes_) at(pass) += contribution;
   }
+  // Light from an emitter or the environment that the path hit at `depth` (0: the camera saw it,
+  // as `seenAs`; 1: the first bounce's direction hit it, direct; deeper: indirect).
+  void lightHit(const Color& contribution, int depth, LightPath seenAs) {
+    if (depth == 0) seenDirectly(contribution, seenAs);
+    else afterFirstBounce(contribution, depth == 1);
+  }
   // The first vertex's next-event estimate, with the lobes of f towards the light.
   void firstVertexDirect(const Color& contribution, const BsdfLobes& lobes) {
     if (passes_) split(contribution, sharesOf(lobes), true);

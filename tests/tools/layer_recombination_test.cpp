@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <map>
 
+#include "support/regression_shots.hpp"
 #include "support/run_command.hpp"
 
 namespace lacrima {
@@ -16,16 +17,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kRegressionDir = fs::path(LACRIMA_SOURCE_DIR) / "tests/data/regression";
-
-std::vector<std::string> regressionShots() {
-  std::vector<std::string> names;
-  for (const fs::directory_entry& e : fs::directory_iterator(kRegressionDir))
-    if (e.path().extension() == ".json" && e.path().filename() != "thresholds.json")
-      names.push_back(e.path().stem().string());
-  std::sort(names.begin(), names.end());
-  return names;
-}
+const fs::path& kRegressionDir = test::regressionDir();
 
 struct ExrChannels {
   int pixels = 0;
@@ -100,7 +92,7 @@ TEST_P(LayerRecombination, ThePassesAndTheGroupsAddUpToTheBeauty) {
   EXPECT_GT(frames, 0);
 }
 
-INSTANTIATE_TEST_SUITE_P(Shots, LayerRecombination, ::testing::ValuesIn(regressionShots()),
+INSTANTIATE_TEST_SUITE_P(Shots, LayerRecombination, ::testing::ValuesIn(test::regressionShots()),
                          [](const auto& info) { return info.param; });
 
 }  // namespace

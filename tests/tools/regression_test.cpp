@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "support/regression_shots.hpp"
 #include "support/run_command.hpp"
 
 namespace lacrima {
@@ -15,16 +16,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kRegressionDir = fs::path(LACRIMA_SOURCE_DIR) / "tests/data/regression";
-
-std::vector<std::string> regressionShots() {
-  std::vector<std::string> names;
-  for (const fs::directory_entry& e : fs::directory_iterator(kRegressionDir))
-    if (e.path().extension() == ".json" && e.path().filename() != "thresholds.json")
-      names.push_back(e.path().stem().string());
-  std::sort(names.begin(), names.end());
-  return names;
-}
+const fs::path& kRegressionDir = test::regressionDir();
 
 class ImageRegression : public ::testing::TestWithParam<std::string> {};
 
@@ -38,7 +30,7 @@ TEST_P(ImageRegression, MatchesReference) {
   if (run.exitStatus == 1) std::printf("%s", run.output.c_str());
 }
 
-INSTANTIATE_TEST_SUITE_P(Shots, ImageRegression, ::testing::ValuesIn(regressionShots()),
+INSTANTIATE_TEST_SUITE_P(Shots, ImageRegression, ::testing::ValuesIn(test::regressionShots()),
                          [](const auto& info) { return info.param; });
 
 }  // namespace
