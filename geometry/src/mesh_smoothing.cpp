@@ -28,18 +28,22 @@ void validate(const TriangleMesh& mesh, const std::vector<uint32_t>& weldMap, co
     if (i >= mesh.positions.size()) throw InputError(fmt::format("taubin smoothing: index {} out of range", i));
 }
 
-// x += factor * (mean of neighbours - x) for every free representative vertex (Jacobi update).
+// next = x + factor * (mean of neighbours - x) for every free representative vertex, next = x for
+// the others (Jacobi update). next is the caller's buffer, reused over the iterations: a fresh one
+// per step costs a page fault and a zero-fill per 4 KiB of a mesh-sized array.
 void umbrellaStep(const std::vector<std::vector<uint32_t>>& neighbours, const std::vector<bool>& boundary, float factor,
-                  std::vector<Vec3d>& x) {
-  std::vector<Vec3d> next = x;
+                  const std::vector<Vec3d>& x, std::vector<Vec3d>& next) {
+  next.resize(x.size());
   for (size_t v = 0; v < x.size(); ++v) {
-    if (boundary[v] || neighbours[v].empty()) continue;
+    if (boundary[v] || neighbours[v].empty()) {
+      next[v] = x[v];
+      continue;
+    }
     Vec3d mean = Vec3d::Zero();
     for (uint32_t n : neighbours[v]) mean += x[n];
     mean /= double(neighbours[v].size());
     next[v] = x[v] + double(factor) * (mean - x[v]);
   }
-  x = std::move(next);
 }
 
 }  // namespace
@@ -77,9 +81,10 @@ std::vector<Vec3> TaubinSmoother::smoothed(const std::vector<Vec3>& positions) c
     throw InputError(fmt::format("taubin smoothing: {} positions for {} vertices", positions.size(), weldMap_.size()));
   std::vector<Vec3d> x(positions.size());
   for (size_t v = 0; v < x.size(); ++v) x[v] = positions[v].cast<double>();
+  std::vector<Vec3d> next(x.size());
   for (int i = 0; i < options_.iterations; ++i) {
-    umbrellaStep(neighbours_, boundary_, options_.lambda, x);  // Taubin 1995 eq. 8: the shrinking step ...
-    umbrellaStep(neighbours_, boundary_, options_.mu, x);      // ... and the inflating one
+    umbrellaStep(neighbours_, boundary_, options_.lambda, x, next);  // Taubin 1995 eq. 8: the shrinking step ...
+    umbrellaStep(neighbours_, boundary_, options_.mu, next, x);      // ... and the inflating one
   }
   std::vector<Vec3> out(positions.size());
   for (size_t v = 0; v < out.size(); ++v) out[v] = x[weldMap_[v]].cast<float>();

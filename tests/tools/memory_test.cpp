@@ -106,8 +106,9 @@ TEST(RenderMemory, PeakStaysFlatOverSixtyFrames) {
 }
 
 // 24 frames of the face with growing tears: the resident set after the last frame stays within
-// 2.5 MiB of the one after frame 2. Before the fixed mmap threshold and the trim after every frame
-// (memory_usage.hpp), glibc's heap kept the holes the changing frames left while the heap in use
+// 2.5 MiB of the one after frame 2. Before the trim after every frame (memory_usage.hpp; then
+// with a fixed mmap threshold, since 2026-12-05 with freed blocks kept for reuse within a frame,
+// allocator_tuning.hpp), glibc's heap kept the holes the changing frames left while the heap in use
 // stayed at 104.7 MiB: RSS +5.1, +6.4 and +13.4 MiB in three runs of this test (e.g. 229.7 ->
 // 243.1), +10.5 to +16.0 MiB in six runs from a shell; with them +0.3 to +0.4 MiB (200.1 -> 200.4).
 // The peak may rise a little with the tears' geometry (with the fix +0.8 to +2.7 MiB).

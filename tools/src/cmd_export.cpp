@@ -47,7 +47,6 @@ void exportFrame(const ExportOptions& o, const Shot& shot, const std::string& pa
 int runExport(const ExportOptions& o) {
   try {
     const auto start = std::chrono::steady_clock::now();
-    useHeapSettingsForSequences();  // as render: a long export keeps its memory flat
     const Shot shot = loadShot(o.shotPath);
     const std::vector<int> frames = selectShotFrames(o.frames, shot);
     const std::string pattern = exportPattern(o, shot, frames.size());

@@ -230,7 +230,6 @@ std::vector<PerformanceOverride> performanceOverrides(const RenderOptions& o) {
 int runRender(const RenderOptions& o) {
   try {
     const auto start = std::chrono::steady_clock::now();
-    useHeapSettingsForSequences();  // before the shot's allocations
     const Shot shot = loadShot(o.shotPath, performanceOverrides(o));
     const std::vector<int> frames = selectShotFrames(o.frames, shot);
     const std::string pattern = resolveOutputPattern(o, shot, frames.size());

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "lacrima/geometry/allocator_tuning.hpp"
 #include "lacrima/renderer/frame.hpp"
 
 using namespace lacrima::cli;
@@ -537,6 +538,7 @@ void addTestSuite(CLI::App& app, TestSuiteOptions& o) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  lacrima::keepFreedMemoryForReuse();
   CLI::App app(kDescription, "lacrima");
   app.set_version_flag("--version", std::string("lacrima ") + LACRIMA_VERSION);
   app.require_subcommand(1);

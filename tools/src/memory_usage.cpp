@@ -24,8 +24,6 @@ double statusKiloBytes(const std::string& status, const std::string& name) {
   return -1;
 }
 
-// glibc's own initial threshold (M_MMAP_THRESHOLD in mallopt(3)), held fixed.
-constexpr int kMmapThresholdBytes = 128 * 1024;
 constexpr double kBytesPerMiB = 1024.0 * 1024.0;
 
 void addHeapUsage(MemoryUsage& usage) {
@@ -56,12 +54,6 @@ MemoryUsage currentMemoryUsage() {
   usage.peakMiB = double(self.ru_maxrss) / 1024.0;  // kB on Linux
   addHeapUsage(usage);
   return usage;
-}
-
-void useHeapSettingsForSequences() {
-#if defined(__GLIBC__)
-  mallopt(M_MMAP_THRESHOLD, kMmapThresholdBytes);  // setting it turns the dynamic threshold off
-#endif
 }
 
 void releaseFreeHeapMemory() {

@@ -1,7 +1,7 @@
 #pragma once
 // The process's own memory use, for `lacrima render --report-memory`: a per-frame leak shows as a
 // peak that keeps growing over a long sequence (tools/hardening.sh, docs/hardening.md); and the
-// heap settings that keep `lacrima render`'s memory flat from frame to frame.
+// trim that keeps `lacrima render`'s memory flat from frame to frame.
 #include <string>
 
 namespace lacrima::cli {
@@ -20,17 +20,9 @@ struct MemoryUsage {
 // residentMiB left at 0.
 MemoryUsage currentMemoryUsage();
 
-// The heap settings for rendering a sequence, called before the shot loads (glibc; nothing
-// elsewhere). glibc serves blocks from 128 KiB up with mmap, but raises that threshold to the
-// size of every such block freed (up to 32 MiB): from then on a frame's big, short-lived arrays
-// (posed meshes, Embree's build buffers) come from the heap, whose freed holes stay resident and
-// rarely fit the next frame's arrays, so RSS grew frame after frame while the memory in use stayed
-// flat (docs/hardening.md, "Memory over a sequence"). A fixed threshold keeps them mmapped: each
-// goes back to the system when freed.
-void useHeapSettingsForSequences();
-
 // Gives the free pages inside the heap back to the system (glibc's malloc_trim; nothing
-// elsewhere): called after every frame, it keeps the smaller blocks a frame freed from adding up.
+// elsewhere): called after every frame, it keeps what a frame freed from adding up over a sequence
+// (the heap keeps freed memory for reuse within a frame: geometry/allocator_tuning.hpp).
 void releaseFreeHeapMemory();
 
 // "peak RSS 123.4 MiB, RSS 120.1 MiB, heap 80.2 MiB in use of 95.0 MiB" (without the heap part
