@@ -2,6 +2,8 @@
 #include "lacrima/geometry/mesh_smoothing.hpp"
 
 #include <fmt/format.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <utility>
@@ -30,20 +32,25 @@ void validate(const TriangleMesh& mesh, const std::vector<uint32_t>& weldMap, co
 
 // next = x + factor * (mean of neighbours - x) for every free representative vertex, next = x for
 // the others (Jacobi update). next is the caller's buffer, reused over the iterations: a fresh one
-// per step costs a page fault and a zero-fill per 4 KiB of a mesh-sized array.
-void umbrellaStep(const std::vector<std::vector<uint32_t>>& neighbours, const std::vector<bool>& boundary, float factor,
-                  const std::vector<Vec3d>& x, std::vector<Vec3d>& next) {
+// per step costs a page fault and a zero-fill per 4 KiB of a mesh-sized array. Each vertex reads
+// only x, so the vertices are split between threads and the result does not depend on how.
+void umbrellaStep(const std::vector<uint32_t>& start, const std::vector<uint32_t>& list,
+                  const std::vector<char>& boundary, float factor, const std::vector<Vec3d>& x,
+                  std::vector<Vec3d>& next) {
   next.resize(x.size());
-  for (size_t v = 0; v < x.size(); ++v) {
-    if (boundary[v] || neighbours[v].empty()) {
-      next[v] = x[v];
-      continue;
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, x.size(), 4096), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t v = r.begin(); v != r.end(); ++v) {
+      const uint32_t begin = start[v], end = start[v + 1];
+      if (boundary[v] || begin == end) {
+        next[v] = x[v];
+        continue;
+      }
+      Vec3d mean = Vec3d::Zero();
+      for (uint32_t k = begin; k < end; ++k) mean += x[list[k]];
+      mean /= double(end - begin);
+      next[v] = x[v] + double(factor) * (mean - x[v]);
     }
-    Vec3d mean = Vec3d::Zero();
-    for (uint32_t n : neighbours[v]) mean += x[n];
-    mean /= double(neighbours[v].size());
-    next[v] = x[v] + double(factor) * (mean - x[v]);
-  }
+  });
 }
 
 }  // namespace
@@ -52,11 +59,9 @@ TaubinSmoother::TaubinSmoother(const TriangleMesh& mesh, const std::vector<uint3
                                const TaubinOptions& options)
     : weldMap_(weldMap), options_(options) {
   validate(mesh, weldMap, options);
-  // Neighbours of each representative vertex (welded), and whether it lies on the boundary.
-  neighbours_.resize(mesh.positions.size());
-  boundary_.assign(mesh.positions.size(), false);
-  // Every welded edge once per triangle using it, sorted: runs of equal edges count its uses (in the
-  // order of a map keyed by the edge, so neighbours are listed in increasing order).
+  // Every welded edge once per triangle using it, sorted: runs of equal edges count its uses, and
+  // each vertex meets its neighbours in increasing order (the lower ones as the edge's second end
+  // first, then the higher ones).
   std::vector<std::pair<uint32_t, uint32_t>> edges;
   edges.reserve(mesh.indices.size());
   for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3)
@@ -65,14 +70,24 @@ TaubinSmoother::TaubinSmoother(const TriangleMesh& mesh, const std::vector<uint3
       if (a != b) edges.emplace_back(std::min(a, b), std::max(a, b));
     }
   std::sort(edges.begin(), edges.end());
+  const size_t n = mesh.positions.size();
+  boundary_.assign(n, 0);
+  std::vector<std::pair<uint32_t, uint32_t>> distinct;
   for (size_t i = 0; i < edges.size();) {
     size_t end = i + 1;
     while (end < edges.size() && edges[end] == edges[i]) ++end;
-    const auto [a, b] = edges[i];
-    neighbours_[a].push_back(b);
-    neighbours_[b].push_back(a);
-    if (end - i == 1) boundary_[a] = boundary_[b] = true;
+    distinct.push_back(edges[i]);
+    if (end - i == 1) boundary_[edges[i].first] = boundary_[edges[i].second] = 1;
     i = end;
+  }
+  neighbourStart_.assign(n + 1, 0);
+  for (const auto& [a, b] : distinct) ++neighbourStart_[a + 1], ++neighbourStart_[b + 1];
+  for (size_t v = 0; v < n; ++v) neighbourStart_[v + 1] += neighbourStart_[v];
+  neighbourList_.resize(neighbourStart_[n]);
+  std::vector<uint32_t> filled(neighbourStart_.begin(), neighbourStart_.end() - 1);
+  for (const auto& [a, b] : distinct) {
+    neighbourList_[filled[a]++] = b;
+    neighbourList_[filled[b]++] = a;
   }
 }
 
@@ -83,8 +98,8 @@ std::vector<Vec3> TaubinSmoother::smoothed(const std::vector<Vec3>& positions) c
   for (size_t v = 0; v < x.size(); ++v) x[v] = positions[v].cast<double>();
   std::vector<Vec3d> next(x.size());
   for (int i = 0; i < options_.iterations; ++i) {
-    umbrellaStep(neighbours_, boundary_, options_.lambda, x, next);  // Taubin 1995 eq. 8: the shrinking step ...
-    umbrellaStep(neighbours_, boundary_, options_.mu, next, x);      // ... and the inflating one
+    umbrellaStep(neighbourStart_, neighbourList_, boundary_, options_.lambda, x, next);  // Taubin 1995 eq. 8: shrink ...
+    umbrellaStep(neighbourStart_, neighbourList_, boundary_, options_.mu, next, x);      // ... and inflate
   }
   std::vector<Vec3> out(positions.size());
   for (size_t v = 0; v < out.size(); ++v) out[v] = x[weldMap_[v]].cast<float>();

@@ -72,11 +72,23 @@ std::vector<bool> trailTriangles(const TriangleMesh& mesh, const std::vector<uin
   for (const Vec3& p : path) box.extend(p);
   box.min().array() -= margin;
   box.max().array() += margin;
+  // Each segment's box grown by a little more than the margin: a point outside it is farther than
+  // the margin from the segment (the slack covers the distance's rounding), so only the segments
+  // whose boxes hold the point are measured, and `near` is what measuring them all would give.
+  const float reach = margin * 1.001f + 1e-6f;
+  std::vector<Eigen::AlignedBox3f> segmentBoxes;
+  for (size_t i = 0; i + 1 < path.size(); ++i) {
+    Eigen::AlignedBox3f b(path[i].cwiseMin(path[i + 1]), path[i].cwiseMax(path[i + 1]));
+    b.min().array() -= reach;
+    b.max().array() += reach;
+    segmentBoxes.push_back(b);
+  }
   std::vector<bool> near(mesh.vertexCount(), false);
   for (size_t v = 0; v < near.size(); ++v) {
-    if (!box.contains(mesh.positions[v])) continue;
+    const Vec3& p = mesh.positions[v];
+    if (!box.contains(p)) continue;
     for (size_t i = 0; i + 1 < path.size() && !near[v]; ++i)
-      near[v] = distanceToSegment(mesh.positions[v], path[i], path[i + 1]) <= margin;
+      near[v] = segmentBoxes[i].contains(p) && distanceToSegment(p, path[i], path[i + 1]) <= margin;
   }
   // Triangles with a near corner, then one more ring: every triangle touching their corners' positions.
   std::vector<bool> touched(mesh.vertexCount(), false);

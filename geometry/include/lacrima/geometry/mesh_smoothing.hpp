@@ -46,8 +46,11 @@ class TaubinSmoother {
  private:
   std::vector<uint32_t> weldMap_;
   TaubinOptions options_;
-  std::vector<std::vector<uint32_t>> neighbours_;  // per representative vertex, sorted, unique
-  std::vector<bool> boundary_;                     // an edge of a single triangle
+  // The welded neighbour graph, flat: vertex v's neighbours (sorted, unique) are
+  // neighbourList_[neighbourStart_[v]] to neighbourList_[neighbourStart_[v + 1]].
+  std::vector<uint32_t> neighbourStart_;
+  std::vector<uint32_t> neighbourList_;
+  std::vector<char> boundary_;  // an edge of a single triangle (char: read by threads at once)
 };
 
 }  // namespace lacrima
