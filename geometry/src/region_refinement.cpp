@@ -4,8 +4,9 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <numeric>
+#include <span>
 #include <stdexcept>
-#include <unordered_map>
 #include <utility>
 
 namespace lacrima {
@@ -14,32 +15,62 @@ namespace {
 
 constexpr uint32_t kNone = 0xffffffffu;
 
-// The edges of a triangle list, numbered, with the triangles on each edge.
+// The edges of a triangle list, numbered in the order their first corners come, with the
+// triangles on each edge (in corner order).
 struct EdgeTable {
   std::vector<uint32_t> ofCorner;                  // per corner 3t+k: the edge from corner k to k+1
   std::vector<std::pair<uint32_t, uint32_t>> ends;  // per edge, lower vertex first
-  std::vector<std::vector<uint32_t>> triangles;     // per edge, the triangles on it
+  std::vector<uint32_t> triangleStart;             // edge e's triangles: triangleList[triangleStart[e] ..
+  std::vector<uint32_t> triangleList;              // .. triangleStart[e + 1]]
+
+  std::span<const uint32_t> trianglesOn(uint32_t edge) const {
+    return {triangleList.data() + triangleStart[edge], triangleList.data() + triangleStart[edge + 1]};
+  }
 };
 
-// With `weld`, vertices at one position count as one (edges are matched geometrically).
+// With `weld`, vertices at one position count as one (edges are matched geometrically). The
+// corners sorted by (edge key, corner) group each edge's corners in corner order; numbering the
+// groups by their first corners gives the numbers a scan of the corners would (a hash map per
+// corner cost a tenth of a one-frame render of the default shot, in its allocations).
 EdgeTable buildEdgeTable(const std::vector<uint32_t>& indices, const std::vector<uint32_t>* weld) {
-  EdgeTable table;
-  table.ofCorner.resize(indices.size());
-  std::unordered_map<uint64_t, uint32_t> ids;
-  ids.reserve(indices.size());
-  for (size_t corner = 0; corner < indices.size(); ++corner) {
+  const size_t corners = indices.size();
+  std::vector<std::pair<uint64_t, uint32_t>> keyed(corners);  // (edge key, corner)
+  for (size_t corner = 0; corner < corners; ++corner) {
     const size_t t = corner / 3;
     uint32_t a = indices[corner], b = indices[3 * t + (corner + 1) % 3];
     if (weld) a = (*weld)[a], b = (*weld)[b];
     if (a > b) std::swap(a, b);
-    const auto [it, added] = ids.try_emplace((uint64_t(a) << 32) | b, uint32_t(table.ends.size()));
-    if (added) {
-      table.ends.emplace_back(a, b);
-      table.triangles.emplace_back();
-    }
-    table.ofCorner[corner] = it->second;
-    table.triangles[it->second].push_back(uint32_t(t));
+    keyed[corner] = {(uint64_t(a) << 32) | b, uint32_t(corner)};
   }
+  std::sort(keyed.begin(), keyed.end());
+  // Per corner its group (edge in key order); each group's first corner.
+  std::vector<uint32_t> groupOf(corners), firstOfGroup;
+  for (size_t i = 0; i < corners; ++i) {
+    if (i == 0 || keyed[i].first != keyed[i - 1].first) firstOfGroup.push_back(keyed[i].second);
+    groupOf[keyed[i].second] = uint32_t(firstOfGroup.size() - 1);
+  }
+  // Groups numbered as their first corners come.
+  std::vector<uint32_t> groupsByFirst(firstOfGroup.size());
+  std::iota(groupsByFirst.begin(), groupsByFirst.end(), 0u);
+  std::sort(groupsByFirst.begin(), groupsByFirst.end(),
+            [&](uint32_t x, uint32_t y) { return firstOfGroup[x] < firstOfGroup[y]; });
+  std::vector<uint32_t> edgeOfGroup(firstOfGroup.size());
+  for (size_t e = 0; e < groupsByFirst.size(); ++e) edgeOfGroup[groupsByFirst[e]] = uint32_t(e);
+
+  EdgeTable table;
+  table.ofCorner.resize(corners);
+  for (size_t corner = 0; corner < corners; ++corner) table.ofCorner[corner] = edgeOfGroup[groupOf[corner]];
+  table.ends.resize(firstOfGroup.size());
+  table.triangleStart.assign(firstOfGroup.size() + 1, 0);
+  for (size_t i = 0; i < corners; ++i) {
+    const uint32_t e = table.ofCorner[keyed[i].second];
+    table.ends[e] = {uint32_t(keyed[i].first >> 32), uint32_t(keyed[i].first)};
+    ++table.triangleStart[e + 1];
+  }
+  for (size_t e = 0; e < firstOfGroup.size(); ++e) table.triangleStart[e + 1] += table.triangleStart[e];
+  table.triangleList.resize(corners);
+  std::vector<uint32_t> filled(table.triangleStart.begin(), table.triangleStart.end() - 1);
+  for (size_t corner = 0; corner < corners; ++corner) table.triangleList[filled[table.ofCorner[corner]]++] = uint32_t(corner / 3);
   return table;
 }
 
@@ -65,7 +96,7 @@ std::vector<bool> closeSelection(const EdgeTable& welded, std::vector<bool>& sel
       const uint32_t e = welded.ofCorner[3 * t + k];
       if (split[e]) continue;
       split[e] = true;
-      for (uint32_t other : welded.triangles[e]) work.push_back(other);
+      for (uint32_t other : welded.trianglesOn(e)) work.push_back(other);
     }
   }
   return split;
@@ -103,7 +134,7 @@ class EvenMasks {
       if (a == b) continue;
       neighbours_[a].push_back(b);
       neighbours_[b].push_back(a);
-      if (raw.triangles[e].size() != 2) smooth_[a] = smooth_[b] = false;  // mesh boundary (or non-manifold)
+      if (raw.trianglesOn(uint32_t(e)).size() != 2) smooth_[a] = smooth_[b] = false;  // mesh boundary (or non-manifold)
     }
     for (size_t v = 0; v < n; ++v) {
       // A closed fan has as many neighbours as triangles.
@@ -133,8 +164,8 @@ std::vector<std::pair<uint32_t, float>> oddRow(const TriangleMesh& mesh, const E
                                                uint32_t rawEdge, uint32_t weldedEdge, const std::vector<bool>& selected,
                                                RefinementScheme scheme) {
   const auto ends = raw.ends[rawEdge];
-  const std::vector<uint32_t>& sides = raw.triangles[rawEdge];
-  const bool interior = sides.size() == 2 && welded.triangles[weldedEdge].size() == 2 && selected[sides[0]] &&
+  const std::span<const uint32_t> sides = raw.trianglesOn(rawEdge);
+  const bool interior = sides.size() == 2 && welded.trianglesOn(weldedEdge).size() == 2 && selected[sides[0]] &&
                         selected[sides[1]];
   if (scheme != RefinementScheme::Loop || !interior) return {{ends.first, 0.5f}, {ends.second, 0.5f}};
   return {{ends.first, 0.375f},
