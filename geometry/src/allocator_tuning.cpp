@@ -17,4 +17,12 @@ void keepFreedMemoryForReuse() {
 #endif
 }
 
+void returnFreedMemoryPromptly() {
+#if defined(__GLIBC__)
+  constexpr int kGlibcDefault = 128 << 10;  // both thresholds' defaults, mallopt(3)
+  mallopt(M_MMAP_THRESHOLD, kGlibcDefault);
+  mallopt(M_TOP_PAD, kGlibcDefault);
+#endif
+}
+
 }  // namespace lacrima

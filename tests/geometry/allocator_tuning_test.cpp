@@ -48,5 +48,32 @@ TEST(AllocatorTuning, FreedBuffersStayMappedForTheNextOnes) {
 #endif
 }
 
+// After returnFreedMemoryPromptly and a trim a mesh-sized block is mmapped again (and unmapped
+// when freed); under keepFreedMemoryForReuse it comes from the heap.
+TEST(AllocatorTuning, PromptReturnMmapsBigBlocksAgain) {
+#if defined(__GLIBC__)
+  if (kOwnAllocator) GTEST_SKIP() << "a sanitizer's allocator replaces glibc's malloc";
+  const auto mmappedWhileHolding = [](size_t bytes) {
+    [[maybe_unused]] static void* volatile escaped;  // so that the compiler cannot elide the malloc/free pair
+    void* block = std::malloc(bytes);
+    escaped = block;
+    std::memset(block, 1, bytes);
+    const size_t mmapped = mallinfo2().hblkhd;
+    std::free(block);
+    return mmapped;
+  };
+  keepFreedMemoryForReuse();
+  const size_t before = mallinfo2().hblkhd;
+  EXPECT_LT(mmappedWhileHolding(8 << 20), before + (8 << 20)) << "tuned: the block comes from the heap";
+  returnFreedMemoryPromptly();
+  malloc_trim(0);  // as `lacrima render` does after each frame: the heap's top is handed back
+  // Larger than the free chunk the first block may have left inside the heap.
+  EXPECT_GE(mmappedWhileHolding(16 << 20), before + (16 << 20)) << "prompt return: the block is mmapped";
+  keepFreedMemoryForReuse();  // as the test executable's main left it
+#else
+  GTEST_SKIP() << "malloc is not glibc's";
+#endif
+}
+
 }  // namespace
 }  // namespace lacrima

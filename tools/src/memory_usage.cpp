@@ -1,5 +1,7 @@
 #include "memory_usage.hpp"
 
+#include "lacrima/geometry/allocator_tuning.hpp"
+
 #include <fmt/format.h>
 #include <sys/resource.h>
 
@@ -57,6 +59,7 @@ MemoryUsage currentMemoryUsage() {
 }
 
 void releaseFreeHeapMemory() {
+  returnFreedMemoryPromptly();
 #if defined(__GLIBC__)
   malloc_trim(0);
 #endif

@@ -20,9 +20,10 @@ struct MemoryUsage {
 // residentMiB left at 0.
 MemoryUsage currentMemoryUsage();
 
-// Gives the free pages inside the heap back to the system (glibc's malloc_trim; nothing
-// elsewhere): called after every frame, it keeps what a frame freed from adding up over a sequence
-// (the heap keeps freed memory for reuse within a frame: geometry/allocator_tuning.hpp).
+// Called after every frame of `render` and `export`: from then on the heap returns freed memory
+// promptly (geometry/allocator_tuning.hpp: the first frame, with the shot's load and the
+// simulation up to it, reused it), and the free pages inside the heap go back to the system
+// (glibc's malloc_trim; nothing elsewhere), so what a frame freed does not add up over a sequence.
 void releaseFreeHeapMemory();
 
 // "peak RSS 123.4 MiB, RSS 120.1 MiB, heap 80.2 MiB in use of 95.0 MiB" (without the heap part
