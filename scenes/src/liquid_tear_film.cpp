@@ -18,6 +18,8 @@ namespace {
 // One straight piece of the path on this frame's skin, with the film along it.
 struct WetPiece {
   Vec3 from, to;       // posed positions
+  Vec3 direction;      // to - from
+  float length2 = 0.0f;  // its squared length
   double s0 = 0.0, s1 = 0.0;  // arc lengths at its ends
   float reach = 0.0f;  // distance beyond which the film has fallen to 0 (widest film on the piece)
   float peak = 0.0f;   // no point gets more film from this piece (the thickest cell it crosses)
@@ -30,7 +32,9 @@ std::vector<WetPiece> wetPieces(const ShotLiquidTear& tear, const FlowPath& path
   const double probe = 0.5 * tear.input.params.trailCellLength;
   std::vector<WetPiece> pieces;
   for (size_t i = 0; i + 1 < path.points.size(); ++i) {
-    WetPiece piece{Vec3::Zero(), Vec3::Zero(), path.arcLength[i], path.arcLength[i + 1], 0.0f};
+    WetPiece piece;
+    piece.s0 = path.arcLength[i];
+    piece.s1 = path.arcLength[i + 1];
     double widest = 0.0;
     for (double s = piece.s0;; s = std::min(s + probe, piece.s1)) {
       if (simulation.filmThicknessAt(s) > 0.0) widest = std::max(widest, simulation.filmWidthAt(s));
@@ -39,6 +43,8 @@ std::vector<WetPiece> wetPieces(const ShotLiquidTear& tear, const FlowPath& path
     if (widest <= 0.0) continue;
     piece.from = surfacePosition(skin, path.points[i]);
     piece.to = surfacePosition(skin, SurfacePoint{path.points[i].triangle, path.arrival[i + 1]});
+    piece.direction = piece.to - piece.from;
+    piece.length2 = piece.direction.squaredNorm();
     piece.reach = float(0.5 * widest) * (1.0f + kFilmEdgeFraction) * (1.0f + kFilmEdgeWander);
     piece.peak = float(simulation.maxFilmThicknessBetween(piece.s0, piece.s1));
     pieces.push_back(piece);
@@ -70,9 +76,8 @@ struct FilmCells {
 // at the half width there scaled by p's edge factor (1 + kFilmEdgeWander v).
 float filmFromPiece(const WetPiece& piece, const FilmCells& cells, const TearLiquidSimulation& simulation,
                     const Vec3& p, float edgeFactor) {
-  const Vec3 d = piece.to - piece.from;
-  const float length2 = d.squaredNorm();
-  const float f = length2 > 0.0f ? std::clamp((p - piece.from).dot(d) / length2, 0.0f, 1.0f) : 0.0f;
+  const Vec3& d = piece.direction;
+  const float f = piece.length2 > 0.0f ? std::clamp((p - piece.from).dot(d) / piece.length2, 0.0f, 1.0f) : 0.0f;
   const float r = (p - (piece.from + f * d)).norm();
   if (r >= piece.reach) return 0.0f;
   const long cell = simulation.filmCellAt(piece.s0 + double(f) * (piece.s1 - piece.s0));
@@ -82,17 +87,21 @@ float filmFromPiece(const WetPiece& piece, const FilmCells& cells, const TearLiq
 
 // The wet pieces by the cells of a uniform grid over their boxes: each piece is listed in every
 // cell its box overlaps, in the order given, so a vertex tests only the pieces of its own cell,
-// among them every piece whose box contains it. Cells are about a typical (median) piece box wide, at most
-// kMaxCellsPerAxis a side; the lists are stored flat (cell c's pieces: entries_[first_[c]] to
-// entries_[first_[c + 1]]), one allocation each, rebuilt every frame.
+// among them every piece whose box contains it. Cells are an eighth of a typical (median) piece box
+// wide: a piece is much shorter than its reach (the default shot's ~0.07 mm pieces reach ~3 mm), so
+// a box holds ~100 pieces along the path and a cell as wide as a box made each wet vertex test
+// ~700 pieces where ~200 boxes contain it (kCellsAcrossPieceBox 1 -> 8: 58 -> 32 M tests a frame).
+// At most kMaxCells cells (larger cells on a long, sparse trail); the lists are stored flat (cell
+// c's pieces: entries_[first_[c]] to entries_[first_[c + 1]]), one allocation each, rebuilt every frame.
 class WetPieceGrid {
  public:
   WetPieceGrid(const std::vector<Eigen::AlignedBox3f>& pieceBoxes, const std::vector<uint32_t>& order,
                const Eigen::AlignedBox3f& bounds)
       : origin_(bounds.min()) {
     const Vec3 extent = bounds.sizes();
-    cellSize_ = std::max({medianBoxSize(pieceBoxes), extent.maxCoeff() / float(kMaxCellsPerAxis), 1e-9f});
-    for (int k = 0; k < 3; ++k) cells_[k] = std::clamp(int(extent[k] / cellSize_) + 1, 1, kMaxCellsPerAxis);
+    cellSize_ = std::max(medianBoxSize(pieceBoxes) / kCellsAcrossPieceBox, 1e-9f);
+    while (cellCount(extent) > kMaxCells) cellSize_ *= 1.25f;
+    for (int k = 0; k < 3; ++k) cells_[k] = int(extent[k] / cellSize_) + 1;
     first_.assign(size_t(cells_[0]) * cells_[1] * cells_[2] + 1, 0);
     forEachCell(pieceBoxes, order, [&](uint32_t, size_t cell) { ++first_[cell + 1]; });
     for (size_t c = 1; c < first_.size(); ++c) first_[c] += first_[c - 1];
@@ -108,7 +117,14 @@ class WetPieceGrid {
   }
 
  private:
-  static constexpr int kMaxCellsPerAxis = 32;
+  static constexpr float kCellsAcrossPieceBox = 8.0f;
+  static constexpr double kMaxCells = 1 << 21;
+
+  double cellCount(const Vec3& extent) const {
+    double count = 1.0;
+    for (int k = 0; k < 3; ++k) count *= double(int(extent[k] / cellSize_) + 1);
+    return count;
+  }
 
   static float medianBoxSize(const std::vector<Eigen::AlignedBox3f>& boxes) {
     std::vector<float> sizes;
