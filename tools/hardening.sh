@@ -17,9 +17,12 @@
 # Any sanitizer report, fuzzer finding or test failure makes the script exit non-zero.
 # Environment: HARDENING_DIR (default build-hardening), BUILD_DIR (Release tree for `memory`,
 # default build), JOBS (default: number of cores), FUZZ_SECONDS, FUZZ_TIMEOUT (seconds after which
-# one input counts as a hang, default 10), RENDERER_TESTS=1 to add the
+# one input counts as a hang, default 10), FUZZ_SEED (the fuzz stage's libFuzzer seed, default 1),
+# RENDERER_TESTS=1 to add the
 # renderer tests (Monte Carlo convergence tests; left out of CI for time, not timed under ASan),
-# GTEST_FILTER (a gtest filter for the unit tests, e.g. to rerun one test).
+# GTEST_FILTER (a gtest filter for the unit tests, e.g. to rerun one test), SANITIZED_TEST_LIMIT
+# (seconds: tests the Release ctest in BUILD_DIR timed over it are left out of the sanitized unit
+# tests, default 1; a large value keeps them all).
 set -euo pipefail
 
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -31,6 +34,10 @@ tree="${HARDENING_DIR:-build-hardening}"
 jobs="${JOBS:-$(nproc)}"
 fuzz_seconds="${FUZZ_SECONDS:-20}"
 fuzz_timeout="${FUZZ_TIMEOUT:-10}"
+# The short fuzz stage starts libFuzzer's mutations from a fixed seed, so that two runs of the same
+# commit try the same inputs in the same order (up to where FUZZ_SECONDS cuts them off) and a red
+# run can be replayed; campaigns (fuzz-campaign) keep libFuzzer's random seed to explore further.
+fuzz_seed="${FUZZ_SEED:-1}"
 
 # halt_on_error: the first report fails the run; detect_leaks: LeakSanitizer at exit.
 export ASAN_OPTIONS="detect_leaks=1:halt_on_error=1:abort_on_error=0:strict_string_checks=1:detect_stack_use_after_return=1"
@@ -112,6 +119,20 @@ excluded_tests+=":MeshBoundary.OneLayerOfSamplesHoldsWaterInAClosedTank"
 # the sanitizers in the single-frame tracking tests, and the Release ctest runs these in full.
 excluded_tests+=":ClosedLoop.*:AnimationPrior.FittingWithThePriorRecoversANoisyPerformanceBetter"
 
+# And every test the Release ctest of the same run timed at over SANITIZED_TEST_LIMIT seconds
+# (default 1; ctest's own record, Testing/Temporary/CTestCostData.txt in BUILD_DIR, read when
+# present): under ASan at -O1 a test takes several to a hundred times its Release time (scenes ~6x,
+# flesh over 100x: Eigen at -O1), so one long test added to a suite costs this stage minutes; the rule keeps such tests out
+# without a hand-kept entry above. They ran in full, compiled by g++, a moment before; their code
+# paths run under the sanitizers in the shorter tests of the same suites, the renders and the
+# fuzzers below. The list above names the ones left out whatever a run's timings say.
+release_timed_exclusions() {
+  local costs="${BUILD_DIR:-build}/Testing/Temporary/CTestCostData.txt"
+  [ -f "$costs" ] || return 0
+  # Lines "name runs seconds" until the "---" that starts the list of failed tests.
+  awk -v limit="${SANITIZED_TEST_LIMIT:-1}" '$1 == "---" { exit } NF == 3 && $3 + 0 > limit + 0 { print $1 }' "$costs"
+}
+
 # One test executable as JOBS gtest shards side by side (the tests are single-threaded and ASan
 # makes them slow; each shard runs every JOBS-th test), each shard's output printed when it ends.
 run_sharded() {
@@ -131,6 +152,12 @@ run_sharded() {
 }
 
 run_unit_tests() {
+  local timed
+  timed="$(release_timed_exclusions | paste -sd: -)"
+  if [ -n "$timed" ]; then
+    say "unit tests: leaving out $(tr ':' '\n' <<< "$timed" | wc -l) tests over ${SANITIZED_TEST_LIMIT:-1} s in the Release ctest"
+    excluded_tests+=":$timed"
+  fi
   local folders=(geometry flesh sph crowd tracking materials scenes fuzz)
   [ "${RENDERER_TESTS:-0}" = 1 ] && folders+=(renderer)
   for folder in "${folders[@]}"; do
@@ -169,7 +196,7 @@ run_fuzzer() {
   local tmp
   tmp="$(cd "$tree" && pwd)/fuzz-tmp"
   rm -rf "$tmp" && mkdir -p "$tmp"
-  TMPDIR="$tmp" "$tree/tests/fuzz/targets/${name}_fuzzer" -max_total_time="$fuzz_seconds" -timeout="$fuzz_timeout" \
+  TMPDIR="$tmp" "$tree/tests/fuzz/targets/${name}_fuzzer" -seed="$fuzz_seed" -max_total_time="$fuzz_seconds" -timeout="$fuzz_timeout" \
     -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="$findings/$name-" "$corpus" "$@" 2>"$tree/fuzz-$name.log" || {
     tail -n 60 "$tree/fuzz-$name.log" >&2
     say "fuzz: $name found a problem: the input is in $findings (replay: $tree/tests/fuzz/targets/${name}_fuzzer FILE)"
