@@ -5,6 +5,8 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <numeric>
 #include <span>
 
@@ -22,6 +24,7 @@ struct WetPiece {
   float length2 = 0.0f;  // its squared length
   double s0 = 0.0, s1 = 0.0;  // arc lengths at its ends
   float reach = 0.0f;  // distance beyond which the film has fallen to 0 (widest film on the piece)
+  float unitReach = 0.0f;  // the same for a point whose edge factor is 1 (reach / (1 + kFilmEdgeWander))
   float peak = 0.0f;   // no point gets more film from this piece (the thickest cell it crosses)
 };
 
@@ -45,7 +48,8 @@ std::vector<WetPiece> wetPieces(const ShotLiquidTear& tear, const FlowPath& path
     piece.to = surfacePosition(skin, SurfacePoint{path.points[i].triangle, path.arrival[i + 1]});
     piece.direction = piece.to - piece.from;
     piece.length2 = piece.direction.squaredNorm();
-    piece.reach = float(0.5 * widest) * (1.0f + kFilmEdgeFraction) * (1.0f + kFilmEdgeWander);
+    piece.unitReach = float(0.5 * widest) * (1.0f + kFilmEdgeFraction);
+    piece.reach = piece.unitReach * (1.0f + kFilmEdgeWander);
     piece.peak = float(simulation.maxFilmThicknessBetween(piece.s0, piece.s1));
     pieces.push_back(piece);
   }
@@ -72,13 +76,11 @@ struct FilmCells {
   std::vector<float> halfWidth;   // m
 };
 
-// The film a piece lays on point p: thickness at p's closest point on the piece, times the falloff
-// at the half width there scaled by p's edge factor (1 + kFilmEdgeWander v).
-float filmFromPiece(const WetPiece& piece, const FilmCells& cells, const TearLiquidSimulation& simulation,
-                    const Vec3& p, float edgeFactor) {
-  const Vec3& d = piece.direction;
-  const float f = piece.length2 > 0.0f ? std::clamp((p - piece.from).dot(d) / piece.length2, 0.0f, 1.0f) : 0.0f;
-  const float r = (p - (piece.from + f * d)).norm();
+// The film a piece lays at distance r from it, its closest point a fraction f along it: the
+// thickness at that arc length times the falloff at the half width there scaled by the point's edge
+// factor (1 + kFilmEdgeWander v); 0 from the piece's reach on.
+float filmAtClosestPoint(const WetPiece& piece, const FilmCells& cells, const TearLiquidSimulation& simulation,
+                         float f, float r, float edgeFactor) {
   if (r >= piece.reach) return 0.0f;
   const long cell = simulation.filmCellAt(piece.s0 + double(f) * (piece.s1 - piece.s0));
   if (cell < 0 || cells.thickness[size_t(cell)] <= 0.0) return 0.0f;
@@ -110,9 +112,11 @@ class WetPieceGrid {
     forEachCell(pieceBoxes, order, [&](uint32_t piece, size_t cell) { entries_[filled[cell]++] = piece; });
   }
 
-  // The pieces whose boxes may contain p (a point inside the bounds), in the order given.
-  std::span<const uint32_t> piecesNear(const Vec3& p) const {
-    const size_t c = index(cellOf(p));
+  size_t cellCount() const { return first_.size() - 1; }
+  // The cell of p (a point inside the bounds).
+  size_t cellIndexOf(const Vec3& p) const { return index(cellOf(p)); }
+  // The pieces whose boxes overlap cell c, in the order given.
+  std::span<const uint32_t> piecesIn(size_t c) const {
     return {entries_.data() + first_[c], entries_.data() + first_[c + 1]};
   }
 
@@ -158,6 +162,123 @@ class WetPieceGrid {
   std::vector<uint32_t> entries_;  // piece indices, cell after cell
 };
 
+// The skin vertices inside the grid's bounds gathered cell by cell (a counting sort by cell): cell
+// c's are vertex[first[c]] to vertex[first[c + 1]], with their positions in separate x, y, z arrays
+// so that a piece is measured against a cell's vertices in one loop the compiler vectorises.
+struct VerticesByCell {
+  VerticesByCell(const std::vector<Vec3>& positions, const Eigen::AlignedBox3f& bounds, const WetPieceGrid& grid) {
+    constexpr uint32_t kOutside = ~0u;
+    std::vector<uint32_t> cellOfVertex(positions.size(), kOutside);
+    first.assign(grid.cellCount() + 1, 0);
+    for (size_t v = 0; v < positions.size(); ++v) {
+      if (!bounds.contains(positions[v])) continue;
+      cellOfVertex[v] = uint32_t(grid.cellIndexOf(positions[v]));
+      ++first[cellOfVertex[v] + 1];
+    }
+    for (size_t c = 1; c < first.size(); ++c) first[c] += first[c - 1];
+    vertex.resize(first.back());
+    x.resize(vertex.size()), y.resize(vertex.size()), z.resize(vertex.size());
+    std::vector<uint32_t> filled(first.begin(), first.end() - 1);
+    for (size_t v = 0; v < positions.size(); ++v) {
+      if (cellOfVertex[v] == kOutside) continue;
+      const uint32_t k = filled[cellOfVertex[v]]++;
+      vertex[k] = uint32_t(v);
+      x[k] = positions[v].x(), y[k] = positions[v].y(), z[k] = positions[v].z();
+    }
+  }
+  std::vector<uint32_t> first;   // per cell, where its vertices start (one more at the end)
+  std::vector<uint32_t> vertex;  // skin vertex indices, cell after cell
+  std::vector<float> x, y, z;    // their positions
+};
+
+// What one cell's evaluation needs, shared by all cells.
+struct FilmInputs {
+  const std::vector<WetPiece>& pieces;
+  const std::vector<Eigen::AlignedBox3f>& pieceBoxes;
+  const FilmCells& cells;
+  const TearLiquidSimulation& simulation;
+};
+
+// Per-thread scratch of a cell's evaluation, one value per vertex of the cell.
+struct CellScratch {
+  std::vector<float> film, edgeFactor, fraction, distance2;
+  std::vector<int> candidate;
+  void resize(size_t n) {
+    film.assign(n, 0.0f);
+    edgeFactor.resize(n), fraction.resize(n), distance2.resize(n), candidate.resize(n);
+  }
+};
+
+// For each vertex k of a cell (positions x, y, z from `begin`): the fraction along the piece of its
+// closest point and the squared distance to it, written as filmAtClosestPoint's caller computed them
+// per vertex with Eigen (a dot product of three terms sums as a0 b0 + (a1 b1 + a2 b2)), so the film
+// is bitwise the same; and whether the vertex can get film from the piece: inside its box, within
+// its reach (squared, with a margin: the exact test follows on the square root) and below its peak.
+void measureAgainstPiece(const WetPiece& piece, const Eigen::AlignedBox3f& pieceBox, const VerticesByCell& vertices,
+                         size_t begin, CellScratch& scratch) {
+  const float fx = piece.from.x(), fy = piece.from.y(), fz = piece.from.z();
+  const float dx = piece.direction.x(), dy = piece.direction.y(), dz = piece.direction.z();
+  const float length2 = piece.length2, peak = piece.peak;
+  // A point with edge factor e gets no film beyond e unitReach (edgeFalloff is 0 from 1.1 e half
+  // widths on, and no cell the piece crosses is wider than its widest): a tighter bound than the
+  // reach for the half of the vertices whose edge lies inside. Both squared, with a margin.
+  const float reach2 = piece.reach * piece.reach * (1.0f + 1e-5f);
+  const float unitReach2 = piece.unitReach * piece.unitReach * (1.0f + 1e-3f);
+  const float* __restrict edgeFactor = scratch.edgeFactor.data();
+  const float loX = pieceBox.min().x(), loY = pieceBox.min().y(), loZ = pieceBox.min().z();
+  const float hiX = pieceBox.max().x(), hiY = pieceBox.max().y(), hiZ = pieceBox.max().z();
+  const float* __restrict x = vertices.x.data() + begin;
+  const float* __restrict y = vertices.y.data() + begin;
+  const float* __restrict z = vertices.z.data() + begin;
+  const float* __restrict film = scratch.film.data();
+  float* __restrict fraction = scratch.fraction.data();
+  float* __restrict distance2 = scratch.distance2.data();
+  int* __restrict candidate = scratch.candidate.data();
+  const int n = int(scratch.film.size());
+  // Branch-free (bitwise & of the comparisons, selects for the clamp) and free of aliasing (the
+  // arrays are distinct; GCC cannot prove it through the vectors) so that it vectorises.
+#pragma GCC ivdep
+  for (int k = 0; k < n; ++k) {
+    const int inside = int(loX <= x[k]) & int(loY <= y[k]) & int(loZ <= z[k]) & int(x[k] <= hiX) & int(y[k] <= hiY) &
+                       int(z[k] <= hiZ);
+    const float along = (x[k] - fx) * dx + ((y[k] - fy) * dy + (z[k] - fz) * dz);
+    const float quotient = along / length2;
+    const float clamped = quotient < 0.0f ? 0.0f : (1.0f < quotient ? 1.0f : quotient);
+    const float f = length2 > 0.0f ? clamped : 0.0f;
+    const float ex = x[k] - (fx + f * dx), ey = y[k] - (fy + f * dy), ez = z[k] - (fz + f * dz);
+    const float r2 = ex * ex + (ey * ey + ez * ez);
+    fraction[k] = f;
+    distance2[k] = r2;
+    const float edgeReach2 = edgeFactor[k] * edgeFactor[k] * unitReach2;
+    candidate[k] = inside & int(r2 <= reach2) & int(r2 <= edgeReach2) & int(film[k] < peak);
+  }
+}
+
+// The film of one cell's vertices: the largest over the pieces listed in the cell (thickest first),
+// stopping once no vertex of the cell has less film than the next piece's peak.
+void filmOfCell(const FilmInputs& in, std::span<const uint32_t> piecesInCell, const VerticesByCell& vertices,
+                size_t cell, const std::vector<float>& edgeFactorOfVertex, CellScratch& scratch, std::vector<float>& films) {
+  const size_t begin = vertices.first[cell], n = vertices.first[cell + 1] - begin;
+  scratch.resize(n);
+  for (size_t k = 0; k < n; ++k) scratch.edgeFactor[k] = edgeFactorOfVertex[vertices.vertex[begin + k]];
+  float leastFilm = 0.0f;
+  for (const uint32_t i : piecesInCell) {
+    const WetPiece& piece = in.pieces[i];
+    if (piece.peak <= leastFilm) break;
+    measureAgainstPiece(piece, in.pieceBoxes[i], vertices, begin, scratch);
+    leastFilm = std::numeric_limits<float>::infinity();
+    for (size_t k = 0; k < n; ++k) {
+      if (scratch.candidate[k]) {
+        const float r = std::sqrt(scratch.distance2[k]);
+        scratch.film[k] = std::max(
+            scratch.film[k], filmAtClosestPoint(piece, in.cells, in.simulation, scratch.fraction[k], r, scratch.edgeFactor[k]));
+      }
+      leastFilm = std::min(leastFilm, scratch.film[k]);
+    }
+  }
+  for (size_t k = 0; k < n; ++k) films[vertices.vertex[begin + k]] = scratch.film[k];
+}
+
 }  // namespace
 
 std::vector<float> filmEdgeVariation(const TriangleMesh& skinAtFirstFrame) {
@@ -192,23 +313,21 @@ void addLiquidTearFilm(const ShotLiquidTear& tear, const FlowPath& course, const
   std::stable_sort(thickestFirst.begin(), thickestFirst.end(),
                    [&](uint32_t a, uint32_t b) { return pieces[a].peak > pieces[b].peak; });
   const WetPieceGrid grid(pieceBoxes, thickestFirst, box);
-  // Each vertex's film depends on nothing but its position: the vertices are split between the
-  // threads, and the result does not depend on how.
+  // Each vertex's film depends on nothing but its position and the pieces: the grid's cells are
+  // split between the threads, and the result does not depend on how.
   const FilmCells cells(simulation);
   const bool hasVariation = tear.filmEdgeVariation.size() == skin.positions.size();
+  std::vector<float> edgeFactor(skin.positions.size(), 1.0f);
+  if (hasVariation)
+    for (size_t v = 0; v < edgeFactor.size(); ++v) edgeFactor[v] = 1.0f + kFilmEdgeWander * tear.filmEdgeVariation[v];
+  const VerticesByCell vertices(skin.positions, box, grid);
+  const FilmInputs inputs{pieces, pieceBoxes, cells, simulation};
   std::vector<float> films(skin.positions.size(), 0.0f);
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, skin.positions.size(), 4096), [&](const tbb::blocked_range<size_t>& r) {
-    for (size_t v = r.begin(); v != r.end(); ++v) {
-      const Vec3& p = skin.positions[v];
-      if (!box.contains(p)) continue;
-      const float edgeFactor = hasVariation ? 1.0f + kFilmEdgeWander * tear.filmEdgeVariation[v] : 1.0f;
-      float film = 0.0f;
-      for (const uint32_t i : grid.piecesNear(p)) {
-        if (pieces[i].peak <= film) break;
-        if (pieceBoxes[i].contains(p)) film = std::max(film, filmFromPiece(pieces[i], cells, simulation, p, edgeFactor));
-      }
-      films[v] = film;
-    }
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, grid.cellCount(), 256), [&](const tbb::blocked_range<size_t>& r) {
+    CellScratch scratch;
+    for (size_t c = r.begin(); c != r.end(); ++c)
+      if (vertices.first[c + 1] > vertices.first[c] && !grid.piecesIn(c).empty())
+        filmOfCell(inputs, grid.piecesIn(c), vertices, c, edgeFactor, scratch, films);
   });
   for (size_t v = 0; v < films.size(); ++v) {
     if (films[v] <= 0.0f) continue;
