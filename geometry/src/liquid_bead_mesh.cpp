@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -32,12 +33,62 @@ void validate(const LiquidBeadPlacement& p, const LiquidBeadResolution& r) {
                                  r.domeRings, r.baseRings, r.segments));
 }
 
-// The skin triangles near the bead that face the bead's side, as double-precision corners.
+// The skin triangles near the bead that face the bead's side, as double-precision corners, and
+// their shadows on the bead's base plane (along its normal) binned in a grid: a vertex's ray along
+// the normal can only hit a triangle whose shadow's box holds the ray's foot, so it tests the
+// triangles of its own bin alone (each bin lists them in patch order: the same hit wins a tie).
+// Testing every patch triangle from every bead vertex was the default shot's second-largest
+// cost of a frame's geometry after the wet film.
 struct SkinPatch {
   std::vector<Vec3d> corners;  // three per triangle
+  Vec3d centre, u, w;          // the base plane: a point and two axes
+  double x0 = 0.0, y0 = 0.0, binSize = 1.0;
+  int binsX = 1, binsY = 1;
+  std::vector<uint32_t> first;    // per bin, where its triangles start in `entries` (one more at the end)
+  std::vector<uint32_t> entries;  // triangle indices, bin after bin
+
+  // A point's coordinates in the base plane.
+  Eigen::Vector2d planar(const Vec3d& p) const { return {(p - centre).dot(u), (p - centre).dot(w)}; }
+  int binX(double x) const { return std::clamp(int((x - x0) / binSize), 0, binsX - 1); }
+  int binY(double y) const { return std::clamp(int((y - y0) / binSize), 0, binsY - 1); }
 };
 
-SkinPatch nearbySkin(const TriangleMesh& skin, const Vec3d& centre, const Vec3d& normal, double reach) {
+// The shadow box of each triangle, grown by kShadowMargin: the ray test accepts hits up to 1e-9 of
+// the triangle's size outside it, far below the margin.
+constexpr double kShadowMargin = 1e-6;  // metres
+
+void binShadows(SkinPatch& patch) {
+  const size_t triangles = patch.corners.size() / 3;
+  std::vector<Eigen::AlignedBox2d> shadows(triangles);
+  Eigen::AlignedBox2d all;
+  for (size_t t = 0; t < triangles; ++t) {
+    for (int k = 0; k < 3; ++k) shadows[t].extend(patch.planar(patch.corners[3 * t + k]));
+    shadows[t].min().array() -= kShadowMargin;
+    shadows[t].max().array() += kShadowMargin;
+    all.extend(shadows[t]);
+  }
+  if (triangles == 0) return;
+  // About one triangle per bin, at most 128 bins a side.
+  const int side = std::clamp(int(std::sqrt(double(triangles))), 1, 128);
+  patch.x0 = all.min().x(), patch.y0 = all.min().y();
+  patch.binSize = std::max(all.sizes().maxCoeff() / double(side), 1e-12);
+  patch.binsX = std::clamp(int(all.sizes().x() / patch.binSize) + 1, 1, side + 1);
+  patch.binsY = std::clamp(int(all.sizes().y() / patch.binSize) + 1, 1, side + 1);
+  patch.first.assign(size_t(patch.binsX) * size_t(patch.binsY) + 1, 0);
+  const auto forEachBin = [&](size_t t, auto visit) {
+    for (int y = patch.binY(shadows[t].min().y()); y <= patch.binY(shadows[t].max().y()); ++y)
+      for (int x = patch.binX(shadows[t].min().x()); x <= patch.binX(shadows[t].max().x()); ++x)
+        visit(size_t(y) * size_t(patch.binsX) + size_t(x));
+  };
+  for (size_t t = 0; t < triangles; ++t) forEachBin(t, [&](size_t bin) { ++patch.first[bin + 1]; });
+  for (size_t b = 1; b < patch.first.size(); ++b) patch.first[b] += patch.first[b - 1];
+  patch.entries.resize(patch.first.back());
+  std::vector<uint32_t> filled(patch.first.begin(), patch.first.end() - 1);
+  for (size_t t = 0; t < triangles; ++t) forEachBin(t, [&](size_t bin) { patch.entries[filled[bin]++] = uint32_t(t); });
+}
+
+SkinPatch nearbySkin(const TriangleMesh& skin, const Vec3d& centre, const Vec3d& normal, const Vec3d& u, const Vec3d& w,
+                     double reach) {
   SkinPatch patch;
   const double reach2 = reach * reach;
   for (size_t t = 0; t + 2 < skin.indices.size(); t += 3) {
@@ -48,13 +99,20 @@ SkinPatch nearbySkin(const TriangleMesh& skin, const Vec3d& centre, const Vec3d&
     if ((b - a).cross(c - a).dot(normal) <= 0.0) continue;  // the other side of a fold: not under the bead
     patch.corners.insert(patch.corners.end(), {a, b, c});
   }
+  patch.centre = centre, patch.u = u, patch.w = w;
+  binShadows(patch);
   return patch;
 }
 
-// Signed distance along `dir` from `origin` to the skin hit nearest to it (Moller-Trumbore), if any.
+// Signed distance along `dir` (the base plane's normal) from `origin` to the skin hit nearest to it
+// (Moller-Trumbore), if any.
 std::optional<double> skinHeight(const SkinPatch& patch, const Vec3d& origin, const Vec3d& dir) {
   std::optional<double> best;
-  for (size_t i = 0; i < patch.corners.size(); i += 3) {
+  if (patch.entries.empty()) return best;
+  const Eigen::Vector2d foot = patch.planar(origin);
+  const size_t bin = size_t(patch.binY(foot.y())) * size_t(patch.binsX) + size_t(patch.binX(foot.x()));
+  for (uint32_t e = patch.first[bin]; e < patch.first[bin + 1]; ++e) {
+    const size_t i = 3 * size_t(patch.entries[e]);
     const Vec3d e1 = patch.corners[i + 1] - patch.corners[i], e2 = patch.corners[i + 2] - patch.corners[i];
     const Vec3d p = dir.cross(e2);
     const double det = e1.dot(p);
@@ -85,7 +143,7 @@ TriangleMesh makeLiquidBeadMesh(const TriangleMesh& skin, const LiquidBeadPlacem
   const double theta = placement.contactAngle;
   const double rho = 1.0 / std::sin(theta), apexHeight = rho * (1.0 - std::cos(theta));
   const double footprint = std::max(placement.halfLength, placement.halfWidth) * std::max(rho, 1.0);
-  const SkinPatch patch = nearbySkin(skin, centre, n, 2.0 * footprint + 2.0 * placement.height);
+  const SkinPatch patch = nearbySkin(skin, centre, n, u, w, 2.0 * footprint + 2.0 * placement.height);
 
   TriangleMesh mesh;
   mesh.name = "liquid bead";
