@@ -279,6 +279,23 @@ void filmOfCell(const FilmInputs& in, std::span<const uint32_t> piecesInCell, co
   for (size_t k = 0; k < n; ++k) films[vertices.vertex[begin + k]] = scratch.film[k];
 }
 
+// The piece's box grown by its reach on every side.
+Eigen::AlignedBox3f grownBox(const WetPiece& piece) {
+  Eigen::AlignedBox3f b(piece.from.cwiseMin(piece.to), piece.from.cwiseMax(piece.to));
+  b.min().array() -= piece.reach;
+  b.max().array() += piece.reach;
+  return b;
+}
+
+// Each vertex's film raised into `wetness` (resized from empty on the first wet vertex).
+void raiseWetness(const std::vector<float>& films, std::vector<float>& wetness) {
+  for (size_t v = 0; v < films.size(); ++v) {
+    if (films[v] <= 0.0f) continue;
+    if (wetness.empty()) wetness.assign(films.size(), 0.0f);
+    wetness[v] = std::max(wetness[v], films[v]);
+  }
+}
+
 }  // namespace
 
 std::vector<float> filmEdgeVariation(const TriangleMesh& skinAtFirstFrame) {
@@ -292,6 +309,27 @@ std::vector<float> filmEdgeVariation(const TriangleMesh& skinAtFirstFrame) {
   return variation;
 }
 
+void addLiquidTearFilmOverEveryPiece(const ShotLiquidTear& tear, const FlowPath& course,
+                                     const TearLiquidSimulation& simulation, const TriangleMesh& skin,
+                                     std::vector<float>& wetness) {
+  const std::vector<WetPiece> pieces = wetPieces(tear, course, simulation, skin);
+  const FilmCells cells(simulation);
+  const bool hasVariation = tear.filmEdgeVariation.size() == skin.positions.size();
+  std::vector<float> films(skin.positions.size(), 0.0f);
+  for (size_t v = 0; v < skin.positions.size(); ++v) {
+    const Vec3& p = skin.positions[v];
+    const float edgeFactor = hasVariation ? 1.0f + kFilmEdgeWander * tear.filmEdgeVariation[v] : 1.0f;
+    for (const WetPiece& piece : pieces) {
+      if (!grownBox(piece).contains(p)) continue;  // the reach's box: beyond it, no film
+      const Vec3 d = piece.to - piece.from;
+      const float f = d.squaredNorm() > 0.0f ? std::clamp((p - piece.from).dot(d) / d.squaredNorm(), 0.0f, 1.0f) : 0.0f;
+      const float r = (p - (piece.from + f * d)).norm();
+      films[v] = std::max(films[v], filmAtClosestPoint(piece, cells, simulation, f, r, edgeFactor));
+    }
+  }
+  raiseWetness(films, wetness);
+}
+
 void addLiquidTearFilm(const ShotLiquidTear& tear, const FlowPath& course, const TearLiquidSimulation& simulation,
                        const TriangleMesh& skin, std::vector<float>& wetness) {
   const std::vector<WetPiece> pieces = wetPieces(tear, course, simulation, skin);
@@ -300,11 +338,8 @@ void addLiquidTearFilm(const ShotLiquidTear& tear, const FlowPath& course, const
   Eigen::AlignedBox3f box;
   std::vector<Eigen::AlignedBox3f> pieceBoxes;
   for (const WetPiece& piece : pieces) {
-    Eigen::AlignedBox3f b(piece.from.cwiseMin(piece.to), piece.from.cwiseMax(piece.to));
-    b.min().array() -= piece.reach;
-    b.max().array() += piece.reach;
-    pieceBoxes.push_back(b);
-    box.extend(b);
+    pieceBoxes.push_back(grownBox(piece));
+    box.extend(pieceBoxes.back());
   }
   // Thickest first: once a vertex has as much film as the next piece could give it, no later piece
   // can raise its maximum, and the rest are skipped (the maximum, hence the film, is unchanged).
@@ -329,11 +364,7 @@ void addLiquidTearFilm(const ShotLiquidTear& tear, const FlowPath& course, const
       if (vertices.first[c + 1] > vertices.first[c] && !grid.piecesIn(c).empty())
         filmOfCell(inputs, grid.piecesIn(c), vertices, c, edgeFactor, scratch, films);
   });
-  for (size_t v = 0; v < films.size(); ++v) {
-    if (films[v] <= 0.0f) continue;
-    if (wetness.empty()) wetness.assign(skin.positions.size(), 0.0f);
-    wetness[v] = std::max(wetness[v], films[v]);
-  }
+  raiseWetness(films, wetness);
 }
 
 }  // namespace lacrima::shotfile

@@ -44,4 +44,11 @@ std::vector<float> filmEdgeVariation(const TriangleMesh& skinAtFirstFrame);
 void addLiquidTearFilm(const ShotLiquidTear& tear, const FlowPath& course, const TearLiquidSimulation& simulation,
                        const TriangleMesh& skin, std::vector<float>& wetness);
 
+// The same film by its definition, evaluated directly: every vertex against every wet piece, no
+// grid, no early stop (slow: tens of seconds on the default shot). addLiquidTearFilm must write
+// bitwise the same; the tests hold it to that (tests/scenes/liquid_tear_film_test.cpp).
+void addLiquidTearFilmOverEveryPiece(const ShotLiquidTear& tear, const FlowPath& course,
+                                     const TearLiquidSimulation& simulation, const TriangleMesh& skin,
+                                     std::vector<float>& wetness);
+
 }  // namespace lacrima::shotfile

@@ -9,6 +9,7 @@
 
 #include "lacrima/geometry/surface_point.hpp"
 #include "lacrima/scenes/liquid_tear.hpp"
+#include "liquid_tear_film.hpp"  // scenes/src: the film and its definition evaluated directly
 #include "shot_test_support.hpp"
 
 namespace lacrima {
@@ -182,6 +183,31 @@ TEST(LiquidTearFilm, TheTrailsEdgeWandersAndReachesNoFurtherThanBefore) {
   // skin refinement ends), up to a vertex spacing.
   const float straightReach = *std::max_element(straight.begin(), straight.end());
   EXPECT_LE(*std::max_element(wandering.begin(), wandering.end()), straightReach * (1.5f / 1.1f) + 3e-4f);
+}
+
+// addLiquidTearFilm finds each vertex's pieces through a grid, measures a cell's vertices in one
+// vectorised loop, skips pieces too thin or too far for a vertex's edge, and stops early: none of
+// that may change the film, which must equal the maximum over every piece at every vertex, bitwise,
+// with the wandering edge and without it, while the bead runs and while the trail dries.
+TEST(LiquidTearFilm, EqualsItsDefinitionOverEveryPieceAtEveryVertex) {
+  Shot shot = loadFilmShot("film_definition.json");
+  const int running = frameAfterTheBeadRan(shot);
+  for (const int f : {running, std::min(running + 12, kFrames)}) {
+    const TriangleMesh skin = skinOf(buildFrame(shot, f), shot).mesh;
+    for (const bool wandering : {true, false}) {
+      ShotLiquidTear tear = shot.liquidTears[0];
+      if (!wandering) tear.filmEdgeVariation.clear();
+      LiquidTearRun run(shot, tear);
+      run.advanceTo(double(f));
+      std::vector<float> film, definition;
+      shotfile::addLiquidTearFilm(tear, run.coursePointer()->path, run.simulation(), skin, film);
+      shotfile::addLiquidTearFilmOverEveryPiece(tear, run.coursePointer()->path, run.simulation(), skin, definition);
+      ASSERT_EQ(film.size(), skin.vertexCount()) << "frame " << f;
+      const long wet = std::count_if(film.begin(), film.end(), [](float w) { return w > 0.0f; });
+      EXPECT_GT(wet, 100) << "frame " << f;
+      EXPECT_TRUE(film == definition) << "frame " << f << (wandering ? ", wandering edge" : ", straight edge");
+    }
+  }
 }
 
 TEST(LiquidTearFilm, AFrameAloneEqualsTheSameFrameInASequence) {
