@@ -10,6 +10,7 @@
 #include <optional>
 #include <vector>
 
+#include "lacrima/geometry/bucket_lists.hpp"
 #include "lacrima/geometry/error.hpp"
 
 namespace lacrima {
@@ -44,8 +45,7 @@ struct SkinPatch {
   Vec3d centre, u, w;          // the base plane: a point and two axes
   double x0 = 0.0, y0 = 0.0, binSize = 1.0;
   int binsX = 1, binsY = 1;
-  std::vector<uint32_t> first;    // per bin, where its triangles start in `entries` (one more at the end)
-  std::vector<uint32_t> entries;  // triangle indices, bin after bin
+  BucketLists trianglesByBin;
 
   // A point's coordinates in the base plane.
   Eigen::Vector2d planar(const Vec3d& p) const { return {(p - centre).dot(u), (p - centre).dot(w)}; }
@@ -74,17 +74,12 @@ void binShadows(SkinPatch& patch) {
   patch.binSize = std::max(all.sizes().maxCoeff() / double(side), 1e-12);
   patch.binsX = std::clamp(int(all.sizes().x() / patch.binSize) + 1, 1, side + 1);
   patch.binsY = std::clamp(int(all.sizes().y() / patch.binSize) + 1, 1, side + 1);
-  patch.first.assign(size_t(patch.binsX) * size_t(patch.binsY) + 1, 0);
-  const auto forEachBin = [&](size_t t, auto visit) {
-    for (int y = patch.binY(shadows[t].min().y()); y <= patch.binY(shadows[t].max().y()); ++y)
-      for (int x = patch.binX(shadows[t].min().x()); x <= patch.binX(shadows[t].max().x()); ++x)
-        visit(size_t(y) * size_t(patch.binsX) + size_t(x));
-  };
-  for (size_t t = 0; t < triangles; ++t) forEachBin(t, [&](size_t bin) { ++patch.first[bin + 1]; });
-  for (size_t b = 1; b < patch.first.size(); ++b) patch.first[b] += patch.first[b - 1];
-  patch.entries.resize(patch.first.back());
-  std::vector<uint32_t> filled(patch.first.begin(), patch.first.end() - 1);
-  for (size_t t = 0; t < triangles; ++t) forEachBin(t, [&](size_t bin) { patch.entries[filled[bin]++] = uint32_t(t); });
+  patch.trianglesByBin = makeBucketLists(size_t(patch.binsX) * size_t(patch.binsY), [&](auto visit) {
+    for (size_t t = 0; t < triangles; ++t)
+      for (int y = patch.binY(shadows[t].min().y()); y <= patch.binY(shadows[t].max().y()); ++y)
+        for (int x = patch.binX(shadows[t].min().x()); x <= patch.binX(shadows[t].max().x()); ++x)
+          visit(uint32_t(t), size_t(y) * size_t(patch.binsX) + size_t(x));
+  });
 }
 
 SkinPatch nearbySkin(const TriangleMesh& skin, const Vec3d& centre, const Vec3d& normal, const Vec3d& u, const Vec3d& w,
@@ -108,11 +103,11 @@ SkinPatch nearbySkin(const TriangleMesh& skin, const Vec3d& centre, const Vec3d&
 // (Moller-Trumbore), if any.
 std::optional<double> skinHeight(const SkinPatch& patch, const Vec3d& origin, const Vec3d& dir) {
   std::optional<double> best;
-  if (patch.entries.empty()) return best;
+  if (patch.trianglesByBin.items.empty()) return best;
   const Eigen::Vector2d foot = patch.planar(origin);
   const size_t bin = size_t(patch.binY(foot.y())) * size_t(patch.binsX) + size_t(patch.binX(foot.x()));
-  for (uint32_t e = patch.first[bin]; e < patch.first[bin + 1]; ++e) {
-    const size_t i = 3 * size_t(patch.entries[e]);
+  for (const uint32_t triangle : patch.trianglesByBin.in(bin)) {
+    const size_t i = 3 * size_t(triangle);
     const Vec3d e1 = patch.corners[i + 1] - patch.corners[i], e2 = patch.corners[i + 2] - patch.corners[i];
     const Vec3d p = dir.cross(e2);
     const double det = e1.dot(p);

@@ -10,6 +10,7 @@
 #include <numeric>
 #include <span>
 
+#include "lacrima/geometry/bucket_lists.hpp"
 #include "lacrima/geometry/gradient_noise.hpp"
 #include "lacrima/geometry/surface_point.hpp"
 
@@ -93,8 +94,8 @@ float filmAtClosestPoint(const WetPiece& piece, const FilmCells& cells, const Te
 // wide: a piece is much shorter than its reach (the default shot's ~0.07 mm pieces reach ~3 mm), so
 // a box holds ~100 pieces along the path and a cell as wide as a box made each wet vertex test
 // ~700 pieces where ~200 boxes contain it (kCellsAcrossPieceBox 1 -> 8: 58 -> 32 M tests a frame).
-// At most kMaxCells cells (larger cells on a long, sparse trail); the lists are stored flat (cell
-// c's pieces: entries_[first_[c]] to entries_[first_[c + 1]]), one allocation each, rebuilt every frame.
+// At most kMaxCells cells (larger cells on a long, sparse trail); the lists are stored flat
+// (BucketLists), rebuilt every frame.
 class WetPieceGrid {
  public:
   WetPieceGrid(const std::vector<Eigen::AlignedBox3f>& pieceBoxes, const std::vector<uint32_t>& order,
@@ -104,21 +105,15 @@ class WetPieceGrid {
     cellSize_ = std::max(medianBoxSize(pieceBoxes) / kCellsAcrossPieceBox, 1e-9f);
     while (cellCount(extent) > kMaxCells) cellSize_ *= 1.25f;
     for (int k = 0; k < 3; ++k) cells_[k] = int(extent[k] / cellSize_) + 1;
-    first_.assign(size_t(cells_[0]) * cells_[1] * cells_[2] + 1, 0);
-    forEachCell(pieceBoxes, order, [&](uint32_t, size_t cell) { ++first_[cell + 1]; });
-    for (size_t c = 1; c < first_.size(); ++c) first_[c] += first_[c - 1];
-    entries_.resize(first_.back());
-    std::vector<uint32_t> filled(first_.begin(), first_.end() - 1);
-    forEachCell(pieceBoxes, order, [&](uint32_t piece, size_t cell) { entries_[filled[cell]++] = piece; });
+    pieces_ = makeBucketLists(size_t(cells_[0]) * cells_[1] * cells_[2],
+                              [&](auto visit) { forEachCell(pieceBoxes, order, visit); });
   }
 
-  size_t cellCount() const { return first_.size() - 1; }
+  size_t cellCount() const { return pieces_.bucketCount(); }
   // The cell of p (a point inside the bounds).
   size_t cellIndexOf(const Vec3& p) const { return index(cellOf(p)); }
   // The pieces whose boxes overlap cell c, in the order given.
-  std::span<const uint32_t> piecesIn(size_t c) const {
-    return {entries_.data() + first_[c], entries_.data() + first_[c + 1]};
-  }
+  std::span<const uint32_t> piecesIn(size_t c) const { return pieces_.in(c); }
 
  private:
   static constexpr float kCellsAcrossPieceBox = 8.0f;
@@ -158,37 +153,24 @@ class WetPieceGrid {
   Vec3 origin_;
   float cellSize_ = 1.0f;
   int cells_[3] = {1, 1, 1};
-  std::vector<uint32_t> first_;    // per cell, where its pieces start in entries_ (one more at the end)
-  std::vector<uint32_t> entries_;  // piece indices, cell after cell
+  BucketLists pieces_;  // piece indices by cell
 };
 
-// The skin vertices inside the grid's bounds gathered cell by cell (a counting sort by cell): cell
-// c's are vertex[first[c]] to vertex[first[c + 1]], with their positions in separate x, y, z arrays
-// so that a piece is measured against a cell's vertices in one loop the compiler vectorises.
+// The skin vertices inside the grid's bounds gathered cell by cell (BucketLists), with their
+// positions in separate x, y, z arrays in the same order, so that a piece is measured against a
+// cell's vertices in one loop the compiler vectorises.
 struct VerticesByCell {
-  VerticesByCell(const std::vector<Vec3>& positions, const Eigen::AlignedBox3f& bounds, const WetPieceGrid& grid) {
-    constexpr uint32_t kOutside = ~0u;
-    std::vector<uint32_t> cellOfVertex(positions.size(), kOutside);
-    first.assign(grid.cellCount() + 1, 0);
-    for (size_t v = 0; v < positions.size(); ++v) {
-      if (!bounds.contains(positions[v])) continue;
-      cellOfVertex[v] = uint32_t(grid.cellIndexOf(positions[v]));
-      ++first[cellOfVertex[v] + 1];
-    }
-    for (size_t c = 1; c < first.size(); ++c) first[c] += first[c - 1];
-    vertex.resize(first.back());
-    x.resize(vertex.size()), y.resize(vertex.size()), z.resize(vertex.size());
-    std::vector<uint32_t> filled(first.begin(), first.end() - 1);
-    for (size_t v = 0; v < positions.size(); ++v) {
-      if (cellOfVertex[v] == kOutside) continue;
-      const uint32_t k = filled[cellOfVertex[v]]++;
-      vertex[k] = uint32_t(v);
-      x[k] = positions[v].x(), y[k] = positions[v].y(), z[k] = positions[v].z();
-    }
+  VerticesByCell(const std::vector<Vec3>& positions, const Eigen::AlignedBox3f& bounds, const WetPieceGrid& grid)
+      : byCell(makeBucketLists(grid.cellCount(), [&](auto visit) {
+          for (size_t v = 0; v < positions.size(); ++v)
+            if (bounds.contains(positions[v])) visit(uint32_t(v), grid.cellIndexOf(positions[v]));
+        })) {
+    x.reserve(byCell.items.size()), y.reserve(byCell.items.size()), z.reserve(byCell.items.size());
+    for (const uint32_t v : byCell.items)
+      x.push_back(positions[v].x()), y.push_back(positions[v].y()), z.push_back(positions[v].z());
   }
-  std::vector<uint32_t> first;   // per cell, where its vertices start (one more at the end)
-  std::vector<uint32_t> vertex;  // skin vertex indices, cell after cell
-  std::vector<float> x, y, z;    // their positions
+  BucketLists byCell;          // skin vertex indices by cell
+  std::vector<float> x, y, z;  // their positions, in byCell.items' order
 };
 
 // What one cell's evaluation needs, shared by all cells.
@@ -237,7 +219,9 @@ void measureAgainstPiece(const WetPiece& piece, const Eigen::AlignedBox3f& piece
   const int n = int(scratch.film.size());
   // Branch-free (bitwise & of the comparisons, selects for the clamp) and free of aliasing (the
   // arrays are distinct; GCC cannot prove it through the vectors) so that it vectorises.
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC ivdep
+#endif
   for (int k = 0; k < n; ++k) {
     const int inside = int(loX <= x[k]) & int(loY <= y[k]) & int(loZ <= z[k]) & int(x[k] <= hiX) & int(y[k] <= hiY) &
                        int(z[k] <= hiZ);
@@ -258,9 +242,9 @@ void measureAgainstPiece(const WetPiece& piece, const Eigen::AlignedBox3f& piece
 // stopping once no vertex of the cell has less film than the next piece's peak.
 void filmOfCell(const FilmInputs& in, std::span<const uint32_t> piecesInCell, const VerticesByCell& vertices,
                 size_t cell, const std::vector<float>& edgeFactorOfVertex, CellScratch& scratch, std::vector<float>& films) {
-  const size_t begin = vertices.first[cell], n = vertices.first[cell + 1] - begin;
+  const size_t begin = vertices.byCell.first[cell], n = vertices.byCell.first[cell + 1] - begin;
   scratch.resize(n);
-  for (size_t k = 0; k < n; ++k) scratch.edgeFactor[k] = edgeFactorOfVertex[vertices.vertex[begin + k]];
+  for (size_t k = 0; k < n; ++k) scratch.edgeFactor[k] = edgeFactorOfVertex[vertices.byCell.items[begin + k]];
   float leastFilm = 0.0f;
   for (const uint32_t i : piecesInCell) {
     const WetPiece& piece = in.pieces[i];
@@ -276,7 +260,7 @@ void filmOfCell(const FilmInputs& in, std::span<const uint32_t> piecesInCell, co
       leastFilm = std::min(leastFilm, scratch.film[k]);
     }
   }
-  for (size_t k = 0; k < n; ++k) films[vertices.vertex[begin + k]] = scratch.film[k];
+  for (size_t k = 0; k < n; ++k) films[vertices.byCell.items[begin + k]] = scratch.film[k];
 }
 
 // The piece's box grown by its reach on every side.
@@ -361,7 +345,7 @@ void addLiquidTearFilm(const ShotLiquidTear& tear, const FlowPath& course, const
   tbb::parallel_for(tbb::blocked_range<size_t>(0, grid.cellCount(), 256), [&](const tbb::blocked_range<size_t>& r) {
     CellScratch scratch;
     for (size_t c = r.begin(); c != r.end(); ++c)
-      if (vertices.first[c + 1] > vertices.first[c] && !grid.piecesIn(c).empty())
+      if (!vertices.byCell.in(c).empty() && !grid.piecesIn(c).empty())
         filmOfCell(inputs, grid.piecesIn(c), vertices, c, edgeFactor, scratch, films);
   });
   raiseWetness(films, wetness);
