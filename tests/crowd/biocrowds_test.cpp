@@ -13,7 +13,7 @@
 #include "lacrima/crowd/biocrowds.hpp"
 
 namespace lacrima::crowd {
-namespace {
+namespace biocrowds_test {
 
 GroundRect rect(double x0, double z0, double x1, double z1) { return {Vec2d(x0, z0), Vec2d(x1, z1)}; }
 
@@ -190,5 +190,5 @@ TEST(BioCrowds, AgentsWalkAroundAnObstacleNeverIntoIt) {
   for (const Agent& a : crowd.agents()) EXPECT_TRUE(a.arrived) << a.position.transpose();
 }
 
-}  // namespace
+}  // namespace biocrowds_test
 }  // namespace lacrima::crowd

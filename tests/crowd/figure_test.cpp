@@ -10,7 +10,7 @@
 #include "lacrima/crowd/figure.hpp"
 
 namespace lacrima::crowd {
-namespace {
+namespace figure_test {
 
 std::pair<float, float> heightRange(const TriangleMesh& mesh) {
   float lo = 1e9f, hi = -1e9f;
@@ -101,5 +101,5 @@ TEST(Figure, ACarriedFigureTurnsAtTheWatersSpeedPlusItsOwnRate) {
   EXPECT_LT((animator.poses()[0].orientation - Eigen::Matrix3d::Identity()).norm(), 1e-12);
 }
 
-}  // namespace
+}  // namespace figure_test
 }  // namespace lacrima::crowd

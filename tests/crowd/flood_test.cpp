@@ -12,7 +12,7 @@
 #include "lacrima/crowd/water_speed_field.hpp"
 
 namespace lacrima::crowd {
-namespace {
+namespace flood_test {
 
 // A river across a field from the origin to `fieldMax`, as long as the field, from z = `nearBank`,
 // `width` wide and 1 m deep, flowing at 1.5 m/s towards -x.
@@ -138,5 +138,5 @@ TEST(Flood, TheSameRunWithOneThreadOrAll) {
   EXPECT_TRUE(one.second == all.second);
 }
 
-}  // namespace
+}  // namespace flood_test
 }  // namespace lacrima::crowd

@@ -13,7 +13,7 @@
 #include "lacrima/crowd/fluid_coupling.hpp"
 
 namespace lacrima::crowd {
-namespace {
+namespace fluid_coupling_test {
 
 TEST(FluidCoupling, ContactsAreTheParticlesWithinBothRadiiOnTheGround) {
   std::vector<Vec3d> positions, velocities;
@@ -175,5 +175,5 @@ TEST(FluidCoupling, CrossingARiverTakesLongerForVulnerableAgentsAndFasterStreams
     }
 }
 
-}  // namespace
+}  // namespace fluid_coupling_test
 }  // namespace lacrima::crowd

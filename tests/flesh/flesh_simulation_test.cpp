@@ -14,7 +14,7 @@
 #include <random>
 
 namespace lacrima::flesh {
-namespace {
+namespace flesh_simulation_test {
 
 const LameParameters kLame = LameParameters::fromYoung(3000.0, 0.4);
 
@@ -262,5 +262,5 @@ TEST(FleshSimulation, BadArgumentsAreRefused) {
   EXPECT_THROW(sim.setState({}, {}), std::invalid_argument);
 }
 
-}  // namespace
+}  // namespace flesh_simulation_test
 }  // namespace lacrima::flesh

@@ -11,7 +11,7 @@
 #include "support/test_directory.hpp"
 
 namespace lacrima::flesh {
-namespace {
+namespace flesh_state_cache_test {
 
 namespace fs = std::filesystem;
 
@@ -76,5 +76,5 @@ TEST(FleshStateCache, ChainKeysChangeWithAnyDrivingValueAndTheirOrder) {
   EXPECT_EQ(chainFleshStateKey(chainFleshStateKey(1, a), b), chainFleshStateKey(chainFleshStateKey(1, a), b));
 }
 
-}  // namespace
+}  // namespace flesh_state_cache_test
 }  // namespace lacrima::flesh

@@ -10,7 +10,7 @@
 #include <fstream>
 
 namespace lacrima::flesh {
-namespace {
+namespace flesh_volume_cache_test {
 
 namespace fs = std::filesystem;
 
@@ -109,5 +109,5 @@ TEST(FleshVolumeCache, TruncatedOrCorruptFileIsNotTrusted) {
   expectSameVolume(built, cachedFleshVolume(patch, settings, "/proc/lacrima-no-such-dir"));
 }
 
-}  // namespace
+}  // namespace flesh_volume_cache_test
 }  // namespace lacrima::flesh

@@ -12,7 +12,7 @@
 #include <random>
 
 namespace lacrima::flesh {
-namespace {
+namespace flesh_volume_test {
 
 struct SkinMesh {
   std::vector<Vec3d> positions, normals;
@@ -209,5 +209,5 @@ TEST(FleshVolume, PointsOutsideTheVolumeEmbedOnlyWithinTheSlack) {
   EXPECT_EQ(embedPoints(volume.mesh, points)[0].tet, -1) << "no slack: not inside";
 }
 
-}  // namespace
+}  // namespace flesh_volume_test
 }  // namespace lacrima::flesh

@@ -9,7 +9,7 @@
 #include <random>
 
 namespace lacrima::flesh {
-namespace {
+namespace fvm_elasticity_test {
 
 const LameParameters kLame = LameParameters::fromYoung(5000.0, 0.4);
 constexpr FleshMaterial kMaterials[] = {FleshMaterial::StVenantKirchhoff, FleshMaterial::FixedCorotated};
@@ -165,5 +165,5 @@ TEST(FvmElasticity, MassesAddUpToTheBlocksMass) {
   EXPECT_EQ(findTetMeshDefect(mesh), "");
 }
 
-}  // namespace
+}  // namespace fvm_elasticity_test
 }  // namespace lacrima::flesh

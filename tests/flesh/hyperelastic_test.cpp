@@ -7,7 +7,7 @@
 #include <Eigen/Geometry>
 
 namespace lacrima::flesh {
-namespace {
+namespace hyperelastic_test {
 
 const LameParameters kLame = LameParameters::fromYoung(5000.0, 0.45);
 constexpr FleshMaterial kMaterials[] = {FleshMaterial::StVenantKirchhoff, FleshMaterial::FixedCorotated};
@@ -181,5 +181,5 @@ TEST(Hyperelastic, StressDifferentialIsPositiveSemiDefinite) {
   }
 }
 
-}  // namespace
+}  // namespace hyperelastic_test
 }  // namespace lacrima::flesh

@@ -18,7 +18,7 @@
 #include "lacrima/scenes/shot.hpp"
 
 namespace lacrima::fuzz {
-namespace {
+namespace corpus_replay_test {
 
 const std::filesystem::path kFuzzDir = LACRIMA_SOURCE_DIR "/tests/fuzz";
 const std::filesystem::path kDataDir = LACRIMA_SOURCE_DIR "/tests/data";
@@ -131,5 +131,5 @@ TEST(FuzzSeeds, SeedTracksLoadTheirChannels) {
   }
 }
 
-}  // namespace
+}  // namespace corpus_replay_test
 }  // namespace lacrima::fuzz

@@ -10,7 +10,7 @@
 #include "lacrima/scenes/shot.hpp"
 
 namespace lacrima::fuzz {
-namespace {
+namespace fuzz_findings_test {
 
 // A misspelt "fov" (the only field of view of a look-at camera) is reported as an unknown key with
 // the suggestion, and the shot does not load. It used to crash: the missing 'fov' was not
@@ -59,5 +59,5 @@ TEST(FuzzFindings, NumberTooLargeForADoubleIsBadInput) {
   }
 }
 
-}  // namespace
+}  // namespace fuzz_findings_test
 }  // namespace lacrima::fuzz

@@ -12,7 +12,7 @@
 #endif
 
 namespace lacrima {
-namespace {
+namespace allocator_tuning_test {
 
 #if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
 constexpr bool kOwnAllocator = true;
@@ -75,5 +75,5 @@ TEST(AllocatorTuning, PromptReturnMmapsBigBlocksAgain) {
 #endif
 }
 
-}  // namespace
+}  // namespace allocator_tuning_test
 }  // namespace lacrima

@@ -5,7 +5,7 @@
 #include "lacrima/geometry/error.hpp"
 
 namespace lacrima {
-namespace {
+namespace animation_curve_test {
 
 const std::vector<ScalarKey> kKeys = {{0.0f, 1.0f}, {1.0f, 3.0f}, {3.0f, 2.0f}, {4.0f, 5.0f}};
 constexpr Interpolation kAll[] = {Interpolation::Step, Interpolation::Linear, Interpolation::CatmullRom,
@@ -98,5 +98,5 @@ TEST(AnimationCurve, RejectsKeysNotStrictlyIncreasingAndNonFiniteInput) {
   }
 }
 
-}  // namespace
+}  // namespace animation_curve_test
 }  // namespace lacrima

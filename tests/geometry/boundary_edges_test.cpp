@@ -6,7 +6,7 @@
 #include "lacrima/geometry/shapes.hpp"
 
 namespace lacrima {
-namespace {
+namespace boundary_edges_test {
 
 TEST(BoundaryEdges, AClosedEllipsoidHasNone) {
   EXPECT_EQ(countBoundaryEdges(makeEllipsoid(Vec3::Zero(), Mat3::Identity() * 0.01f, 8, 16)), 0u);
@@ -34,5 +34,5 @@ TEST(BoundaryEdges, RemovingATriangleOpensThreeEdges) {
   EXPECT_EQ(countBoundaryEdges(mesh), 3u);
 }
 
-}  // namespace
+}  // namespace boundary_edges_test
 }  // namespace lacrima

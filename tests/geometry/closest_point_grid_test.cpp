@@ -10,7 +10,7 @@
 #include "lacrima/geometry/shapes.hpp"
 
 namespace lacrima {
-namespace {
+namespace closest_point_grid_test {
 
 void expectSameAsBruteForce(const TriangleMesh& mesh, const std::vector<Vec3>& queries) {
   const ClosestPointGrid grid(mesh);
@@ -59,5 +59,5 @@ TEST(ClosestPointGrid, DegenerateTrianglesNonFiniteQueriesAndEmptyMeshes) {
   EXPECT_THROW(ClosestPointGrid(TriangleMesh{}), InputError);
 }
 
-}  // namespace
+}  // namespace closest_point_grid_test
 }  // namespace lacrima

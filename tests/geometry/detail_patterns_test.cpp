@@ -11,7 +11,7 @@
 #include "lacrima/geometry/error.hpp"
 
 namespace lacrima {
-namespace {
+namespace detail_patterns_test {
 
 // Expected values below were computed by hand (double precision) from the paper's formulas.
 
@@ -370,5 +370,5 @@ TEST(ApplyDetailPattern, RejectsBadArguments) {
   EXPECT_THROW(applyDetailPattern(g.mesh, g.normals, region, app), InputError);
 }
 
-}  // namespace
+}  // namespace detail_patterns_test
 }  // namespace lacrima

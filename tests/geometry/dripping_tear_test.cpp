@@ -13,7 +13,7 @@
 #include "lacrima/geometry/mesh.hpp"
 
 namespace lacrima {
-namespace {
+namespace dripping_tear_test {
 
 constexpr int kRings = 24;  // headRings = 8
 constexpr int kSegments = 16;
@@ -310,5 +310,5 @@ TEST(DrippingTear, RejectsBadInput) {
   EXPECT_THROW(placeDrippingTear(mesh, Vec3(NAN, 0, 0), Vec3(0, -1, 0)), InputError);
 }
 
-}  // namespace
+}  // namespace dripping_tear_test
 }  // namespace lacrima

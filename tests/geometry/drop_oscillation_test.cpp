@@ -14,7 +14,7 @@
 #include "lacrima/geometry/tear_liquid.hpp"
 
 namespace lacrima {
-namespace {
+namespace drop_oscillation_test {
 
 constexpr double kPiD = std::numbers::pi;
 
@@ -195,5 +195,5 @@ TEST(DropOscillation, RejectsBadArguments) {
   EXPECT_THROW(makeFallingDropMesh(Vec3d::Zero(), Vec3d::Zero(), SpheroidAxes{1e-3, 1e-3}), InputError);
 }
 
-}  // namespace
+}  // namespace drop_oscillation_test
 }  // namespace lacrima

@@ -12,7 +12,7 @@
 #include "lacrima/geometry/gltf_asset.hpp"
 
 namespace lacrima {
-namespace {
+namespace eye_test {
 
 class IctEye : public ::testing::Test {
  protected:
@@ -150,5 +150,5 @@ TEST_F(IctEye, RejectsALimbusWithoutCorneaAPupilLargerThanTheIrisAndAnIrisTooDee
   EXPECT_EQ(eyeErrorOf(shell, shallow), "right eye: the iris would cut through the cornea; increase irisDepth (0.5 mm)");
 }
 
-}  // namespace
+}  // namespace eye_test
 }  // namespace lacrima

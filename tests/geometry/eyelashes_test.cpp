@@ -13,7 +13,7 @@
 #include "lacrima/geometry/surface_point.hpp"
 
 namespace lacrima {
-namespace {
+namespace eyelashes_test {
 
 class IctLashes : public ::testing::Test {
  protected:
@@ -151,5 +151,5 @@ TEST_F(IctLashes, CardsWithoutUvsOrGridsAreRejected) {
   }
 }
 
-}  // namespace
+}  // namespace eyelashes_test
 }  // namespace lacrima

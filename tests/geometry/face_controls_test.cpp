@@ -8,7 +8,7 @@
 #include "lacrima/geometry/face_controls.hpp"
 
 namespace lacrima {
-namespace {
+namespace face_controls_test {
 
 const std::vector<std::string> kTargets = {"jawOpen", "mouthSmile_L", "mouthSmile_R", "eyeBlink_L"};
 const std::vector<std::string> kEyes = {"left", "right"};
@@ -98,5 +98,5 @@ TEST(FaceControls, DriveTheRig) {
   EXPECT_NE(rig.evaluatePrimitive(2, pose).positions, asset.primitives[2].mesh.positions);  // the iris turned
 }
 
-}  // namespace
+}  // namespace face_controls_test
 }  // namespace lacrima

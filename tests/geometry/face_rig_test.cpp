@@ -10,7 +10,7 @@
 #include "lacrima/geometry/face_rig.hpp"
 
 namespace lacrima {
-namespace {
+namespace face_rig_test {
 
 void expectBitwiseEqual(const TriangleMesh& a, const TriangleMesh& b) {
   ASSERT_EQ(a.positions.size(), b.positions.size());
@@ -283,5 +283,5 @@ TEST_F(IctFaceRig, JawRotationOpensTheMouthAndKeepsTheForeheadStill) {
   EXPECT_TRUE(findMeshDefect(posed).empty());
 }
 
-}  // namespace
+}  // namespace face_rig_test
 }  // namespace lacrima

@@ -10,7 +10,7 @@
 #include "lacrima/geometry/film_evaporation.hpp"
 
 namespace lacrima {
-namespace {
+namespace film_evaporation_test {
 
 TEST(FilmEvaporation, SaturationVapourPressureMatchesTheSteamTables) {
   // Buck 1981 is fitted to the Wexler/Goff-Gratch values; within 0.1 % over -20 to 50 degrees C.
@@ -58,5 +58,5 @@ TEST(FilmEvaporation, RejectsBadAirWithAMessageNamingTheField) {
   EXPECT_EQ(message({33.0, 22.0, 0.5}, 0.0), "film evaporation: the film's width must be finite and positive, got 0");
 }
 
-}  // namespace
+}  // namespace film_evaporation_test
 }  // namespace lacrima

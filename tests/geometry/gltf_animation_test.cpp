@@ -13,7 +13,7 @@
 #include "lacrima/geometry/gltf_asset.hpp"
 
 namespace lacrima {
-namespace {
+namespace gltf_animation_test {
 
 using nlohmann::json;
 
@@ -345,5 +345,5 @@ TEST(GltfAnimationInvalid, ZeroQuaternion) {
   expectLoadError(file, "animation 0 ('blink'), channel 0 (sampler 0) output: the rotation of key 1 is the zero quaternion");
 }
 
-}  // namespace
+}  // namespace gltf_animation_test
 }  // namespace lacrima

@@ -12,7 +12,7 @@
 #include "lacrima/geometry/gltf_asset.hpp"
 
 namespace lacrima {
-namespace {
+namespace gltf_corrupt_test {
 
 using nlohmann::json;
 
@@ -212,5 +212,5 @@ TEST(GltfCorrupt, RandomEditsOfASmallFileNeverCrash) {
   std::printf("[ info     ] random edits: %d loaded, %d rejected with InputError\n", loaded, rejected);
 }
 
-}  // namespace
+}  // namespace gltf_corrupt_test
 }  // namespace lacrima

@@ -11,7 +11,7 @@
 #include "lacrima/geometry/gltf_asset.hpp"
 
 namespace lacrima {
-namespace {
+namespace gltf_face_test {
 
 using nlohmann::json;
 
@@ -297,5 +297,5 @@ TEST_F(IctFace, DescriptionListsPartsTargetsAndBounds) {
     EXPECT_LE(line.size(), 110u) << line;
 }
 
-}  // namespace
+}  // namespace gltf_face_test
 }  // namespace lacrima

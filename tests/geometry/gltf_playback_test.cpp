@@ -13,7 +13,7 @@
 #include "lacrima/geometry/gltf_asset.hpp"
 
 namespace lacrima {
-namespace {
+namespace gltf_playback_test {
 
 const std::vector<float> kTriangle = {0, 0, 0, 1, 0, 0, 0, 1, 0};
 
@@ -124,5 +124,5 @@ TEST(GltfPlayback, WeightsChannelsMapToAssetTargetIndicesAndTheLastChannelWins) 
   EXPECT_THROW(sampleGltfAnimation(asset, asset.animations[0], std::nan("")), InputError);
 }
 
-}  // namespace
+}  // namespace gltf_playback_test
 }  // namespace lacrima

@@ -12,7 +12,7 @@
 #include "lacrima/geometry/gltf_asset.hpp"
 
 namespace lacrima {
-namespace {
+namespace gltf_skin_test {
 
 std::filesystem::path writeStrip(const test::SkinnedStripOptions& options, const std::string& name) {
   test::GltfBuilder b = test::skinnedStrip(options);
@@ -204,5 +204,5 @@ TEST(GltfSkin, SecondInfluenceSetIsWarnedAbout) {
                                "joint influences (JOINTS_0 / WEIGHTS_0) are used");
 }
 
-}  // namespace
+}  // namespace gltf_skin_test
 }  // namespace lacrima

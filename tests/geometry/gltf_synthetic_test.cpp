@@ -7,7 +7,7 @@
 #include "lacrima/geometry/gltf_asset.hpp"
 
 namespace lacrima {
-namespace {
+namespace gltf_synthetic_test {
 
 using nlohmann::json;
 
@@ -192,5 +192,5 @@ TEST(GltfSynthetic, AsciiGltfWithDataUriLoads) {
   EXPECT_EQ(asset.primitives[0].targets[0].vertices, std::vector<uint32_t>{2});
 }
 
-}  // namespace
+}  // namespace gltf_synthetic_test
 }  // namespace lacrima

@@ -9,7 +9,7 @@
 #include <random>
 
 namespace lacrima {
-namespace {
+namespace gradient_noise_test {
 
 Vec3 randomPoint(std::mt19937& rng, float extent) {
   std::uniform_real_distribution<float> u(-extent, extent);
@@ -105,5 +105,5 @@ TEST(FractalGradientNoise, OneOctaveIsTheNoiseAndMoreOctavesAddDetailWithinRange
   EXPECT_GT(relativeThree, 1.3 * relativeOne);
 }
 
-}  // namespace
+}  // namespace gradient_noise_test
 }  // namespace lacrima

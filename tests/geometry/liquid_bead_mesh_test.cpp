@@ -11,7 +11,7 @@
 #include "lacrima/geometry/liquid_bead_mesh.hpp"
 
 namespace lacrima {
-namespace {
+namespace liquid_bead_mesh_test {
 
 using test::heightFieldMesh;
 
@@ -141,5 +141,5 @@ TEST(LiquidBeadMesh, RejectsBadPlacements) {
   EXPECT_THROW(makeLiquidBeadMesh(skin, p), InputError);
 }
 
-}  // namespace
+}  // namespace liquid_bead_mesh_test
 }  // namespace lacrima

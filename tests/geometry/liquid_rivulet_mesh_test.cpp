@@ -10,7 +10,7 @@
 #include "lacrima/geometry/liquid_rivulet_mesh.hpp"
 
 namespace lacrima {
-namespace {
+namespace liquid_rivulet_mesh_test {
 
 // Stations every `spacing` down -y on the plane z = 0.
 std::vector<LiquidRivuletStation> straightStations(int count, float spacing, float halfWidth, float height) {
@@ -110,5 +110,5 @@ TEST(LiquidRivuletMesh, RejectsBadStationsAndResolution) {
   EXPECT_NO_THROW(makeLiquidRivuletMesh(good, -2e-5f));
 }
 
-}  // namespace
+}  // namespace liquid_rivulet_mesh_test
 }  // namespace lacrima

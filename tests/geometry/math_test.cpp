@@ -10,7 +10,7 @@
 #include "lacrima/geometry/sampler.hpp"
 
 namespace lacrima {
-namespace {
+namespace math_test {
 
 std::vector<Vec3> testNormals() {
   std::vector<Vec3> normals = {Vec3(0, 0, 1),  Vec3(0, 0, -1), Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(0, 1, 0),
@@ -108,5 +108,5 @@ TEST(PixelSampler, UniformAcrossSampleIndices) {
   expectUniformMean(values);
 }
 
-}  // namespace
+}  // namespace math_test
 }  // namespace lacrima

@@ -11,7 +11,7 @@
 #include "support/swept_volume.hpp"
 
 namespace lacrima {
-namespace {
+namespace meniscus_swelling_test {
 
 // A strip 1.2 mm wide bent along an arc of radius 12 mm (like a lid margin), 4 cm long,
 // counter-clockwise seen from +z with smooth normals, facing +z.
@@ -120,5 +120,5 @@ TEST(MeniscusSwelling, RejectsBadArguments) {
   EXPECT_THROW(swellMeniscus(strip, meniscusFalloffWeights(strip, kSource, 0.008f), -1e-9), InputError);
 }
 
-}  // namespace
+}  // namespace meniscus_swelling_test
 }  // namespace lacrima

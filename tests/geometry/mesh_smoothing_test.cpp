@@ -10,7 +10,7 @@
 #include "lacrima/geometry/mesh_smoothing.hpp"
 
 namespace lacrima {
-namespace {
+namespace mesh_smoothing_test {
 
 using test::heightFieldMesh;
 
@@ -115,11 +115,11 @@ TEST(TaubinSmoothing, RejectsBadOptionsAndMaps) {
   EXPECT_THROW(taubinSmoothed(mesh, identityWeld(mesh), TaubinOptions{-1, 0.5f, -0.53f}), InputError);
 }
 
-}  // namespace
+}  // namespace mesh_smoothing_test
 }  // namespace lacrima
 
 namespace lacrima {
-namespace {
+namespace mesh_smoothing_test {
 
 // The smoother set up once (a liquid tear smooths every frame's deformation with it) is the same
 // filter: bitwise taubinSmoothed on the mesh's own positions, and linear (smoothing a sum is the
@@ -144,5 +144,5 @@ TEST(TaubinSmoother, IsTaubinSmoothedAndLinear) {
   EXPECT_THROW(smoother.smoothed(std::vector<Vec3>(3, Vec3::Zero())), InputError);
 }
 
-}  // namespace
+}  // namespace mesh_smoothing_test
 }  // namespace lacrima

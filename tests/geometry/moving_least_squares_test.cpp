@@ -14,7 +14,7 @@
 #include "lacrima/geometry/error.hpp"
 
 namespace lacrima {
-namespace {
+namespace moving_least_squares_test {
 
 // A polynomial in up to 3 variables as a list of (exponents, coefficient), built by the test
 // independently of the library's monomial enumeration.
@@ -393,5 +393,5 @@ TEST(MovingLeastSquares, RejectsBadInputWithExactMessages) {
             "points, got 0");
 }
 
-}  // namespace
+}  // namespace moving_least_squares_test
 }  // namespace lacrima

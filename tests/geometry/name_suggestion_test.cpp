@@ -4,7 +4,7 @@
 #include "lacrima/geometry/name_suggestion.hpp"
 
 namespace lacrima {
-namespace {
+namespace name_suggestion_test {
 
 TEST(Levenshtein, KnownDistances) {
   EXPECT_EQ(levenshteinDistance("kitten", "sitting"), 3u);  // the textbook example
@@ -25,5 +25,5 @@ TEST(ClosestName, PrefersCaseOnlyDifferencesThenFewestEdits) {
   EXPECT_EQ(unknownNameMessage("blendshape", "jawopen", names), "unknown blendshape 'jawopen' (did you mean 'jawOpen'?)");
 }
 
-}  // namespace
+}  // namespace name_suggestion_test
 }  // namespace lacrima

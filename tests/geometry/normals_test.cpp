@@ -5,7 +5,7 @@
 #include "lacrima/geometry/shapes.hpp"
 
 namespace lacrima {
-namespace {
+namespace normals_test {
 
 Mat3 ellipsoidAxes() {
   // Semi-axes 2, 1, 0.5 along a rotated frame, so that no axis is aligned with x, y or z.
@@ -199,5 +199,5 @@ TEST(RenewSmoothNormalsAround, RejectsMissingNormalsFlagsAndBadIndices) {
   EXPECT_THROW(renewSmoothNormalsAround(mesh, std::vector<bool>(4, true)), std::invalid_argument);
 }
 
-}  // namespace
+}  // namespace normals_test
 }  // namespace lacrima

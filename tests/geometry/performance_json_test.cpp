@@ -9,7 +9,7 @@
 #include "lacrima/geometry/performance_track.hpp"
 
 namespace lacrima {
-namespace {
+namespace performance_json_test {
 
 const std::vector<std::string> kNames = {"jawOpen", "eyeBlink_L", "eyeBlink_R"};
 
@@ -60,5 +60,5 @@ TEST(PerformanceJson, ErrorsNameTheFileAndJsonPointer) {
   EXPECT_NE(errorOf(R"({"fps": 30, "weights": )").find(": JSON syntax error at byte"), std::string::npos);
 }
 
-}  // namespace
+}  // namespace performance_json_test
 }  // namespace lacrima

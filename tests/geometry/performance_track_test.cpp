@@ -10,7 +10,7 @@
 #include "lacrima/geometry/performance_track.hpp"
 
 namespace lacrima {
-namespace {
+namespace performance_track_test {
 
 const std::vector<std::string> kNames = {"jawOpen", "eyeBlink_L", "eyeBlink_R"};
 
@@ -118,5 +118,5 @@ TEST(AdaptiveFilter, ReducesTheVarianceOfJitterOnAStillFace) {
   EXPECT_THROW(adaptiveTemporalFilter(frames, {-1, 20.0f}), InputError);
 }
 
-}  // namespace
+}  // namespace performance_track_test
 }  // namespace lacrima

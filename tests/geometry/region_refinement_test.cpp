@@ -9,7 +9,7 @@
 #include "lacrima/geometry/region_refinement.hpp"
 
 namespace lacrima {
-namespace {
+namespace region_refinement_test {
 
 // The regular icosahedron on the unit sphere, counter-clockwise from outside.
 TriangleMesh icosahedron() {
@@ -436,5 +436,5 @@ TEST(RegionRefinement, ZeroLevelsOrAnEmptySelectionChangeNothingAndBadSelections
                std::invalid_argument);
 }
 
-}  // namespace
+}  // namespace region_refinement_test
 }  // namespace lacrima

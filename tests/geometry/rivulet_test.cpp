@@ -13,7 +13,7 @@
 #include "lacrima/geometry/tear_liquid.hpp"
 
 namespace lacrima {
-namespace {
+namespace rivulet_test {
 
 constexpr double kPiD = std::numbers::pi;
 constexpr double kUl = kMicrolitre;
@@ -304,5 +304,5 @@ TEST(RivuletSimulation, RejectsBadRivuletParameters) {
   EXPECT_THROW(TearLiquidSimulation{input}, InputError);
 }
 
-}  // namespace
+}  // namespace rivulet_test
 }  // namespace lacrima

@@ -12,7 +12,7 @@
 #include "lacrima/geometry/sessile_drop.hpp"
 
 namespace lacrima {
-namespace {
+namespace sessile_drop_test {
 
 constexpr double kPiD = std::numbers::pi;
 double deg(double degrees) { return degrees * kPiD / 180.0; }
@@ -427,5 +427,5 @@ TEST(HangingDrop, HarkinsBrownCorrection) {
   EXPECT_THROW(hangingDropMaxVolume(tears, 10e-3, DetachmentCorrection::HarkinsBrown), InputError);
 }
 
-}  // namespace
+}  // namespace sessile_drop_test
 }  // namespace lacrima

@@ -9,7 +9,7 @@
 #include "lacrima/geometry/shapes.hpp"
 
 namespace lacrima {
-namespace {
+namespace shapes_test {
 
 // Independent of findClosedMeshDefect: counts directed edges by hand.
 void expectClosedAndOriented(const TriangleMesh& mesh) {
@@ -161,5 +161,5 @@ TEST(MeshChecks, FindClosedMeshDefectSeesOpenAndFlippedMeshes) {
   EXPECT_NE(findClosedMeshDefect(holed).find("open"), std::string::npos);
 }
 
-}  // namespace
+}  // namespace shapes_test
 }  // namespace lacrima

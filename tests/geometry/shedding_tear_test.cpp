@@ -14,7 +14,7 @@
 #include "height_field_mesh.hpp"
 
 namespace lacrima {
-namespace {
+namespace shedding_tear_test {
 
 constexpr int kGrid = 24;          // quads per side of the skin patch
 constexpr float kHalf = 0.02f;     // the patch spans [-2 cm, 2 cm]^2, faces 1.67 mm > strip spacing
@@ -258,5 +258,5 @@ TEST(SheddingTear, RejectsBadInput) {
   EXPECT_THROW(buildSheddingTear(rest, path, SheddingTearParams{}, std::nanf("")), InputError);
 }
 
-}  // namespace
+}  // namespace shedding_tear_test
 }  // namespace lacrima

@@ -13,7 +13,7 @@
 #include "lacrima/geometry/sobol.hpp"
 
 namespace lacrima {
-namespace {
+namespace sobol_test {
 
 using Point = std::pair<double, double>;
 
@@ -275,5 +275,5 @@ TEST(PixelSamplerSobol, IndependentStreamDoesNotMoveTheSamplersDimension) {
   EXPECT_NE(sampler.independentStream(8).get1D(), a);
 }
 
-}  // namespace
+}  // namespace sobol_test
 }  // namespace lacrima

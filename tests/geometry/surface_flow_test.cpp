@@ -20,7 +20,7 @@
 #include "lacrima/geometry/shapes.hpp"
 
 namespace lacrima {
-namespace {
+namespace surface_flow_test {
 
 const Vec3 kDown(0.0f, -1.0f, 0.0f);
 
@@ -591,5 +591,5 @@ TEST(FlowPathIctFace, PathsFromManyStartsDescendAndEndCleanly) {
               flats, pieces, seamStops);
 }
 
-}  // namespace
+}  // namespace surface_flow_test
 }  // namespace lacrima

@@ -4,7 +4,7 @@
 #include "lacrima/geometry/surface_point.hpp"
 
 namespace lacrima {
-namespace {
+namespace surface_point_test {
 
 // Two triangles over the unit square, uv = (x, y); vertex 4 is unused.
 TriangleMesh unitSquare() {
@@ -50,5 +50,5 @@ TEST(SurfacePointAt, UvOutsideOrWithoutCoordinatesGivesNothing) {
   EXPECT_FALSE(surfacePointAtUv(mesh, Vec2(0.5f, 0.5f)));
 }
 
-}  // namespace
+}  // namespace surface_point_test
 }  // namespace lacrima

@@ -13,7 +13,7 @@
 #include "height_field_mesh.hpp"
 
 namespace lacrima {
-namespace {
+namespace surface_region_test {
 
 constexpr int kGrid = 60;       // quads per side
 constexpr float kHalf = 0.03f;  // the sheet spans [-3 cm, 3 cm]^2, 1 mm quads
@@ -159,5 +159,5 @@ TEST(SurfaceRegion, SheddingTearStripOnTheRegionIsBitwiseTheFullMeshStrip) {
   EXPECT_GT(differing, 0u);
 }
 
-}  // namespace
+}  // namespace surface_region_test
 }  // namespace lacrima

@@ -14,7 +14,7 @@
 #include "lacrima/geometry/tear_liquid.hpp"
 
 namespace lacrima {
-namespace {
+namespace tear_liquid_pinning_test {
 
 constexpr double kPiD = std::numbers::pi;
 constexpr double kUl = kMicrolitre;
@@ -144,5 +144,5 @@ TEST(TearLiquidPinning, RejectsAFactorThatIsNotPositiveAndFinite) {
   }
 }
 
-}  // namespace
+}  // namespace tear_liquid_pinning_test
 }  // namespace lacrima

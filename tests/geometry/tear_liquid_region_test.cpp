@@ -11,7 +11,7 @@
 #include "lacrima/geometry/tear_liquid.hpp"
 
 namespace lacrima {
-namespace {
+namespace tear_liquid_region_test {
 
 constexpr double kPiD = std::numbers::pi;
 constexpr double kUl = kMicrolitre;
@@ -168,5 +168,5 @@ TEST(TearLiquidRegion, ASampleNamingAMissingRegionIsRejected) {
   }
 }
 
-}  // namespace
+}  // namespace tear_liquid_region_test
 }  // namespace lacrima

@@ -13,7 +13,7 @@
 #include "lacrima/geometry/tear_liquid.hpp"
 
 namespace lacrima {
-namespace {
+namespace tear_liquid_reroute_test {
 
 constexpr double kUl = kMicrolitre;
 
@@ -159,5 +159,5 @@ TEST(FlowPathTransfer, OnAPlaneTheImageIsTheProjectionOntoTheNewCourse) {
   EXPECT_THROW(FlowPathTransfer(FlowPath{}, down, sheet), InputError);
 }
 
-}  // namespace
+}  // namespace tear_liquid_reroute_test
 }  // namespace lacrima

@@ -11,7 +11,7 @@
 #include "lacrima/geometry/tear_liquid.hpp"
 
 namespace lacrima {
-namespace {
+namespace tear_liquid_test {
 
 constexpr double kPiD = std::numbers::pi;
 constexpr double kUl = kMicrolitre;
@@ -394,5 +394,5 @@ TEST(TearLiquid, RejectsBadInputWithAMessageNamingTheField) {
   EXPECT_THROW(TearLiquidSimulation{input}, InputError);
 }
 
-}  // namespace
+}  // namespace tear_liquid_test
 }  // namespace lacrima

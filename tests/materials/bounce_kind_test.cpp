@@ -10,7 +10,7 @@
 #include "test_support.hpp"
 
 namespace lacrima {
-namespace {
+namespace bounce_kind_test {
 
 const Vec3 kWo = Vec3(0.3f, 0.2f, 0.9f).normalized();
 
@@ -84,5 +84,5 @@ TEST(BounceKind, DielectricReflectionsAreGlossyTransmissionsAreTransmitted) {
   }
 }
 
-}  // namespace
+}  // namespace bounce_kind_test
 }  // namespace lacrima

@@ -9,7 +9,7 @@
 #include "lacrima/materials/microfacet.hpp"
 
 namespace lacrima {
-namespace {
+namespace bsdf_chi2_test {
 
 struct VndfCase {
   const char* name;
@@ -74,5 +74,5 @@ TEST(VndfChi2, SampleMatchesVisibleNormalDensity) {
   }
 }
 
-}  // namespace
+}  // namespace bsdf_chi2_test
 }  // namespace lacrima

@@ -9,7 +9,7 @@
 #include "lacrima/materials/skin.hpp"
 
 namespace lacrima {
-namespace {
+namespace bsdf_lobes_test {
 
 // Directions spread over the sphere (both hemispheres), deterministic.
 std::vector<Vec3> sphereDirections(int count) {
@@ -76,5 +76,5 @@ TEST(BsdfLobes, EachFamilyPutsItsLightInTheRightKind) {
   EXPECT_TRUE((delta.sum() == 0.0f).all()) << "delta lobes are not evaluated (the integrator classifies their samples)";
 }
 
-}  // namespace
+}  // namespace bsdf_lobes_test
 }  // namespace lacrima

@@ -14,7 +14,7 @@
 #include "lacrima/materials/skin.hpp"
 
 namespace lacrima {
-namespace {
+namespace bsdf_properties_test {
 
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
@@ -361,5 +361,5 @@ TEST(SkinBsdf, OneSidedAndMixtureProbabilityClamped) {
             bsdf.specularProbability(test::directionFromCosPhi(0.9, 0.0)));
 }
 
-}  // namespace
+}  // namespace bsdf_properties_test
 }  // namespace lacrima

@@ -11,7 +11,7 @@
 #include "test_support.hpp"
 
 namespace lacrima {
-namespace {
+namespace chi2_self_test {
 
 TEST(Chi2Math, SurvivalFunctionMatchesTables) {
   // Q(1, x) = exp(-x); 2 dof: exp(-chi2/2).
@@ -74,5 +74,5 @@ TEST(Chi2SelfTest, AcceptsTheRightDensity) {
   EXPECT_TRUE(r.passed) << r.message;
 }
 
-}  // namespace
+}  // namespace chi2_self_test
 }  // namespace lacrima

@@ -12,7 +12,7 @@
 #include "lacrima/materials/diffusion_profile.hpp"
 
 namespace lacrima {
-namespace {
+namespace diffusion_profile_test {
 
 // Integral of f over [a, b] by composite Simpson with n (even) intervals.
 double simpson(const std::function<double(double)>& f, double a, double b, int n) {
@@ -129,5 +129,5 @@ TEST(DiffusionProfile, ChiSquareRejectsAWrongRadiusDistribution) {
   EXPECT_LT(test::chiSquareSurvival(statistic, kBins - 1), 1e-6);
 }
 
-}  // namespace
+}  // namespace diffusion_profile_test
 }  // namespace lacrima

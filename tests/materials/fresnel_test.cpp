@@ -9,7 +9,7 @@
 #include "test_support.hpp"
 
 namespace lacrima {
-namespace {
+namespace fresnel_test {
 
 TEST(Fresnel, NormalIncidenceTearIsAboutTwoPercent) {
   // R0 = ((n - 1) / (n + 1))^2 (Hecht §4.6): 0.0207949 for n = 1.337.
@@ -111,5 +111,5 @@ TEST(Reflect, MirrorsAboutTheNormal) {
   EXPECT_LT((r + w - 2.0f * w.dot(n) * n).norm(), 1e-6f);
 }
 
-}  // namespace
+}  // namespace fresnel_test
 }  // namespace lacrima

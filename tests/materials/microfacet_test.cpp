@@ -9,7 +9,7 @@
 #include "test_support.hpp"
 
 namespace lacrima {
-namespace {
+namespace microfacet_test {
 
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
@@ -102,5 +102,5 @@ TEST(Ggx, SampledVisibleNormalsAreUnitAndUpward) {
   }
 }
 
-}  // namespace
+}  // namespace microfacet_test
 }  // namespace lacrima

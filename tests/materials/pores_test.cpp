@@ -9,7 +9,7 @@
 #include "test_support.hpp"
 
 namespace lacrima {
-namespace {
+namespace pores_test {
 
 constexpr float kScale = 3e-4f;  // 0.3 mm between pores
 constexpr float kDepth = 3e-5f;  // 30 micrometre deep pits
@@ -164,5 +164,5 @@ TEST(Pores, NearbyCellsGiveTheSumOverAll27) {
   EXPECT_GT(inPits, 10000);  // the comparison covers many points inside pits, not only flat skin
 }
 
-}  // namespace
+}  // namespace pores_test
 }  // namespace lacrima

@@ -10,7 +10,7 @@
 #include "test_support.hpp"
 
 namespace lacrima {
-namespace {
+namespace skin_dual_lobe_test {
 
 // Skin v1's f, written out in the order skin v1 evaluated it (Walter 2007 eq. 20 plus the
 // Fresnel-weighted base of skin.hpp), to compare bitwise.
@@ -127,5 +127,5 @@ TEST(SkinDualLobe, PoreHookIsIdentityWithoutPoresAndTiltsWithThem) {
   EXPECT_GT(tilted, 100);
 }
 
-}  // namespace
+}  // namespace skin_dual_lobe_test
 }  // namespace lacrima

@@ -15,7 +15,7 @@
 #include "test_support.hpp"
 
 namespace lacrima {
-namespace {
+namespace skin_relief_test {
 
 constexpr float kScale = 5e-4f;  // 0.5 mm plateaus
 constexpr float kDepth = 1.5e-5f;
@@ -222,5 +222,5 @@ TEST(SkinRelief, SkinWithoutFurrowsTiltsItsNormalExactlyAsThePoresDo) {
   EXPECT_TRUE(SkinBsdf(SkinParams{}).perturbShadingNormal(Vec3(0.1f, 0.2f, 0.3f), n, n) == n);
 }
 
-}  // namespace
+}  // namespace skin_relief_test
 }  // namespace lacrima

@@ -11,7 +11,7 @@
 #include "test_support.hpp"
 
 namespace lacrima {
-namespace {
+namespace subsurface_test {
 
 // The H solver against Chandrasekhar's exact zeroth-moment relation (Radiative Transfer, ch. V,
 // isotropic scattering): integral_0^1 H dmu = (2 / a)(1 - sqrt(1 - a)). (At a = 1 the iteration
@@ -105,5 +105,5 @@ TEST(SubsurfaceExitLobe, SamplesAgreeWithEvalAndIntegrateToOne) {
   }
 }
 
-}  // namespace
+}  // namespace subsurface_test
 }  // namespace lacrima

@@ -6,7 +6,7 @@
 #include "lacrima/materials/texture_values.hpp"
 
 namespace lacrima {
-namespace {
+namespace texture_values_test {
 
 TEST(TextureValues, MapsMultiplyTheirConstants) {
   SkinParams skin;
@@ -39,5 +39,5 @@ TEST(TextureValues, SrgbCurveMatchesItsReferencePoints) {
   EXPECT_NEAR(srgbToLinear(0.04045f), 0.04045f / 12.92f, 1e-7f);
 }
 
-}  // namespace
+}  // namespace texture_values_test
 }  // namespace lacrima

@@ -9,7 +9,7 @@
 #include "lacrima/materials/thin_dielectric.hpp"
 
 namespace lacrima {
-namespace {
+namespace thin_dielectric_test {
 
 Vec3 direction(float cosTheta, bool frontSide) {
   const float sinTheta = std::sqrt(1.0f - cosTheta * cosTheta);
@@ -71,5 +71,5 @@ TEST(ThinDielectric, TintColoursTheTransmissionOnly) {
   EXPECT_NEAR((reflected->f * std::abs(reflected->wi.z()) / reflected->pdf)[2], 1.0f, 1e-5f);
 }
 
-}  // namespace
+}  // namespace thin_dielectric_test
 }  // namespace lacrima

@@ -14,7 +14,7 @@
 #include "test_support.hpp"
 
 namespace lacrima {
-namespace {
+namespace wet_skin_test {
 
 SkinParams poredDualLobeSkin() {
   SkinParams p;
@@ -223,5 +223,5 @@ TEST(WetSkinBsdf, FilmFillsThePores) {
   EXPECT_LT(halfTilt, dryTilt);
 }
 
-}  // namespace
+}  // namespace wet_skin_test
 }  // namespace lacrima

@@ -15,7 +15,7 @@
 #include "support/test_scenes.hpp"
 
 namespace lacrima {
-namespace {
+namespace adaptive_sampling_test {
 
 using test::lookAt;
 
@@ -180,5 +180,5 @@ TEST(AdaptiveSampling, AtEqualTotalSamplesTheErrorIsLowerThanSpreadEvenly) {
   EXPECT_LT(adaptiveError, 0.7 * evenError);
 }
 
-}  // namespace
+}  // namespace adaptive_sampling_test
 }  // namespace lacrima

@@ -8,7 +8,7 @@
 #include "support/test_scenes.hpp"
 
 namespace lacrima {
-namespace {
+namespace analytic_scenes_test {
 
 using test::expectMean;
 using test::lookAt;
@@ -95,5 +95,5 @@ TEST(AnalyticScenes, FloorUnderRectangleLightMatchesFormFactor) {
   expectMean(film, exact, 2e-3 * exact);  // the viewed patch is not a point: 0.2% floor
 }
 
-}  // namespace
+}  // namespace analytic_scenes_test
 }  // namespace lacrima

@@ -11,7 +11,7 @@
 #include "support/test_scenes.hpp"
 
 namespace lacrima {
-namespace {
+namespace bounce_limits_test {
 
 using test::expectMean;
 using test::lookAt;
@@ -130,5 +130,5 @@ TEST(BounceLimits, TransmissionLimitOneStillLetsThePathOut) {
   expectSphereMean(s, renderFrame(s.frame), [](double) { return 1.0; });
 }
 
-}  // namespace
+}  // namespace bounce_limits_test
 }  // namespace lacrima

@@ -18,7 +18,7 @@
 #include "support/test_scenes.hpp"
 
 namespace lacrima {
-namespace {
+namespace caustics_test {
 
 constexpr float kAlbedo = 0.5f;
 constexpr float kDropRadius = 0.01f;
@@ -179,5 +179,5 @@ TEST(Caustics, MeasureEqualErrorTimeRatio) {
   EXPECT_GT(mnee.mean, 0.0);
 }
 
-}  // namespace
+}  // namespace caustics_test
 }  // namespace lacrima

@@ -19,7 +19,7 @@
 #include "support/test_scenes.hpp"
 
 namespace lacrima {
-namespace {
+namespace cryptomatte_test {
 
 TEST(Cryptomatte, TheHashIsMurmurHash3AndTheIdsAreTheSpecifications) {
   // MurmurHash3_x86_32's reference values (seed 0).
@@ -195,5 +195,5 @@ TEST(Cryptomatte, TheExrCarriesTheLayersAndTheMetadata) {
   EXPECT_EQ(pixels[centre * spec.nchannels + size_t(coverage)], 1.0f);
 }
 
-}  // namespace
+}  // namespace cryptomatte_test
 }  // namespace lacrima

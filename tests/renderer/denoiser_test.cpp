@@ -16,7 +16,7 @@
 #include "support/test_scenes.hpp"
 
 namespace lacrima {
-namespace {
+namespace denoiser_test {
 
 constexpr int kSize = 48;
 
@@ -200,5 +200,5 @@ TEST(Denoiser, WithoutItTheFilmHasNoDenoisedLayer) {
   EXPECT_TRUE(renderFrame(softShadowScene(2, 1, false)).denoised.empty());
 }
 
-}  // namespace
+}  // namespace denoiser_test
 }  // namespace lacrima

@@ -8,7 +8,7 @@
 #include "support/test_scenes.hpp"
 
 namespace lacrima {
-namespace {
+namespace determinism_test {
 
 using test::bitwiseEqual;
 
@@ -54,5 +54,5 @@ TEST(Determinism, RenderHasNoNonFiniteSamples) {
   EXPECT_GT(stats.rays, stats.cameraPaths);
 }
 
-}  // namespace
+}  // namespace determinism_test
 }  // namespace lacrima

@@ -10,7 +10,7 @@
 #include "distribution.hpp"
 
 namespace lacrima::detail {
-namespace {
+namespace distribution_test {
 
 void expectSameSample(const CdfSample& plain, const CdfSample& guided, float u) {
   ASSERT_EQ(plain.index, guided.index) << "u = " << u;
@@ -58,5 +58,5 @@ TEST(Distribution, GuidedSearchOnAUniformAndABlackDistribution) {
   checkGuideMatchesPlainSearch(std::vector<double>(1, 3.0), 2);
 }
 
-}  // namespace
+}  // namespace distribution_test
 }  // namespace lacrima::detail

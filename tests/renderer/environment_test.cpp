@@ -17,7 +17,7 @@
 #include "lacrima/renderer/environment.hpp"
 
 namespace lacrima {
-namespace {
+namespace environment_test {
 
 namespace fs = std::filesystem;
 
@@ -479,5 +479,5 @@ TEST(EnvironmentMap, GarbageFileIsAnInputErrorNamingIt) {
   }
 }
 
-}  // namespace
+}  // namespace environment_test
 }  // namespace lacrima

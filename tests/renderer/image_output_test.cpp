@@ -14,7 +14,7 @@
 #include "lacrima/renderer/image_output.hpp"
 
 namespace lacrima {
-namespace {
+namespace image_output_test {
 
 namespace fs = std::filesystem;
 
@@ -290,5 +290,5 @@ TEST(ImageOutput, PreviewWithMissingOrInvalidConfigNamesIt) {
   EXPECT_FALSE(fs::exists(dir / "preview.png"));
 }
 
-}  // namespace
+}  // namespace image_output_test
 }  // namespace lacrima

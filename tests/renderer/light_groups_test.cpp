@@ -10,7 +10,7 @@
 #include "support/test_scenes.hpp"
 
 namespace lacrima {
-namespace {
+namespace light_groups_test {
 
 // A grey floor and a glowing panel under a key (named) and a fill (unnamed) light, with a sky.
 Frame keyAndFill(float keyRadiance = 5.0f) {
@@ -108,5 +108,5 @@ TEST(LightGroups, TheLayersDoNotDependOnTheThreadsAndLeaveTheBeautyAsItWas) {
   EXPECT_TRUE(test::bitwiseEqual(plain.rgba, two.rgba));
 }
 
-}  // namespace
+}  // namespace light_groups_test
 }  // namespace lacrima

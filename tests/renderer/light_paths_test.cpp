@@ -17,7 +17,7 @@
 #include "support/test_scenes.hpp"
 
 namespace lacrima {
-namespace {
+namespace light_paths_test {
 
 // A grey floor, a skin ball with subsurface, a water drop and a frosted (rough) glass ball in
 // front of it, a glowing panel, a thin pane of water against the sky (light straight through it is
@@ -116,8 +116,9 @@ TEST(LightPaths, AConvexDiffuseBallInAFurnaceIsAllDiffuseDirect) {
   const Film film = renderFrame(frame);
   test::expectMean(filmOfPass(film, LightPath::DiffuseDirect), albedo, 1e-4);
   for (const LightPath pass : allLightPaths())
-    if (pass != LightPath::DiffuseDirect)
+    if (pass != LightPath::DiffuseDirect) {
       for (const float v : passLayer(film, pass).data) ASSERT_EQ(v, 0.0f) << lightPathName(pass);
+    }
 }
 
 // The directional albedo of a lobe kind, integral of f_k(wo, wi) cos(wi) over the hemisphere
@@ -208,5 +209,5 @@ TEST(LightPaths, TheLayersDoNotDependOnTheThreadsAndLeaveTheBeautyAsItWas) {
   EXPECT_TRUE(test::bitwiseEqual(plain.rgba, two.rgba));
 }
 
-}  // namespace
+}  // namespace light_paths_test
 }  // namespace lacrima

@@ -11,7 +11,7 @@
 #include "support/test_scenes.hpp"
 
 namespace lacrima {
-namespace {
+namespace motion_blur_test {
 
 constexpr int kSize = 48;
 constexpr int kSpp = 128;
@@ -133,5 +133,5 @@ TEST(MotionBlur, OneAndTwoThreadsGiveBitwiseEqualFilms) {
   test::expectThreadCountIndependent(frame);
 }
 
-}  // namespace
+}  // namespace motion_blur_test
 }  // namespace lacrima

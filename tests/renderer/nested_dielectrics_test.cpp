@@ -12,7 +12,7 @@
 #include "support/test_scenes.hpp"
 
 namespace lacrima {
-namespace {
+namespace nested_dielectrics_test {
 
 constexpr float kGlassIor = 1.5f;
 constexpr float kWaterIor = 1.333f;
@@ -344,5 +344,5 @@ TEST(NestedDielectrics, MoreNestedVolumesThanTheStackHoldsDegradeGracefully) {
   }
 }
 
-}  // namespace
+}  // namespace nested_dielectrics_test
 }  // namespace lacrima

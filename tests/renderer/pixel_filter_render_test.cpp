@@ -12,7 +12,7 @@
 #include "support/test_scenes.hpp"
 
 namespace lacrima {
-namespace {
+namespace pixel_filter_render_test {
 
 const PixelFilter kFilters[] = {{FilterType::Box, 1.0f},
                                 {FilterType::Gaussian, 3.0f},
@@ -99,5 +99,5 @@ TEST(PixelFilterRender, NegativeLobesStayBitwiseDeterministicAcrossThreadCounts)
   EXPECT_TRUE(test::bitwiseEqual(one.rgba, two.rgba));
 }
 
-}  // namespace
+}  // namespace pixel_filter_render_test
 }  // namespace lacrima

@@ -12,7 +12,7 @@
 #include "lacrima/renderer/pixel_filter.hpp"
 
 namespace lacrima {
-namespace {
+namespace pixel_filter_test {
 
 const std::vector<PixelFilter> kFilters = {
     {FilterType::Box, 1.0f},           {FilterType::Box, 2.0f},      {FilterType::Gaussian, 3.0f},
@@ -201,5 +201,5 @@ TEST(PixelFilter, DefaultIsBlackmanHarrisOfOneAndAHalfPixels) {
   EXPECT_EQ(defaultFilterWidth(FilterType::Box), 1.0f);
 }
 
-}  // namespace
+}  // namespace pixel_filter_test
 }  // namespace lacrima

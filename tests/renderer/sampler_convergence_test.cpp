@@ -13,7 +13,7 @@
 #include "support/test_scenes.hpp"
 
 namespace lacrima {
-namespace {
+namespace sampler_convergence_test {
 
 using test::lookAt;
 
@@ -101,5 +101,5 @@ TEST(SamplerConvergence, DefocusedEdgeConvergesFasterThanIndependentSamples) {
   expectStratificationPays(defocusedSphereScene());
 }
 
-}  // namespace
+}  // namespace sampler_convergence_test
 }  // namespace lacrima

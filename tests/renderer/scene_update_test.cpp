@@ -11,7 +11,7 @@
 #include "support/test_scenes.hpp"
 
 namespace lacrima {
-namespace {
+namespace scene_update_test {
 
 using test::bitwiseEqual;
 
@@ -184,5 +184,5 @@ TEST(SceneUpdate, FailedFrameDoesNotPoisonTheRenderer) {
   expectBitwiseEqualFilms(film, renderFrame(deformingScene(2)), 2);
 }
 
-}  // namespace
+}  // namespace scene_update_test
 }  // namespace lacrima

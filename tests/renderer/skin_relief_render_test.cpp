@@ -9,7 +9,7 @@
 #include "support/test_scenes.hpp"
 
 namespace lacrima {
-namespace {
+namespace skin_relief_render_test {
 
 SkinParams reliefSkin(float cavity) {
   SkinParams skin;
@@ -85,5 +85,5 @@ TEST(SkinReliefRender, WithoutCavityTheAlbedoIsUntouched) {
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(albedo[c], reliefSkin(0.0f).albedo[c], 1e-4f);  // float sums of the filter
 }
 
-}  // namespace
+}  // namespace skin_relief_render_test
 }  // namespace lacrima

@@ -11,7 +11,7 @@
 #include "lacrima/renderer/specular_manifold.hpp"
 
 namespace lacrima {
-namespace {
+namespace specular_manifold_test {
 
 constexpr double kWater = kTearIor;
 
@@ -225,5 +225,5 @@ TEST(SpecularManifold, EndsOnTheSameSideHaveNoRefractionPath) {
   EXPECT_FALSE(solveSpecularChain(s.x0(), chain, lightPoint(yUnderWater), StayOnPatch{}));
 }
 
-}  // namespace
+}  // namespace specular_manifold_test
 }  // namespace lacrima

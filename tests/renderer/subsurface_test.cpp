@@ -17,7 +17,7 @@
 #include "support/test_scenes.hpp"
 
 namespace lacrima {
-namespace {
+namespace subsurface_test {
 
 using test::lookAt;
 using test::smallSettings;
@@ -336,5 +336,5 @@ TEST(SubsurfaceDiffusion, OneAndTwoThreadsGiveBitwiseEqualFilms) {
   test::expectThreadCountIndependent(litSubsurfaceSphere(SubsurfaceMethod::Diffusion));
 }
 
-}  // namespace
+}  // namespace subsurface_test
 }  // namespace lacrima

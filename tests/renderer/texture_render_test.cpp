@@ -19,7 +19,7 @@
 #include "lacrima/materials/texture_values.hpp"
 
 namespace lacrima {
-namespace {
+namespace texture_render_test {
 
 using test::lookAt;
 using test::smallSettings;
@@ -287,5 +287,5 @@ TEST(TextureRender, UnreadableTextureIsAnInputErrorNamingMaterialAndFile) {
   }
 }
 
-}  // namespace
+}  // namespace texture_render_test
 }  // namespace lacrima

@@ -10,7 +10,7 @@
 #include "support/test_scenes.hpp"
 
 namespace lacrima {
-namespace {
+namespace thin_sheet_test {
 
 // A 4 m water rectangle filling the view of a camera 1 m in front of it, tilted by 35 degrees,
 // in a uniform white environment.
@@ -73,5 +73,5 @@ TEST(ThinSheet, ASheetMicrometresAboveASurfaceDoesNotHideIt) {
   for (size_t p = 0; p < covered.rgba.size(); p += 4) ASSERT_GT(covered.rgba[p + 1], 0.1f) << "pixel " << p / 4;
 }
 
-}  // namespace
+}  // namespace thin_sheet_test
 }  // namespace lacrima

@@ -9,7 +9,7 @@
 #include "support/test_scenes.hpp"
 
 namespace lacrima {
-namespace {
+namespace transparent_shadows_test {
 
 constexpr float kAlbedo = 0.5f;
 constexpr float kLightRadius = 0.5f;
@@ -60,5 +60,5 @@ TEST(TransparentShadows, LightReachedThroughTheBallIsNotCountedTwice) {
   }
 }
 
-}  // namespace
+}  // namespace transparent_shadows_test
 }  // namespace lacrima

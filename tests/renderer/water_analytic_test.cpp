@@ -9,7 +9,7 @@
 #include "support/test_scenes.hpp"
 
 namespace lacrima {
-namespace {
+namespace water_analytic_test {
 
 // Camera at the centre of a water ball: every camera ray meets the surface at normal
 // incidence and is either transmitted (weight n^2 by the radiance scaling) or reflected straight
@@ -68,5 +68,5 @@ TEST(WaterAnalytic, UnderwaterBeyondTheCriticalAngleTheSurfaceIsAPerfectMirror) 
   for (size_t p = 0; p < film.rgba.size(); p += 4) ASSERT_EQ(film.rgba[p], 0.0f) << "pixel " << p / 4;
 }
 
-}  // namespace
+}  // namespace water_analytic_test
 }  // namespace lacrima

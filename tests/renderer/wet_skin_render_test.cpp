@@ -12,7 +12,7 @@
 #include "support/test_scenes.hpp"
 
 namespace lacrima {
-namespace {
+namespace wet_skin_render_test {
 
 using test::lookAt;
 using test::smallSettings;
@@ -127,5 +127,5 @@ TEST(WetSkinRender, WetnessOfTheWrongSizeIsRejected) {
   EXPECT_THROW(renderFrame(frame), std::invalid_argument);
 }
 
-}  // namespace
+}  // namespace wet_skin_render_test
 }  // namespace lacrima

@@ -5,7 +5,7 @@
 #include "scenes/shot_test_support.hpp"
 
 namespace lacrima {
-namespace {
+namespace adaptive_sampling_setting_test {
 
 using test::expectSingleError;
 using test::shotWithRender;
@@ -39,5 +39,5 @@ TEST(AdaptiveSamplingSetting, BadValuesAreReportedAtTheirPath) {
                     "/render/adaptive: expected an object, found 0.01");
 }
 
-}  // namespace
+}  // namespace adaptive_sampling_setting_test
 }  // namespace lacrima

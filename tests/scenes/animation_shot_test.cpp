@@ -9,7 +9,7 @@
 #include "shot_test_support.hpp"
 
 namespace lacrima {
-namespace {
+namespace animation_shot_test {
 
 using test::shotErrorOf;
 using test::expectSingleError;
@@ -280,5 +280,5 @@ TEST(AnimatedShot, MissingPerformanceFileIsReportedAtItsKey) {
   EXPECT_NE(diagnostics[0].message.find("nope.csv"), std::string::npos) << diagnostics[0].message;
 }
 
-}  // namespace
+}  // namespace animation_shot_test
 }  // namespace lacrima

@@ -5,7 +5,7 @@
 #include "scenes/shot_test_support.hpp"
 
 namespace lacrima {
-namespace {
+namespace aovs_setting_test {
 
 using test::expectSingleError;
 using test::shotWithRender;
@@ -56,5 +56,5 @@ TEST(AovsSetting, BadValuesAreReportedAtTheirPath) {
                     "found \"CryptoObject\"");
 }
 
-}  // namespace
+}  // namespace aovs_setting_test
 }  // namespace lacrima

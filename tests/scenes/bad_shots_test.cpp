@@ -5,7 +5,7 @@
 #include "shot_test_support.hpp"
 
 namespace lacrima {
-namespace {
+namespace bad_shots_test {
 
 using test::joinLines;
 using test::shotErrorOf;
@@ -141,5 +141,5 @@ TEST(BadShots, SeveralErrorsAreAllReportedInFileOrder) {
   EXPECT_EQ(diagnostics.size(), expected.size() / 3);
 }
 
-}  // namespace
+}  // namespace bad_shots_test
 }  // namespace lacrima

@@ -5,7 +5,7 @@
 #include "scenes/shot_test_support.hpp"
 
 namespace lacrima {
-namespace {
+namespace bounce_limits_setting_test {
 
 using test::expectSingleError;
 using test::shotWithRender;
@@ -35,5 +35,5 @@ TEST(BounceLimitsSetting, BadValuesAreReportedAtTheirPath) {
                     "/render/bounces: expected an object, found 4");
 }
 
-}  // namespace
+}  // namespace bounce_limits_setting_test
 }  // namespace lacrima

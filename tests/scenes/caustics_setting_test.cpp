@@ -6,7 +6,7 @@
 #include "scenes/shot_test_support.hpp"
 
 namespace lacrima {
-namespace {
+namespace caustics_setting_test {
 
 using test::expectSingleError;
 using test::shotWithRender;
@@ -42,5 +42,5 @@ TEST(CausticsSetting, BadValuesAreReportedAtTheirPath) {
                     "\"caustics\"");
 }
 
-}  // namespace
+}  // namespace caustics_setting_test
 }  // namespace lacrima

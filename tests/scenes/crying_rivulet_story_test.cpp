@@ -12,7 +12,7 @@
 #include "shot_test_support.hpp"
 
 namespace lacrima {
-namespace {
+namespace crying_rivulet_story_test {
 
 TEST(CryingRivuletStory, ASobRunsARivuletDownTheCheekThatBreaksIntoBeadsAsTheCryingEases) {
   const Shot shot = loadShot(test::sourcePath("scenes/shots/crying_rivulet.json"));
@@ -36,5 +36,5 @@ TEST(CryingRivuletStory, ASobRunsARivuletDownTheCheekThatBreaksIntoBeadsAsTheCry
   EXPECT_GE(beads, 5u);
 }
 
-}  // namespace
+}  // namespace crying_rivulet_story_test
 }  // namespace lacrima

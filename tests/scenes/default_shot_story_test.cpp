@@ -14,7 +14,7 @@
 #include "shot_test_support.hpp"
 
 namespace lacrima {
-namespace {
+namespace default_shot_story_test {
 
 class DefaultShotStory : public ::testing::Test {
  protected:
@@ -118,5 +118,5 @@ TEST_F(DefaultShotStory, BeadsStopOnTheCheekAndTakeSecondsFromTheLidToTheJawLine
   EXPECT_GE(longestStop, 0.5);  // a stop a viewer sees: 12 frames or more
 }
 
-}  // namespace
+}  // namespace default_shot_story_test
 }  // namespace lacrima

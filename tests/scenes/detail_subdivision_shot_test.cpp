@@ -9,7 +9,7 @@
 #include "shot_test_support.hpp"
 
 namespace lacrima {
-namespace {
+namespace detail_subdivision_shot_test {
 
 using test::expectSingleError;
 using test::firstLineOf;
@@ -222,5 +222,5 @@ TEST(DetailSubdivisionShot, BadSubdivisionsAreReportedAtTheirPath) {
   EXPECT_EQ(firstLineOf(shotErrorOf(path)).rfind(path.string() + ":", 0), 0u) << "the message names the file";
 }
 
-}  // namespace
+}  // namespace detail_subdivision_shot_test
 }  // namespace lacrima

@@ -7,7 +7,7 @@
 #include "shot_test_support.hpp"
 
 namespace lacrima {
-namespace {
+namespace eye_shot_test {
 
 using test::expectSingleError;
 using test::ictFaceShot;
@@ -104,5 +104,5 @@ TEST(EyeShot, BadKeysGiveExactMessages) {
          "/eyes/0/lashes/uper: unknown key 'uper'; did you mean 'upper'?");
 }
 
-}  // namespace
+}  // namespace eye_shot_test
 }  // namespace lacrima

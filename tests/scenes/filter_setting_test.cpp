@@ -6,7 +6,7 @@
 #include "scenes/shot_test_support.hpp"
 
 namespace lacrima {
-namespace {
+namespace filter_setting_test {
 
 using test::expectSingleError;
 using test::shotWithRender;
@@ -61,5 +61,5 @@ TEST(FilterSetting, BadValuesAreReportedAtTheirPath) {
                     "/render/filter/radius: unknown key 'radius' (allowed here: type, width)");
 }
 
-}  // namespace
+}  // namespace filter_setting_test
 }  // namespace lacrima

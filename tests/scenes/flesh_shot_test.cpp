@@ -21,7 +21,7 @@
 #include "shot_test_support.hpp"
 
 namespace lacrima {
-namespace {
+namespace flesh_shot_test {
 
 using test::ScopedCacheHome;
 
@@ -202,5 +202,5 @@ TEST(FleshShot, MistakesInTheFleshKeyGetOneClearMessage) {
                     "region's skin fits); give a smaller depth");
 }
 
-}  // namespace
+}  // namespace flesh_shot_test
 }  // namespace lacrima

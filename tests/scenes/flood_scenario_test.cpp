@@ -10,7 +10,7 @@
 #include "scenes/shot_test_support.hpp"
 
 namespace lacrima {
-namespace {
+namespace flood_scenario_test {
 
 using test::replaced;
 using test::writeShot;
@@ -129,5 +129,5 @@ TEST(FloodScenario, ACrowdNamesAGltfFigureRelativeToTheFile) {
   EXPECT_EQ(s.figures[0].normals.size(), s.figures[0].positions.size());
 }
 
-}  // namespace
+}  // namespace flood_scenario_test
 }  // namespace lacrima

@@ -3,7 +3,7 @@
 #include "lacrima/scenes/shot.hpp"
 
 namespace lacrima {
-namespace {
+namespace frame_pattern_test {
 
 TEST(ExpandFramePattern, HashRunIsZeroPadded) {
   EXPECT_EQ(expandFramePattern("renders/tear_closeup.####.exr", 7), "renders/tear_closeup.0007.exr");
@@ -38,5 +38,5 @@ TEST(ExpandFramePattern, NoFrameFieldLeavesThePatternAlone) {
   EXPECT_EQ(expandFramePattern("", 7), "");
 }
 
-}  // namespace
+}  // namespace frame_pattern_test
 }  // namespace lacrima

@@ -13,7 +13,7 @@
 #include "shot_test_support.hpp"
 
 namespace lacrima {
-namespace {
+namespace gltf_animation_shot_test {
 
 using test::shotErrorOf;
 using test::expectSingleError;
@@ -174,5 +174,5 @@ TEST(GltfAnimationShot, BadAnimationMembersGetExactMessages) {
               "/assets/0/animation: asset 'tri' has no glTF animations (static.glb defines none)");
 }
 
-}  // namespace
+}  // namespace gltf_animation_shot_test
 }  // namespace lacrima

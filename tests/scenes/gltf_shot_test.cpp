@@ -7,7 +7,7 @@
 #include "shot_test_support.hpp"
 
 namespace lacrima {
-namespace {
+namespace gltf_shot_test {
 
 using test::writeShot;
 
@@ -121,5 +121,5 @@ TEST(GltfShot, FStopWithAGltfCameraNeedsAFocusDistance) {
             "point to focus on)");
 }
 
-}  // namespace
+}  // namespace gltf_shot_test
 }  // namespace lacrima

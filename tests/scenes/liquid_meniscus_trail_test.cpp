@@ -11,7 +11,7 @@
 #include "support/swept_volume.hpp"
 
 namespace lacrima {
-namespace {
+namespace liquid_meniscus_trail_test {
 
 using test::ictFaceShot;
 using test::writeShot;
@@ -126,5 +126,5 @@ TEST(LiquidTearTrail, BadTrailRefinementGivesAnExactMessage) {
   expect("trail_half.json", "1.5", "/tears/0/trailRefinement: expected an integer in [0, 3], found 1.5");
 }
 
-}  // namespace
+}  // namespace liquid_meniscus_trail_test
 }  // namespace lacrima

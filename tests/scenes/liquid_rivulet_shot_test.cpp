@@ -12,7 +12,7 @@
 #include "shot_test_support.hpp"
 
 namespace lacrima {
-namespace {
+namespace liquid_rivulet_shot_test {
 
 using test::expectSingleError;
 using test::ictFaceShot;
@@ -113,5 +113,5 @@ TEST(LiquidRivuletShot, BadRivuletKeysGiveExactMessages) {
          "/tears/0/rivulet/brakeFlowRate: unknown key 'brakeFlowRate'; did you mean 'breakFlowRate'?");
 }
 
-}  // namespace
+}  // namespace liquid_rivulet_shot_test
 }  // namespace lacrima

@@ -16,7 +16,7 @@
 #include "shot_test_support.hpp"
 
 namespace lacrima {
-namespace {
+namespace liquid_tear_course_test {
 
 constexpr double kDegree = std::numbers::pi / 180.0;
 // Where the tear wells: near the middle of the sheet, which turns about this point.
@@ -259,5 +259,5 @@ TEST(LiquidTearCourse, OnTheDefaultShotTheCourseMovesWithTheHead) {
   EXPECT_GT(worldEnd, 1e-3);
 }
 
-}  // namespace
+}  // namespace liquid_tear_course_test
 }  // namespace lacrima

@@ -13,7 +13,7 @@
 #include "shot_test_support.hpp"
 
 namespace lacrima {
-namespace {
+namespace liquid_tear_film_test {
 
 using test::ictFaceShot;
 using test::writeShot;
@@ -219,5 +219,5 @@ TEST(LiquidTearFilm, AFrameAloneEqualsTheSameFrameInASequence) {
   EXPECT_EQ(skinOf(buildFrame(sequenceShot, 40), sequenceShot).wetness, alone);
 }
 
-}  // namespace
+}  // namespace liquid_tear_film_test
 }  // namespace lacrima

@@ -10,7 +10,7 @@
 #include "shot_test_support.hpp"
 
 namespace lacrima {
-namespace {
+namespace liquid_tear_overhang_test {
 
 // Wells from the right eye's inner corner since 2 s before the shot; the path runs beside the
 // nose and turns under it, where the beads hang.
@@ -60,5 +60,5 @@ TEST(LiquidTearOverhang, BadAngleGivesAnExactMessage) {
                           "/tears/0/overhangAngle: expected a number in (0, 180), found 0");
 }
 
-}  // namespace
+}  // namespace liquid_tear_overhang_test
 }  // namespace lacrima

@@ -12,7 +12,7 @@
 #include "shot_test_support.hpp"
 
 namespace lacrima {
-namespace {
+namespace liquid_tear_pinning_shot_test {
 
 using test::beadsOf;
 using test::expectSingleError;
@@ -114,5 +114,5 @@ TEST(LiquidTearPinningShot, BadValuesGiveExactMessages) {
   expect("pn_object.json", "2", "/tears/0/pinning: expected an object, found 2");
 }
 
-}  // namespace
+}  // namespace liquid_tear_pinning_shot_test
 }  // namespace lacrima

@@ -13,7 +13,7 @@
 #include "shot_test_support.hpp"
 
 namespace lacrima {
-namespace {
+namespace liquid_tear_region_shot_test {
 
 using test::expectSingleError;
 using test::ictFaceShot;
@@ -172,5 +172,5 @@ TEST(LiquidTearRegionShot, BadRegionsGiveExactMessages) {
          "an object");
 }
 
-}  // namespace
+}  // namespace liquid_tear_region_shot_test
 }  // namespace lacrima

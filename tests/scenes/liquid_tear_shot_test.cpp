@@ -16,7 +16,7 @@
 #include "shot_test_support.hpp"
 
 namespace lacrima {
-namespace {
+namespace liquid_tear_shot_test {
 
 using test::expectSingleError;
 using test::ictFaceShot;
@@ -422,5 +422,5 @@ TEST(LiquidTearShot, BadKeysGiveExactMessages) {
          "length); a liquid tear needs at least 0.002 m (move the source or change gravity)");
 }
 
-}  // namespace
+}  // namespace liquid_tear_shot_test
 }  // namespace lacrima

@@ -5,7 +5,7 @@
 #include "scenes/shot_test_support.hpp"
 
 namespace lacrima {
-namespace {
+namespace material_priority_test {
 
 using test::expectSingleError;
 using test::writeShot;
@@ -40,5 +40,5 @@ TEST(MaterialPriority, IsNotAKeyOfOpaqueMaterials) {
                     "/materials/cornea/priority: unknown key 'priority' (allowed here: type, albedo, emission, textures)");
 }
 
-}  // namespace
+}  // namespace material_priority_test
 }  // namespace lacrima

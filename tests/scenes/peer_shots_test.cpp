@@ -8,7 +8,7 @@
 #include "shot_test_support.hpp"
 
 namespace lacrima {
-namespace {
+namespace peer_shots_test {
 
 class PeerShot : public ::testing::TestWithParam<const char*> {};
 
@@ -28,5 +28,5 @@ TEST_P(PeerShot, LoadsWithMaterialsCyclesMatchesExactly) {
 INSTANTIATE_TEST_SUITE_P(Shots, PeerShot,
                          ::testing::Values("sphere_in_studio.json", "tear_on_cheek.json", "rivulet_on_cheek.json"));
 
-}  // namespace
+}  // namespace peer_shots_test
 }  // namespace lacrima

@@ -5,7 +5,7 @@
 #include "scenes/shot_test_support.hpp"
 
 namespace lacrima {
-namespace {
+namespace sampler_setting_test {
 
 using test::expectSingleError;
 using test::shotWithRender;
@@ -30,5 +30,5 @@ TEST(SamplerSetting, BadValuesAreReportedAtTheirPath) {
                     "/render/sampler: expected a non-empty string, found 3");
 }
 
-}  // namespace
+}  // namespace sampler_setting_test
 }  // namespace lacrima

@@ -12,7 +12,7 @@
 #include "shot_test_support.hpp"
 
 namespace lacrima {
-namespace {
+namespace shedding_tear_shot_test {
 
 using test::expectSingleError;
 using test::ictFaceShot;
@@ -300,5 +300,5 @@ TEST(SheddingTearShot, PathMustStayOnOnePrimitive) {
                     "'A/skin'; a shedding tear runs over one primitive");
 }
 
-}  // namespace
+}  // namespace shedding_tear_shot_test
 }  // namespace lacrima

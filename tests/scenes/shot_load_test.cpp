@@ -12,7 +12,7 @@
 #include "shot_test_support.hpp"
 
 namespace lacrima {
-namespace {
+namespace shot_load_test {
 
 using test::sourcePath;
 
@@ -200,11 +200,11 @@ TEST(BuildFrame, FrameOutsideTheShotRangeIsAnInputError) {
   EXPECT_THROW(buildFrame(shot, 0), InputError);
 }
 
-}  // namespace
+}  // namespace shot_load_test
 }  // namespace lacrima
 
 namespace lacrima {
-namespace {
+namespace shot_load_test {
 
 // The complete example of docs/shot-format.md must stay a valid shot.
 TEST(ShotFormatDoc, CompleteExampleLoadsAndBuilds) {
@@ -236,5 +236,5 @@ TEST(ShotFormatDoc, CompleteExampleLoadsAndBuilds) {
   EXPECT_GT(frame.camera.lensRadius, 0.0f);
 }
 
-}  // namespace
+}  // namespace shot_load_test
 }  // namespace lacrima

@@ -5,7 +5,7 @@
 #include "shot_test_support.hpp"
 
 namespace lacrima {
-namespace {
+namespace shot_validation_test {
 
 using test::shotErrorOf;
 using test::writeShot;
@@ -293,5 +293,5 @@ TEST(ShotValidation, LongLinesAreCutAroundTheColumnInExcerpts) {
   EXPECT_EQ(sourceLine.substr(caretLine.size() - 1, 1), "0");
 }
 
-}  // namespace
+}  // namespace shot_validation_test
 }  // namespace lacrima

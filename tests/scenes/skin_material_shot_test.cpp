@@ -7,7 +7,7 @@
 #include "shot_test_support.hpp"
 
 namespace lacrima {
-namespace {
+namespace skin_material_shot_test {
 
 std::string shotWithMaterials(const std::string& materials) {
   return "{\n  \"version\": 1,\n  \"frames\": {\"start\": 1, \"end\": 1},\n  \"output\": \"out.exr\",\n"
@@ -121,5 +121,5 @@ TEST(SkinMaterialShot, DocExampleLoads) {
   EXPECT_EQ(p.subsurface->method, SubsurfaceMethod::Diffusion);
 }
 
-}  // namespace
+}  // namespace skin_material_shot_test
 }  // namespace lacrima

@@ -18,7 +18,7 @@
 #include "scenes/shot_test_support.hpp"
 
 namespace lacrima {
-namespace {
+namespace sph_shot_test {
 
 using test::expectSingleError;
 using test::replaced;
@@ -371,5 +371,5 @@ TEST(SphShot, AColliderFarTooLargeForTheParticleSpacingIsAnErrorNamingIt) {
   }
 }
 
-}  // namespace
+}  // namespace sph_shot_test
 }  // namespace lacrima

@@ -7,7 +7,7 @@
 #include "shot_test_support.hpp"
 
 namespace lacrima {
-namespace {
+namespace surface_anchor_shot_test {
 
 using test::expectSingleError;
 using test::writeShot;
@@ -94,5 +94,5 @@ TEST(SurfaceAnchor, BadAnchorsGetExactMessages) {
                     "{\"vertex\": i} or {\"uv\": [u, v]})");
 }
 
-}  // namespace
+}  // namespace surface_anchor_shot_test
 }  // namespace lacrima

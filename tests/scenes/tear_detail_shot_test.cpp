@@ -7,7 +7,7 @@
 #include "shot_test_support.hpp"
 
 namespace lacrima {
-namespace {
+namespace tear_detail_shot_test {
 
 using test::shotErrorOf;
 using test::expectSingleError;
@@ -261,5 +261,5 @@ TEST(DetailShot, BadDetailsGetExactMessages) {
               "/details/0/bta: unknown key 'bta'; did you mean 'beta'?");
 }
 
-}  // namespace
+}  // namespace tear_detail_shot_test
 }  // namespace lacrima

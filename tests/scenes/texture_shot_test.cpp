@@ -9,7 +9,7 @@
 #include "shot_test_support.hpp"
 
 namespace lacrima {
-namespace {
+namespace texture_shot_test {
 
 std::string shotWithMaterials(const std::string& materials, const std::string& extra = "") {
   return "{\n  \"version\": 1,\n  \"frames\": {\"start\": 1, \"end\": 1},\n  \"output\": \"out.exr\",\n"
@@ -140,5 +140,5 @@ TEST(TextureShot, IctFaceUvsReachTheFrameForATexturedSkin) {
   EXPECT_GE(skinMeshes, 1u);
 }
 
-}  // namespace
+}  // namespace texture_shot_test
 }  // namespace lacrima

@@ -11,7 +11,7 @@
 #include "lacrima/sph/dfsph.hpp"
 
 namespace lacrima::sph {
-namespace {
+namespace dfsph_test {
 
 constexpr double kGravity = 9.81;
 
@@ -166,5 +166,5 @@ TEST(Dfsph, TheSameRunWithOneThreadOrAll) {
   EXPECT_GT((all[0] - latticeBlock(Vec3d::Zero(), Vec3d(0.05, 0.05, 0.04), 0.005)[0]).norm(), 1e-4);  // it moved
 }
 
-}  // namespace
+}  // namespace dfsph_test
 }  // namespace lacrima::sph

@@ -11,7 +11,7 @@
 #include "lacrima/sph/dfsph.hpp"
 
 namespace lacrima::sph {
-namespace {
+namespace mesh_boundary_test {
 
 // The six faces of the box [lo, hi] as twelve triangles.
 TriangleMesh boxMesh(const Vec3d& lo, const Vec3d& hi) {
@@ -115,5 +115,5 @@ TEST(MeshBoundary, OneLayerOfSamplesHoldsWaterInAClosedTank) {
   EXPECT_NEAR(top - lowest, 0.1, 0.005);  // measured 0.1033: the bottom layer rests about 2 r above the single layer
 }
 
-}  // namespace
+}  // namespace mesh_boundary_test
 }  // namespace lacrima::sph

@@ -7,7 +7,7 @@
 #include "lacrima/sph/neighbour_grid.hpp"
 
 namespace lacrima::sph {
-namespace {
+namespace neighbour_grid_test {
 
 std::vector<Vec3d> randomPoints(size_t count, double extent, uint64_t seed) {
   std::vector<Vec3d> points;
@@ -54,5 +54,5 @@ TEST(NeighbourGrid, ListsAreTheSameForAnyThreadCount) {
   EXPECT_EQ(one, all);
 }
 
-}  // namespace
+}  // namespace neighbour_grid_test
 }  // namespace lacrima::sph

@@ -17,7 +17,7 @@
 #include "lacrima/sph/surface_tension.hpp"
 
 namespace lacrima::sph {
-namespace {
+namespace rayleigh_oscillation_test {
 
 constexpr double kWaterSigma = 0.072;  // N/m at 25 C
 constexpr double kWaterDensity = 1000.0;
@@ -114,5 +114,5 @@ TEST(RayleighOscillation, GammaAndSigmaConvertBothWays) {
   EXPECT_NEAR(akinciGammaForSigma(0.072, 1000.0, 5e-5) / akinciGammaForSigma(0.072, 1000.0, 1e-4), 4.0, 1e-12);
 }
 
-}  // namespace
+}  // namespace rayleigh_oscillation_test
 }  // namespace lacrima::sph

@@ -5,7 +5,7 @@
 #include "lacrima/sph/sph_kernel.hpp"
 
 namespace lacrima::sph {
-namespace {
+namespace sph_kernel_test {
 
 TEST(SphKernel, IntegratesToOneOverItsSupport) {
   const double h = 0.01;
@@ -47,5 +47,5 @@ TEST(SphKernel, GradientIsTheDerivativeOfTheValue) {
   EXPECT_LT(worst, 1e-5);
 }
 
-}  // namespace
+}  // namespace sph_kernel_test
 }  // namespace lacrima::sph

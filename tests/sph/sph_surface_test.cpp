@@ -9,7 +9,7 @@
 #include "lacrima/sph/sph_surface.hpp"
 
 namespace lacrima::sph {
-namespace {
+namespace sph_surface_test {
 
 // Signed volume by the divergence theorem (positive for an outward-facing closed mesh).
 double enclosedVolume(const TriangleMesh& mesh) {
@@ -58,5 +58,5 @@ TEST(SphSurface, ABlockOfParticlesBecomesAClosedBoxWhereItsParticlesEnd) {
 
 TEST(SphSurface, NoParticlesNoSurface) { EXPECT_EQ(surfaceOfParticles({}, 0.001).triangleCount(), 0u); }
 
-}  // namespace
+}  // namespace sph_surface_test
 }  // namespace lacrima::sph

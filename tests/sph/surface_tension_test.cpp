@@ -11,7 +11,7 @@
 #include "lacrima/sph/surface_tension.hpp"
 
 namespace lacrima::sph {
-namespace {
+namespace surface_tension_test {
 
 TEST(SurfaceTension, SplinesRepelCloseAttractFarAndVanishAtTheSupport) {
   const double h = 0.004;
@@ -224,5 +224,5 @@ TEST(SurfaceTension, TheSameRunWithOneThreadOrAll) {
   for (size_t i = 0; i < one.size(); ++i) ASSERT_TRUE(one[i] == all[i]) << "particle " << i;
 }
 
-}  // namespace
+}  // namespace surface_tension_test
 }  // namespace lacrima::sph

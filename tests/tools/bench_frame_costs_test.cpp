@@ -10,7 +10,7 @@
 #include "tools/lacrima_cli_support.hpp"
 
 namespace lacrima::cli {
-namespace {
+namespace bench_frame_costs_test {
 
 namespace fs = std::filesystem;
 
@@ -93,5 +93,5 @@ TEST(BenchFrameCosts, AFrameOutsideTheShotIsBadInput) {
   EXPECT_EQ(run.exitStatus, 2) << run.output;
 }
 
-}  // namespace
+}  // namespace bench_frame_costs_test
 }  // namespace lacrima::cli

@@ -20,53 +20,22 @@
 #include "tools/lacrima_cli_support.hpp"
 
 namespace lacrima {
-namespace {
+namespace cli_test {
 
 namespace fs = std::filesystem;
+using test::commandLine;
+using test::lacrima;
+using test::lacrimaStdout;
+using test::lacrimaStderr;
+using test::filesIn;
 
 const std::string kHint = "Run with --help for more information.\n";
 
 std::string sourcePath(const std::string& relative) { return (fs::path(LACRIMA_SOURCE_DIR) / relative).string(); }
 std::string badShot(const std::string& name) { return sourcePath("tests/data/bad_shots/" + name); }
 
-// Built with += throughout: GCC 12 gives a false -Wrestrict for "literal" + std::string&&.
-std::string commandLine(const std::vector<std::string>& args) {
-  std::string command = test::shellQuote(LACRIMA_BINARY);
-  for (const std::string& a : args) {
-    command += ' ';
-    command += test::shellQuote(a);
-  }
-  return command;
-}
-
-std::string inSubshell(const std::vector<std::string>& args, const char* redirection) {
-  std::string command = "(";
-  command += commandLine(args);
-  command += redirection;
-  command += ')';
-  return command;
-}
-
-// Runs lacrima; output is stdout and stderr interleaved.
-test::CommandResult lacrima(const std::vector<std::string>& args) { return test::runCommand(commandLine(args)); }
-// Only stdout, or only stderr (runCommand appends "2>&1" after the subshell).
-test::CommandResult lacrimaStdout(const std::vector<std::string>& args) {
-  return test::runCommand(inSubshell(args, " 2>/dev/null"));
-}
-test::CommandResult lacrimaStderr(const std::vector<std::string>& args) {
-  return test::runCommand(inSubshell(args, " >/dev/null"));
-}
-
 // An empty directory of its own for the running test, under LACRIMA_TEST_OUTPUT_DIR.
 fs::path freshDir() { return test::testDirectory("cli", /*fresh=*/true); }
-
-// Every file below dir (recursively), relative to it.
-std::set<std::string> filesIn(const fs::path& dir) {
-  std::set<std::string> files;
-  for (const auto& entry : fs::recursive_directory_iterator(dir))
-    if (!entry.is_directory()) files.insert(fs::relative(entry.path(), dir).string());
-  return files;
-}
 
 std::vector<std::string> splitLines(const std::string& text) {
   std::vector<std::string> lines;
@@ -638,5 +607,5 @@ TEST(CliBench, SphReportsParticleUpdatesPerSecondAndRejectsBadCounts) {
   EXPECT_NE(run.output.find("--particles"), std::string::npos) << run.output;
 }
 
-}  // namespace
+}  // namespace cli_test
 }  // namespace lacrima

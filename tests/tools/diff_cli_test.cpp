@@ -9,30 +9,16 @@
 #include <string>
 #include <vector>
 
-#include "support/run_command.hpp"
 #include "support/test_directory.hpp"
+#include "tools/lacrima_cli_support.hpp"
 
 namespace lacrima {
-namespace {
+namespace diff_cli_test {
 
 namespace fs = std::filesystem;
-
-std::string commandLine(const std::vector<std::string>& args) {
-  std::string command = test::shellQuote(LACRIMA_BINARY);
-  for (const std::string& a : args) {
-    command += ' ';
-    command += test::shellQuote(a);
-  }
-  return command;
-}
-
-test::CommandResult lacrima(const std::vector<std::string>& args) { return test::runCommand(commandLine(args)); }
-test::CommandResult lacrimaStderr(const std::vector<std::string>& args) {
-  std::string command = "(";
-  command += commandLine(args);
-  command += " >/dev/null)";
-  return test::runCommand(command);
-}
+using test::commandLine;
+using test::lacrima;
+using test::lacrimaStderr;
 
 fs::path freshDir() { return test::testDirectory("diff_cli", /*fresh=*/true); }
 
@@ -199,5 +185,5 @@ TEST(TestSuiteCli, ComparesRendersWithReferencesAndThresholds) {
   EXPECT_EQ(unknown.output, "--shot nothing: no shot nothing.json in " + shots + "\n");
 }
 
-}  // namespace
+}  // namespace diff_cli_test
 }  // namespace lacrima

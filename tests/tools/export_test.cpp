@@ -15,33 +15,19 @@
 #include "lacrima/geometry/gltf_asset.hpp"
 #include "lacrima/geometry/shapes.hpp"
 #include "lacrima/scenes/shot.hpp"
-#include "support/run_command.hpp"
 #include "support/test_directory.hpp"
+#include "tools/lacrima_cli_support.hpp"
 
 namespace lacrima {
-namespace {
+namespace export_test {
 
 namespace fs = std::filesystem;
+using test::lacrima;
+using test::filesIn;
 
 const std::string kHint = "Run with --help for more information.\n";
 const std::string kSource = LACRIMA_SOURCE_DIR;
 constexpr float kTolerance = 1e-6f;
-
-test::CommandResult lacrima(const std::vector<std::string>& args) {
-  std::string command = test::shellQuote(LACRIMA_BINARY);
-  for (const std::string& a : args) {
-    command += ' ';
-    command += test::shellQuote(a);
-  }
-  return test::runCommand(command);
-}
-
-std::set<std::string> filesIn(const fs::path& dir) {
-  std::set<std::string> files;
-  for (const auto& entry : fs::recursive_directory_iterator(dir))
-    if (!entry.is_directory()) files.insert(fs::relative(entry.path(), dir).string());
-  return files;
-}
 
 // Frames 1-3 of the ICT face with a raised cheek keyed over the frames (so frames differ), a
 // dripping tear from frame 1, a keyed ellipsoid and an exact sphere. Render output out/geo.####.exr.
@@ -385,5 +371,5 @@ TEST(ExportHelp, HelpHasExamples) {
   EXPECT_NE(run.output.find("--format"), std::string::npos) << run.output;
 }
 
-}  // namespace
+}  // namespace export_test
 }  // namespace lacrima

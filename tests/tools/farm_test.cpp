@@ -18,7 +18,7 @@
 #include "tools/lacrima_cli_support.hpp"
 
 namespace lacrima {
-namespace {
+namespace farm_test {
 
 namespace fs = std::filesystem;
 using namespace cli;
@@ -297,5 +297,5 @@ TEST(FarmCluster, SixFramesInThreeChunksMatchALocalRenderBitwise) {
   EXPECT_TRUE(bytesWithoutRenderTime(dir / "out" / frameName(5)) == bytesWithoutRenderTime(dir / "local" / frameName(5)));
 }
 
-}  // namespace
+}  // namespace farm_test
 }  // namespace lacrima

@@ -15,7 +15,7 @@
 #include "support/run_command.hpp"
 
 namespace lacrima {
-namespace {
+namespace flip_conformance_test {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -99,5 +99,5 @@ TEST(FlipConformanceData, HoldsElevenPairsOfBothKinds) {
   EXPECT_EQ(hdr, 5);
 }
 
-}  // namespace
+}  // namespace flip_conformance_test
 }  // namespace lacrima

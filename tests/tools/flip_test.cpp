@@ -12,7 +12,7 @@
 #include "diff/flip.hpp"
 
 namespace lacrima::diff {
-namespace {
+namespace flip_test {
 
 double sumOf(const std::vector<double>& v) { return std::accumulate(v.begin(), v.end(), 0.0); }
 double meanOf(const std::vector<double>& v) { return sumOf(v) / double(v.size()); }
@@ -257,5 +257,5 @@ TEST(Flip, MagmaEndsAndStops) {
   EXPECT_NEAR(middle[0], 0.716387, 1e-9);  // matplotlib's magma entry 128
 }
 
-}  // namespace
+}  // namespace flip_test
 }  // namespace lacrima::diff

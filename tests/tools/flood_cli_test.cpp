@@ -13,7 +13,7 @@
 #include "support/test_directory.hpp"
 
 namespace lacrima {
-namespace {
+namespace flood_cli_test {
 
 namespace fs = std::filesystem;
 
@@ -103,5 +103,5 @@ TEST(FloodCli, AnUnknownExperimentIsABadOptionAndWritesNothing) {
   EXPECT_EQ(lacrimaFlood("--duration 0").exitStatus, 2) << "a duration must be at least a second";
 }
 
-}  // namespace
+}  // namespace flood_cli_test
 }  // namespace lacrima

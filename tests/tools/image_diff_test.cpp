@@ -13,7 +13,7 @@
 #include "support/test_directory.hpp"
 
 namespace lacrima::diff {
-namespace {
+namespace image_diff_test {
 
 namespace fs = std::filesystem;
 
@@ -294,5 +294,5 @@ TEST(SuiteThresholds, BadValuesNameFileAndJsonPath) {
   }
 }
 
-}  // namespace
+}  // namespace image_diff_test
 }  // namespace lacrima::diff

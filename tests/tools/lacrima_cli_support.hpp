@@ -1,11 +1,12 @@
 #pragma once
-// Helpers for the tests that run the real `lacrima` binary (sequence_test.cpp, farm_test.cpp):
-// running it, a small shot with nothing to load, and comparing rendered frames byte for byte.
+// Helpers for the tests that run the real `lacrima` binary (cli, diff, export, sequence and farm
+// tests): running it, a small shot with nothing to load, and comparing rendered frames byte for byte.
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,29 @@ inline std::string commandLine(const std::vector<std::string>& args) {
 
 // Runs lacrima to completion; output is stdout and stderr interleaved.
 inline CommandResult lacrima(const std::vector<std::string>& args) { return runCommand(commandLine(args)); }
+
+// Only stdout, or only stderr: the other is redirected inside a subshell, because runCommand
+// appends "2>&1" after the whole command.
+inline CommandResult lacrimaStdout(const std::vector<std::string>& args) {
+  std::string command = "(";
+  command += commandLine(args);
+  command += " 2>/dev/null)";
+  return runCommand(command);
+}
+inline CommandResult lacrimaStderr(const std::vector<std::string>& args) {
+  std::string command = "(";
+  command += commandLine(args);
+  command += " >/dev/null)";
+  return runCommand(command);
+}
+
+// Every file below dir (recursively), relative to it.
+inline std::set<std::string> filesIn(const std::filesystem::path& dir) {
+  std::set<std::string> files;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(dir))
+    if (!entry.is_directory()) files.insert(std::filesystem::relative(entry.path(), dir).string());
+  return files;
+}
 
 // A shot of a water drop and a diffuse ball under a sphere light and a uniform sky (no textures,
 // no meshes: nothing to load, no warnings). Frames 1-frameCount; the frame number changes the

@@ -14,7 +14,7 @@
 #include "support/test_directory.hpp"
 
 namespace lacrima::cli {
-namespace {
+namespace landmark_io_test {
 
 namespace fs = std::filesystem;
 
@@ -106,5 +106,5 @@ TEST(LandmarkFiles, MalformedFilesNameTheFileAndWhere) {
             std::string::npos);
 }
 
-}  // namespace
+}  // namespace landmark_io_test
 }  // namespace lacrima::cli

@@ -13,7 +13,7 @@
 #include "support/run_command.hpp"
 
 namespace lacrima {
-namespace {
+namespace layer_recombination_test {
 
 namespace fs = std::filesystem;
 
@@ -95,5 +95,5 @@ TEST_P(LayerRecombination, ThePassesAndTheGroupsAddUpToTheBeauty) {
 INSTANTIATE_TEST_SUITE_P(Shots, LayerRecombination, ::testing::ValuesIn(test::regressionShots()),
                          [](const auto& info) { return info.param; });
 
-}  // namespace
+}  // namespace layer_recombination_test
 }  // namespace lacrima

@@ -16,7 +16,7 @@
 #include "tools/lacrima_cli_support.hpp"
 
 namespace lacrima {
-namespace {
+namespace memory_test {
 
 // The peak and current RSS (MiB) printed after the whole of `frame`, or none.
 struct FrameMemory {
@@ -130,5 +130,5 @@ TEST(RenderMemory, ResidentStaysFlatWhileTheSceneChanges) {
   EXPECT_NE(result.output.find("frame 3: memory after render: peak RSS"), std::string::npos) << result.output;
 }
 
-}  // namespace
+}  // namespace memory_test
 }  // namespace lacrima

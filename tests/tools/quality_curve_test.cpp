@@ -13,7 +13,7 @@
 #include "tools/lacrima_cli_support.hpp"
 
 namespace lacrima::cli {
-namespace {
+namespace quality_curve_test {
 
 namespace fs = std::filesystem;
 
@@ -134,5 +134,5 @@ TEST(BenchQuality, AFrameOutsideTheShotIsBadInput) {
   EXPECT_NE(run.output.find("--frame 9: the shot's frames are 1-2"), std::string::npos) << run.output;
 }
 
-}  // namespace
+}  // namespace quality_curve_test
 }  // namespace lacrima::cli

@@ -12,7 +12,7 @@
 #include "support/run_command.hpp"
 
 namespace lacrima {
-namespace {
+namespace regression_test {
 
 namespace fs = std::filesystem;
 
@@ -33,5 +33,5 @@ TEST_P(ImageRegression, MatchesReference) {
 INSTANTIATE_TEST_SUITE_P(Shots, ImageRegression, ::testing::ValuesIn(test::regressionShots()),
                          [](const auto& info) { return info.param; });
 
-}  // namespace
+}  // namespace regression_test
 }  // namespace lacrima

@@ -9,7 +9,7 @@
 #include "support/run_command.hpp"
 
 namespace lacrima {
-namespace {
+namespace run_command_test {
 
 // EXPECT_NONFATAL_FAILURE's statement cannot see local variables, hence these.
 test::CommandResult crashed;
@@ -45,5 +45,5 @@ TEST(RunCommand, OutputIsStdoutAndStderrInterleaved) {
   EXPECT_EQ(run.exitStatus, 0);
 }
 
-}  // namespace
+}  // namespace run_command_test
 }  // namespace lacrima

@@ -28,7 +28,7 @@
 #include "tools/lacrima_cli_support.hpp"
 
 namespace lacrima {
-namespace {
+namespace sequence_test {
 
 namespace fs = std::filesystem;
 using test::bytesWithoutRenderTime;
@@ -521,5 +521,5 @@ TEST(SequenceOutput, ADiskThatFillsUpStopsTheRunCleanlyAndResumeCompletesIt) {
         << "frame " << f;
 }
 
-}  // namespace
+}  // namespace sequence_test
 }  // namespace lacrima

@@ -10,7 +10,7 @@
 #include "support/run_command.hpp"
 
 namespace lacrima {
-namespace {
+namespace test_labels_test {
 
 // `ctest -N` in this build's tests folder with `selection` (e.g. "-L '^slow$'"): its output.
 std::string listTests(const std::string& selection) {
@@ -54,5 +54,5 @@ TEST(TestLabels, SelectionsHoldWhatTheyPromise) {
   EXPECT_EQ(totalOf(listTests("-LE '^(slow|cluster)$'")), totalOf(listTests("")) - totalOf(slow));
 }
 
-}  // namespace
+}  // namespace test_labels_test
 }  // namespace lacrima

@@ -14,7 +14,7 @@
 #include "support/test_directory.hpp"
 
 namespace lacrima {
-namespace {
+namespace track_cli_test {
 
 namespace fs = std::filesystem;
 
@@ -182,5 +182,5 @@ TEST(TrackCli, BadPerformancesAndOptionsAreReportedAndWriteNothing) {
   EXPECT_FALSE(fs::exists(dir / "out"));
 }
 
-}  // namespace
+}  // namespace track_cli_test
 }  // namespace lacrima

@@ -15,7 +15,7 @@
 #include "tracking/tracking_test_support.hpp"
 
 namespace lacrima::tracking {
-namespace {
+namespace animation_prior_test {
 
 // n expressions over `weights` targets, each two or three of them (a hash of the seed).
 std::vector<Eigen::VectorXd> someExpressions(int weights, int n, uint64_t seed) {
@@ -69,7 +69,9 @@ TEST(SpontaneousBlinks, AFaceBlinksEveryTwoToSixSecondsEachBlinkShortAndFull) {
     if (closing && run == 0) ++blinks;
     run = closing ? run + 1 : 0;
     longest = std::max(longest, run);
-    if (minute[i][0] == 1.0) EXPECT_GT(minute[i - 1][0], 0.2) << "the lids shut over a frame or more, not at once";
+    if (minute[i][0] == 1.0) {
+      EXPECT_GT(minute[i - 1][0], 0.2) << "the lids shut over a frame or more, not at once";
+    }
   }
   const double shutFrames = double(std::count_if(minute.begin(), minute.end(), [](const Eigen::VectorXd& w) { return w[0] == 1.0; }));
   std::printf("[ blinks ] %d in a minute, the longest %d frames at %g fps, %g frames shut\n", blinks, longest, fps, shutFrames);
@@ -172,5 +174,5 @@ TEST(AnimationPrior, FittingWithThePriorRecoversANoisyPerformanceBetter) {
   EXPECT_LT(withMm, withoutMm);
 }
 
-}  // namespace
+}  // namespace animation_prior_test
 }  // namespace lacrima::tracking

@@ -10,7 +10,7 @@
 #include "tracking/tracking_test_support.hpp"
 
 namespace lacrima::tracking {
-namespace {
+namespace blendshape_fit_test {
 
 using test::capture;
 using test::headPose;
@@ -63,5 +63,5 @@ TEST(BlendshapeFit, RecoversAnExpressionFromDepthAndLandmarks) {
   }
 }
 
-}  // namespace
+}  // namespace blendshape_fit_test
 }  // namespace lacrima::tracking

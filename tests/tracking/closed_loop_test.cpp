@@ -13,7 +13,7 @@
 #include "tracking/tracking_test_support.hpp"
 
 namespace lacrima::tracking {
-namespace {
+namespace closed_loop_test {
 
 struct Errors {
   double weightRmse = 0.0, vertexMm = 0.0, poseDegrees = 0.0, poseMm = 0.0;
@@ -144,5 +144,5 @@ TEST(ClosedLoop, ThePriorLetsAFastBlinkThrough) {
   EXPECT_LT(droppedPeak, keptPeak - 0.1);
 }
 
-}  // namespace
+}  // namespace closed_loop_test
 }  // namespace lacrima::tracking

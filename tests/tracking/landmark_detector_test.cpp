@@ -12,7 +12,7 @@
 #include "tracking/tracking_test_support.hpp"
 
 namespace lacrima::tracking {
-namespace {
+namespace landmark_detector_test {
 
 const Eigen::VectorXd& neutral() {
   static const Eigen::VectorXd weights = Eigen::VectorXd::Zero(test::ictModel().targetCount());
@@ -95,5 +95,5 @@ TEST(LandmarkDetector, ATurnedHeadsHiddenLandmarksAreDroppedButTheJawLine) {
   }
 }
 
-}  // namespace
+}  // namespace landmark_detector_test
 }  // namespace lacrima::tracking

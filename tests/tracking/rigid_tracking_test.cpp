@@ -16,7 +16,7 @@
 #include "tracking/tracking_test_support.hpp"
 
 namespace lacrima::tracking {
-namespace {
+namespace rigid_tracking_test {
 
 constexpr double kDegree = std::numbers::pi / 180.0;
 
@@ -168,5 +168,5 @@ TEST(PoseFilter, AFastMotionIsFollowedWithLittleLag) {
   EXPECT_LT(onsetAngle, 1.0);
 }
 
-}  // namespace
+}  // namespace rigid_tracking_test
 }  // namespace lacrima::tracking
