@@ -14,16 +14,15 @@
 namespace lacrima {
 namespace {
 
-constexpr double kPiD = std::numbers::pi;
-constexpr double kRadToDeg = 180.0 / kPiD;
+constexpr double kRadToDeg = 180.0 / std::numbers::pi;
 
-void requirePositive(double value, const char* what) {
+void requirePositiveDropParameter(double value, const char* what) {
   if (!(std::isfinite(value) && value > 0.0))
     throw InputError(fmt::format("{} must be a finite number > 0, got {}", what, value));
 }
 
 void requireContactAngle(double angle, const char* what) {
-  if (!(angle > 0.0 && angle < kPiD))
+  if (!(angle > 0.0 && angle < std::numbers::pi))
     throw InputError(fmt::format("{} must be strictly between 0 and 180 degrees, got {:.6g} degrees", what,
                                  angle * kRadToDeg));
 }
@@ -64,7 +63,7 @@ ProfileState profileDerivative(const ProfileState& p, double twoOverB, double in
   // At the apex sin(phi)/x -> dphi/ds, so dphi/ds = pressureCurvature / 2 (= 1/b at z = 0).
   const double dphi = p.x > 0.0 ? pressureCurvature - std::sin(p.phi) / p.x : 0.5 * pressureCurvature;
   const double sinPhi = std::sin(p.phi);
-  return {std::cos(p.phi), sinPhi, dphi, kPiD * p.x * p.x * sinPhi};
+  return {std::cos(p.phi), sinPhi, dphi, std::numbers::pi * p.x * p.x * sinPhi};
 }
 
 ProfileState rk4Step(const ProfileState& p, double h, double twoOverB, double invLc2) {
@@ -103,36 +102,36 @@ double TearFluid::capillaryLength() const { return std::sqrt(surfaceTension / (d
 double TearFluid::bondNumber(double radius) const { return density * gravity * radius * radius / surfaceTension; }
 
 void validateTearFluid(const TearFluid& fluid) {
-  requirePositive(fluid.surfaceTension, "tear fluid surface tension (N/m)");
-  requirePositive(fluid.density, "tear fluid density (kg/m^3)");
-  requirePositive(fluid.gravity, "gravity (m/s^2)");
+  requirePositiveDropParameter(fluid.surfaceTension, "tear fluid surface tension (N/m)");
+  requirePositiveDropParameter(fluid.density, "tear fluid density (kg/m^3)");
+  requirePositiveDropParameter(fluid.gravity, "gravity (m/s^2)");
 }
 
 double equivalentSphereRadius(double volume) {
-  requirePositive(volume, "drop volume");
-  return std::cbrt(3.0 * volume / (4.0 * kPiD));
+  requirePositiveDropParameter(volume, "drop volume");
+  return std::cbrt(3.0 * volume / (4.0 * std::numbers::pi));
 }
 
 // ---- Spherical cap and puddle ---------------------------------------------------------------------
 
 double sphericalCapVolume(double sphereRadius, double contactAngle) {
-  requirePositive(sphereRadius, "sphere radius");
+  requirePositiveDropParameter(sphereRadius, "sphere radius");
   requireContactAngle(contactAngle, "contact angle");
-  return kPiD * sphereRadius * sphereRadius * sphereRadius * capShape(contactAngle) / 3.0;
+  return std::numbers::pi * sphereRadius * sphereRadius * sphereRadius * capShape(contactAngle) / 3.0;
 }
 
 SphericalCap sphericalCapFromVolume(double volume, double contactAngle) {
-  requirePositive(volume, "drop volume");
+  requirePositiveDropParameter(volume, "drop volume");
   requireContactAngle(contactAngle, "contact angle");
   SphericalCap cap;
-  cap.sphereRadius = std::cbrt(3.0 * volume / (kPiD * capShape(contactAngle)));
+  cap.sphereRadius = std::cbrt(3.0 * volume / (std::numbers::pi * capShape(contactAngle)));
   cap.baseRadius = cap.sphereRadius * std::sin(contactAngle);
   cap.height = cap.sphereRadius * (1.0 - std::cos(contactAngle));
   return cap;
 }
 
 double puddleHeight(double capillaryLength, double contactAngle) {
-  requirePositive(capillaryLength, "capillary length");
+  requirePositiveDropParameter(capillaryLength, "capillary length");
   requireContactAngle(contactAngle, "contact angle");
   return 2.0 * capillaryLength * std::sin(0.5 * contactAngle);
 }
@@ -141,7 +140,7 @@ double puddleHeight(double capillaryLength, double contactAngle) {
 
 SessileDrop integrateSessileDrop(double apexRadius, double contactAngle, double capillaryLength,
                                  const SessileSolveOptions& options) {
-  requirePositive(apexRadius, "apex radius of curvature");
+  requirePositiveDropParameter(apexRadius, "apex radius of curvature");
   requireContactAngle(contactAngle, "contact angle");
   requireCapillaryLength(capillaryLength);
   if (options.stepsPerLength < 4)
@@ -161,8 +160,8 @@ SessileDrop integrateSessileDrop(double apexRadius, double contactAngle, double 
   // Land exactly on the equator (phi = 90 degrees, the widest point) when the drop has one, then on
   // the contact line.
   std::array<double, 2> targets = {contactAngle, contactAngle};
-  const bool hasEquator = contactAngle > 0.5 * kPiD;
-  if (hasEquator) targets[0] = 0.5 * kPiD;
+  const bool hasEquator = contactAngle > 0.5 * std::numbers::pi;
+  if (hasEquator) targets[0] = 0.5 * std::numbers::pi;
   long steps = 0;
   for (size_t t = hasEquator ? 0 : 1; t < targets.size(); ++t) {
     while (state.phi < targets[t]) {
@@ -191,7 +190,7 @@ SessileDrop integrateSessileDrop(double apexRadius, double contactAngle, double 
 
 SessileDrop solveSessileDrop(double volume, double contactAngle, double capillaryLength,
                              const SessileSolveOptions& options) {
-  requirePositive(volume, "drop volume");
+  requirePositiveDropParameter(volume, "drop volume");
   requireContactAngle(contactAngle, "contact angle");
   requireCapillaryLength(capillaryLength);
   SessileSolveOptions shooting = options;
@@ -243,12 +242,12 @@ double gravityFlattening(const TearFluid& fluid, double volume, double contactAn
 }
 
 BeadShape beadShape(const TearFluid& fluid, double volume, double contactAngle, double tilt) {
-  if (!(tilt >= 0.0 && tilt <= 0.5 * kPiD))
+  if (!(tilt >= 0.0 && tilt <= 0.5 * std::numbers::pi))
     throw InputError(fmt::format("surface tilt must be between 0 and 90 degrees, got {:.6g} degrees", tilt * kRadToDeg));
   BeadShape bead;
   bead.cap = sphericalCapFromVolume(volume, contactAngle);
   // Clamp the cosine/sine so the floor and the wall get exactly zero components.
-  const double normalGravity = tilt == 0.5 * kPiD ? 0.0 : fluid.gravity * std::cos(tilt);
+  const double normalGravity = tilt == 0.5 * std::numbers::pi ? 0.0 : fluid.gravity * std::cos(tilt);
   const double slopeGravity = tilt == 0.0 ? 0.0 : fluid.gravity * std::sin(tilt);
   bead.flattening = gravityFlattening(fluid, volume, contactAngle, normalGravity);
   bead.elongation = 1.0 / std::sqrt(gravityFlattening(fluid, volume, contactAngle, slopeGravity));
@@ -270,14 +269,14 @@ double cosineHysteresis(const ContactAngleHysteresis& h) { return std::cos(h.rec
 void validateSlidingModel(const SlidingModel& model) {
   validateTearFluid(model.fluid);
   requireHysteresis(model.hysteresis);
-  requirePositive(model.retentionFactor, "retention factor k");
+  requirePositiveDropParameter(model.retentionFactor, "retention factor k");
 }
 
 // w = widthPerCubeRootVolume * V^(1/3): the cap at angle theta has a = R sin(theta) with
 // R = (3 V / (pi capShape))^(1/3), so w = 2 sin(theta) (3 / (pi capShape))^(1/3) V^(1/3).
 double widthPerCubeRootVolume(const ContactAngleHysteresis& h) {
   const double theta = meanContactAngle(h);
-  return 2.0 * std::sin(theta) * std::cbrt(3.0 / (kPiD * capShape(theta)));
+  return 2.0 * std::sin(theta) * std::cbrt(3.0 / (std::numbers::pi * capShape(theta)));
 }
 
 }  // namespace
@@ -294,7 +293,7 @@ double retentionForce(const SlidingModel& model, double volume) {
 }
 
 bool dropSlides(const SlidingModel& model, double volume, double tilt) {
-  if (!(tilt >= 0.0 && tilt <= kPiD))
+  if (!(tilt >= 0.0 && tilt <= std::numbers::pi))
     throw InputError(fmt::format("surface tilt must be between 0 and 180 degrees, got {:.6g} degrees", tilt * kRadToDeg));
   const double weightAlongSlope = model.fluid.density * volume * model.fluid.gravity * std::sin(tilt);
   const double retention = retentionForce(model, volume);
@@ -313,7 +312,7 @@ std::optional<double> criticalTiltAngle(const SlidingModel& model, double volume
 //   => V_c = (k c_w dcos lc^2 / sin(alpha))^(3/2).
 double criticalSlidingVolume(const SlidingModel& model, double tilt) {
   validateSlidingModel(model);
-  if (!(tilt > 0.0 && tilt < kPiD))
+  if (!(tilt > 0.0 && tilt < std::numbers::pi))
     throw InputError(fmt::format("surface tilt for a critical volume must be strictly between 0 and 180 degrees, got {:.6g} degrees",
                                  tilt * kRadToDeg));
   const double lc = model.fluid.capillaryLength();
@@ -328,8 +327,8 @@ double criticalSlidingVolume(const SlidingModel& model, double tilt) {
 // and w / R = c_w V^(1/3) / R = c_w (4 pi / 3)^(1/3), a function of the angles only.
 double criticalBondSinTilt(const SlidingModel& model) {
   validateSlidingModel(model);
-  const double widthOverRadius = widthPerCubeRootVolume(model.hysteresis) * std::cbrt(4.0 * kPiD / 3.0);
-  return 3.0 * model.retentionFactor * widthOverRadius * cosineHysteresis(model.hysteresis) / (4.0 * kPiD);
+  const double widthOverRadius = widthPerCubeRootVolume(model.hysteresis) * std::cbrt(4.0 * std::numbers::pi / 3.0);
+  return 3.0 * model.retentionFactor * widthOverRadius * cosineHysteresis(model.hysteresis) / (4.0 * std::numbers::pi);
 }
 
 // ---- Hanging drop --------------------------------------------------------------------------------
@@ -361,9 +360,9 @@ double harkinsBrownFactor(double radiusOverCubeRootVolume) {
 
 double hangingDropMaxVolume(const TearFluid& fluid, double pinnedRadius, DetachmentCorrection correction) {
   validateTearFluid(fluid);
-  requirePositive(pinnedRadius, "pinned radius of the hanging drop");
+  requirePositiveDropParameter(pinnedRadius, "pinned radius of the hanging drop");
   // Tate 1864: rho g V = 2 pi r gamma.
-  const double tate = 2.0 * kPiD * pinnedRadius * fluid.surfaceTension / (fluid.density * fluid.gravity);
+  const double tate = 2.0 * std::numbers::pi * pinnedRadius * fluid.surfaceTension / (fluid.density * fluid.gravity);
   if (correction == DetachmentCorrection::None) return tate;
 
   // Solve V = psi(r / V^(1/3)) V_Tate for V over the table's range of r / V^(1/3). The residual

@@ -15,7 +15,7 @@
 namespace lacrima {
 namespace {
 
-constexpr const char* kWhat = "shedding tear";
+constexpr const char* kSheddingTear = "shedding tear";
 
 uint64_t splitmix64(uint64_t x) {
   x += 0x9e3779b97f4a7c15ull;
@@ -33,7 +33,7 @@ float smoothstep01(float x) {
 
 void validate(const SheddingTearParams& p) {
   auto bad = [](const char* field, float value, const char* rule) {
-    throw InputError(fmt::format("{}: {} = {} is invalid; it must be {}", kWhat, field, value, rule));
+    throw InputError(fmt::format("{}: {} = {} is invalid; it must be {}", kSheddingTear, field, value, rule));
   };
   if (!(p.width > 0.0f) || !std::isfinite(p.width)) bad("width", p.width, "finite and > 0");
   if (!(p.thickness > 0.0f) || !std::isfinite(p.thickness)) bad("thickness", p.thickness, "finite and > 0");
@@ -61,9 +61,9 @@ void validate(const SheddingTearParams& p) {
 SheddingTearStrip buildSheddingTearStrip(const TriangleMesh& restSkin, const std::vector<SurfacePoint>& path,
                                          const SheddingTearParams& params, float t) {
   validate(params);
-  if (!std::isfinite(t)) throw InputError(fmt::format("{}: time {} is not finite", kWhat, t));
+  if (!std::isfinite(t)) throw InputError(fmt::format("{}: time {} is not finite", kSheddingTear, t));
   if (path.size() < 2)
-    throw InputError(fmt::format("{}: the path has {} points; give at least two", kWhat, path.size()));
+    throw InputError(fmt::format("{}: the path has {} points; give at least two", kSheddingTear, path.size()));
 
   // Seed 004 section 4.2 step 1: the path on the rest skin, as a polyline with cumulative arc length.
   std::vector<Vec3> control(path.size());
@@ -105,7 +105,7 @@ SheddingTearStrip buildSheddingTearStrip(const TriangleMesh& restSkin, const std
     if (!(tangent.norm() > 1e-6f * std::max(d.norm(), 1e-30f)))
       throw InputError(fmt::format("{}: the path near arc length {} runs along the skin normal; it must run over "
                                    "the skin",
-                                   kWhat, a));
+                                   kSheddingTear, a));
     tangent.normalize();
     const Vec3 across = n.cross(tangent);  // (tangent, across, n) is right-handed
 
@@ -183,10 +183,10 @@ TriangleMesh sheddingTearMesh(const TriangleMesh& skin, const SheddingTearStrip&
   const int rows = strip.rows, columns = strip.columns;
   if (rows < 2 || columns < 3 || strip.points.size() != size_t(rows * columns) ||
       strip.thickness.size() != strip.points.size())
-    throw InputError(fmt::format("{}: inconsistent strip ({} x {} grid, {} points, {} thicknesses)", kWhat, rows,
+    throw InputError(fmt::format("{}: inconsistent strip ({} x {} grid, {} points, {} thicknesses)", kSheddingTear, rows,
                                  columns, strip.points.size(), strip.thickness.size()));
   if (!(baseOffset > 0.0f) || !std::isfinite(baseOffset))
-    throw InputError(fmt::format("{}: baseOffset = {} must be finite and > 0", kWhat, baseOffset));
+    throw InputError(fmt::format("{}: baseOffset = {} must be finite and > 0", kSheddingTear, baseOffset));
 
   // Seed 004 section 4.2 step 2: base grid (rows x columns), then the top's interior columns;
   // the edge columns are shared.

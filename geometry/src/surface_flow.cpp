@@ -17,7 +17,7 @@ namespace {
 
 constexpr const char* kAdjacency = "triangle adjacency";
 constexpr const char* kFlowPath = "flow path";
-constexpr uint32_t kNone = TriangleAdjacency::kNone;
+constexpr uint32_t kNoTwin = TriangleAdjacency::kNone;
 
 // Barycentric coordinates below this are snapped to zero: the point is on that edge (or vertex).
 // About one float ulp of a weight: SurfacePoints store floats, so finer distinctions are lost anyway.
@@ -144,7 +144,7 @@ void collectStars(const TriangleMesh& mesh, TriangleAdjacency& adjacency) {
 TriangleAdjacency buildFromWeld(const TriangleMesh& mesh, std::vector<uint32_t> weld) {
   TriangleAdjacency adjacency;
   adjacency.weld = std::move(weld);
-  adjacency.twin.assign(mesh.indices.size(), kNone);
+  adjacency.twin.assign(mesh.indices.size(), kNoTwin);
   linkTwins(mesh, adjacency);
   collectStars(mesh, adjacency);
   return adjacency;
@@ -224,7 +224,7 @@ class FlowTracer {
     if (zeroCount(b) == 2) return false;  // at a vertex: its star decides
     if (!Face(mesh_, triangle).degenerate) return false;
     // On an edge of a zero-area triangle, a proper neighbour across that edge can take over.
-    return zeroCount(b) == 0 || adjacency_.twin[size_t(triangle) * 3 + size_t(next(zeroIndex(b)))] == kNone;
+    return zeroCount(b) == 0 || adjacency_.twin[size_t(triangle) * 3 + size_t(next(zeroIndex(b)))] == kNoTwin;
   }
 
   static int zeroIndex(const Vec3d& b) {
@@ -275,7 +275,7 @@ class FlowTracer {
   // b (on edge e of `triangle`) expressed in the neighbour across that edge.
   bool acrossEdge(uint32_t triangle, int e, const Vec3d& b, uint32_t& other, Vec3d& otherB) const {
     const uint32_t twin = adjacency_.twin[size_t(triangle) * 3 + size_t(e)];
-    if (twin == kNone) return false;
+    if (twin == kNoTwin) return false;
     other = twin / 3;
     otherB = Vec3d::Zero();
     for (int c : {e, next(e)})
@@ -328,8 +328,8 @@ class FlowTracer {
     for (uint32_t i = adjacency_.starOffsets[vertex]; i < adjacency_.starOffsets[vertex + 1]; ++i) {
       const uint32_t t = adjacency_.starCorners[i] / 3;
       const int c = int(adjacency_.starCorners[i] % 3);
-      const bool nextIsBoundary = adjacency_.twin[size_t(t) * 3 + size_t(c)] == kNone;
-      const bool prevIsBoundary = adjacency_.twin[size_t(t) * 3 + size_t(prev(c))] == kNone;
+      const bool nextIsBoundary = adjacency_.twin[size_t(t) * 3 + size_t(c)] == kNoTwin;
+      const bool prevIsBoundary = adjacency_.twin[size_t(t) * 3 + size_t(prev(c))] == kNoTwin;
       considerEdge(t, c, next(c), unit(c), nextIsBoundary, choice);
       considerEdge(t, c, prev(c), unit(c), prevIsBoundary, choice);
       choice.onBoundary = choice.onBoundary || nextIsBoundary || prevIsBoundary;

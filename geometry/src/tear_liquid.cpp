@@ -14,7 +14,6 @@ namespace lacrima {
 
 namespace {
 
-constexpr double kPiD = std::numbers::pi;
 // |eps0| at most this (axis ratio 2 prolate, 0.4 oblate): beyond it the single n = 2 mode is a poor
 // description of the released drop (modelling choice).
 constexpr double kMaxDetachAmplitude = 0.5;
@@ -23,7 +22,7 @@ void requireFinite(double value, const char* what) {
   if (!std::isfinite(value)) throw InputError(fmt::format("tear liquid: {} must be finite, got {}", what, value));
 }
 
-void requirePositive(double value, const char* what) {
+void requirePositiveTearParameter(double value, const char* what) {
   if (!(std::isfinite(value) && value > 0.0))
     throw InputError(fmt::format("tear liquid: {} must be finite and positive, got {}", what, value));
 }
@@ -61,8 +60,8 @@ void validateSource(const WellingSource& source) {
   if (!(source.end >= source.start))
     throw InputError(fmt::format("tear liquid: welling end ({}) must not be before its start ({})", source.end, source.start));
   requireNonNegative(source.initialVolume, "initial meniscus volume");
-  requirePositive(source.overflowVolume, "overflow volume");
-  requirePositive(source.spillVolume, "spill volume");
+  requirePositiveTearParameter(source.overflowVolume, "overflow volume");
+  requirePositiveTearParameter(source.spillVolume, "spill volume");
   for (size_t i = 0; i < source.rateKeys.size(); ++i) {
     const auto& [time, rate] = source.rateKeys[i];
     requireFinite(time, "welling rate key time");
@@ -77,21 +76,21 @@ void validateSource(const WellingSource& source) {
 }
 
 void validateParams(const TearLiquidParams& p, double pathLength) {
-  requirePositive(p.viscosity, "viscosity");
-  requirePositive(p.contactLineLogRatio, "contact line log ratio");
-  requirePositive(p.speedRelaxationTime, "speed relaxation time");
+  requirePositiveTearParameter(p.viscosity, "viscosity");
+  requirePositiveTearParameter(p.contactLineLogRatio, "contact line log ratio");
+  requirePositiveTearParameter(p.speedRelaxationTime, "speed relaxation time");
   requireNonNegative(p.minSlideSpeed, "minimum slide speed");
   if (!(p.wetRetentionFactor > 0.0 && p.wetRetentionFactor <= 1.0))
     throw InputError(fmt::format("tear liquid: wet retention factor must be in (0, 1], got {}", p.wetRetentionFactor));
-  requirePositive(p.filmThickness, "film thickness");
+  requirePositiveTearParameter(p.filmThickness, "film thickness");
   requireNonNegative(p.filmDryingTime, "film drying time");
   validateEvaporationAir(p.air);
-  requirePositive(p.trailCellLength, "trail cell length");
+  requirePositiveTearParameter(p.trailCellLength, "trail cell length");
   if (!(p.overhangCosine >= -1.0 && p.overhangCosine <= 1.0))
     throw InputError(fmt::format("tear liquid: overhang cosine must be in [-1, 1], got {}", p.overhangCosine));
   requireNonNegative(p.hangingContactRadius, "hanging contact radius");
-  requirePositive(p.minBeadVolume, "minimum bead volume");
-  requirePositive(p.timeStep, "time step");
+  requirePositiveTearParameter(p.minBeadVolume, "minimum bead volume");
+  requirePositiveTearParameter(p.timeStep, "time step");
   validateSource(p.source);
   requireNonNegative(p.rivulet.formFlowRate, "rivulet form flow rate");
   requireNonNegative(p.rivulet.breakFlowRate, "rivulet break flow rate");
@@ -101,16 +100,16 @@ void validateParams(const TearLiquidParams& p, double pathLength) {
   if (p.rivulet.formFlowRate > 0.0) {
     // The lubrication rivulet (rivulet.hpp) needs an edge angle below 90 degrees.
     auto checkReceding = [](const ContactAngleHysteresis& angles, const char* where) {
-      if (!(angles.receding < 0.5 * kPiD))
+      if (!(angles.receding < 0.5 * std::numbers::pi))
         throw InputError(fmt::format("tear liquid: a rivulet needs receding contact angles below 90 degrees; {} has {} "
                                      "degrees",
-                                     where, angles.receding * 180.0 / kPiD));
+                                     where, angles.receding * 180.0 / std::numbers::pi));
     };
     checkReceding(p.contactAngles, "contactAngles");
     for (const ContactAngleHysteresis& angles : p.contactAngleRegions) checkReceding(angles, "a contact angle region");
   }
   for (const InitialBead& bead : p.initialBeads) {
-    requirePositive(bead.volume, "initial bead volume");
+    requirePositiveTearParameter(bead.volume, "initial bead volume");
     if (!(bead.arcLength >= 0.0 && bead.arcLength <= pathLength))
       throw InputError(fmt::format("tear liquid: initial bead arc length {} is outside the path [0, {}]", bead.arcLength,
                                    pathLength));
@@ -124,7 +123,7 @@ long long stepsFor(double t, double dt) {
 
 bool isLive(const Bead& bead) { return isLiveBeadPhase(bead.phase); }
 
-double equivalentRadius(double volume) { return std::cbrt(3.0 * volume / (4.0 * kPiD)); }
+double equivalentRadius(double volume) { return std::cbrt(3.0 * volume / (4.0 * std::numbers::pi)); }
 
 }  // namespace
 
@@ -513,7 +512,7 @@ double TearLiquidSimulation::detachAmplitude(const Bead& bead) const {
   const double thetaMean = 0.5 * (angles.advancing + angles.receding);
   // The hanging bead as state() reports and the frame draws it (tilt clamped to a wall): long axis
   // along the path's piece, footprint across it, height along the normal.
-  const BeadShape shape = beadShape(input_.params.fluid, bead.volume, thetaMean, std::min(tiltAt(bead.arcLength), 0.5 * kPiD));
+  const BeadShape shape = beadShape(input_.params.fluid, bead.volume, thetaMean, std::min(tiltAt(bead.arcLength), 0.5 * std::numbers::pi));
   const size_t piece = pieceAt(bead.arcLength);
   const Vec3d normal = input_.path[piece].normal.normalized();
   const Vec3d forward = input_.path[piece + 1].position - input_.path[piece].position;
@@ -666,7 +665,7 @@ TearLiquidState TearLiquidSimulation::state(double t) const {
     view.tilt = tiltAt(bead.arcLength);
     const ContactAngleHysteresis& angles = contactAnglesAt(bead.arcLength);
     view.contactAngle = 0.5 * (angles.advancing + angles.receding);
-    view.shape = beadShape(p.fluid, bead.volume, view.contactAngle, std::min(view.tilt, 0.5 * kPiD));
+    view.shape = beadShape(p.fluid, bead.volume, view.contactAngle, std::min(view.tilt, 0.5 * std::numbers::pi));
     state.beads.push_back(view);
   }
   const Vec3d g = gHat_ * p.fluid.gravity;

@@ -2,12 +2,9 @@
 #include "lacrima/materials/diffuse.hpp"
 
 #include "lacrima/materials/sampling.hpp"
+#include "same_hemisphere.hpp"
 
 namespace lacrima {
-
-namespace {
-bool bothAbove(const Vec3& wo, const Vec3& wi) { return wo.z() > 0.0f && wi.z() > 0.0f; }
-}  // namespace
 
 DiffuseBsdf::DiffuseBsdf(const DiffuseParams& params) : albedo_(params.albedo) {}
 

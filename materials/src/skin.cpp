@@ -6,12 +6,11 @@
 #include "lacrima/materials/fresnel.hpp"
 #include "lacrima/materials/pores.hpp"
 #include "lacrima/materials/sampling.hpp"
+#include "same_hemisphere.hpp"
 
 namespace lacrima {
 
 namespace {
-
-bool bothAbove(const Vec3& wo, const Vec3& wi) { return wo.z() > 0.0f && wi.z() > 0.0f; }
 
 // Half vector of a reflection, wm = normalize(wo + wi) (Walter 2007 eq. 13). Nothing when degenerate.
 std::optional<Vec3> reflectionHalfVector(const Vec3& wo, const Vec3& wi) {

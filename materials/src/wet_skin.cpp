@@ -6,12 +6,11 @@
 
 #include "lacrima/materials/fresnel.hpp"
 #include "lacrima/materials/sampling.hpp"
+#include "same_hemisphere.hpp"
 
 namespace lacrima {
 
 namespace {
-
-bool bothAbove(const Vec3& wo, const Vec3& wi) { return wo.z() > 0.0f && wi.z() > 0.0f; }
 
 // Fwbar of the film's top seen from air: computed once (the quadrature's per-thread cache holds
 // one index only, and the skin's index would evict it on every hit).

@@ -50,6 +50,7 @@
 // (clampedTexelCount()); the caller decides how to report them.
 #include "lacrima/renderer/environment.hpp"
 
+#include <numbers>
 #include <fmt/core.h>
 
 #include <OpenImageIO/imageio.h>
@@ -67,7 +68,6 @@ namespace lacrima {
 
 namespace {
 
-constexpr double kPiD = 3.14159265358979323846;
 
 }  // namespace
 
@@ -114,7 +114,7 @@ void EnvironmentMap::buildDistribution() {
   conditionalCdf_.assign(std::size_t(rows) * rowStride, 0.0f);
   std::vector<double> weights(static_cast<std::size_t>(width_));
   std::vector<double> rowWeights(static_cast<std::size_t>(rows));
-  const double cellWidth = 2.0 * kPiD / width_;
+  const double cellWidth = 2.0 * std::numbers::pi / width_;
   double total = 0.0;
   for (int r = 0; r < rows; ++r) {
     const int top = std::max(r - 1, 0), bottom = std::min(r, height_ - 1);
@@ -148,7 +148,7 @@ double EnvironmentMap::cellRowTop(int r) const { return std::clamp((r - 0.5) / h
 
 // The solid angle of cell row r divided by 2 pi / width: cos(theta_top) - cos(theta_bottom).
 double EnvironmentMap::cellRowSolidAngleFactor(int r) const {
-  return std::cos(kPiD * cellRowTop(r)) - std::cos(kPiD * cellRowTop(r + 1));
+  return std::cos(std::numbers::pi * cellRowTop(r)) - std::cos(std::numbers::pi * cellRowTop(r + 1));
 }
 
 EnvironmentMap EnvironmentMap::load(const std::filesystem::path& path, float intensity, float rotationRadians) {

@@ -1,6 +1,7 @@
 // Pixel filter profiles and the tabulated filter importance sampler (see pixel_filter.hpp).
 #include "lacrima/renderer/pixel_filter.hpp"
 
+#include <numbers>
 #include <algorithm>
 #include <cmath>
 #include <span>
@@ -11,7 +12,6 @@ namespace lacrima {
 
 namespace {
 
-constexpr double kPiD = 3.14159265358979323846;
 
 // Box: constant over the support. Width 1 is the uniform jitter of a pixel's square.
 double boxProfile(double width) { return 1.0 / width; }
@@ -23,7 +23,7 @@ double boxProfile(double width) { return 1.0 / width; }
 double gaussianProfile(double width, double x) {
   const double r = 0.5 * width, sigma = width / 6.0;
   const auto g = [sigma](double t) { return std::exp(-t * t / (2.0 * sigma * sigma)); };
-  const double integral = sigma * std::sqrt(2.0 * kPiD) * std::erf(r / (sigma * std::sqrt(2.0))) - 2.0 * r * g(r);
+  const double integral = sigma * std::sqrt(2.0 * std::numbers::pi) * std::erf(r / (sigma * std::sqrt(2.0))) - 2.0 * r * g(r);
   return std::max(0.0, g(x) - g(r)) / integral;
 }
 
@@ -33,7 +33,7 @@ double gaussianProfile(double width, double x) {
 // cosines integrate to 0 over whole periods, so the window's integral is a0 * width.
 double blackmanHarrisProfile(double width, double x) {
   constexpr double a0 = 0.35875, a1 = 0.48829, a2 = 0.14128, a3 = 0.01168;
-  const double phase = 2.0 * kPiD * (x / width + 0.5);
+  const double phase = 2.0 * std::numbers::pi * (x / width + 0.5);
   const double window = a0 - a1 * std::cos(phase) + a2 * std::cos(2.0 * phase) - a3 * std::cos(3.0 * phase);
   return window / (a0 * width);
 }

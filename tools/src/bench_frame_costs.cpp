@@ -11,6 +11,7 @@
 #include "lacrima/renderer/render.hpp"
 #include "lacrima/scenes/frame_build_times.hpp"
 #include "lacrima/scenes/shot.hpp"
+#include "median.hpp"
 
 namespace lacrima::cli {
 
@@ -31,13 +32,6 @@ void recordGeometry(const FrameBuildTimes& t, FrameCost& cost) {
   cost.eyes = t.eyeSeconds;
   cost.otherGeometry = t.otherSeconds;
   cost.geometry = t.totalSeconds;
-}
-
-double median(std::vector<double> values) {
-  if (values.empty()) return std::nan("");
-  std::sort(values.begin(), values.end());
-  const size_t n = values.size();
-  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
 // Milliseconds, or "-" for a figure not measured (NaN).

@@ -16,17 +16,12 @@
 #include "lacrima/renderer/bench.hpp"
 #include "lacrima/renderer/render.hpp"
 #include "lacrima/scenes/shot.hpp"
+#include "median.hpp"
 #include "progress.hpp"
 
 namespace lacrima::cli {
 
 namespace {
-
-double median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  const size_t n = values.size();
-  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
 
 size_t triangleCount(const Frame& frame) {
   size_t count = 0;

@@ -12,23 +12,18 @@
 #include "lacrima/geometry/error.hpp"
 #include "lacrima/scenes/flesh_bench.hpp"
 #include "lacrima/scenes/shot.hpp"
+#include "median.hpp"
 
 namespace lacrima::cli {
 
 namespace {
-
-double medianOf(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  const size_t n = values.size();
-  return n == 0 ? 0.0 : n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
 
 void printRow(const FleshBenchResult& r) {
   std::vector<double> ms;
   for (const FleshFrameCost& f : r.frames) ms.push_back(1e3 * f.seconds);
   const double steps = std::max<double>(1.0, double(r.steps));
   std::printf("%9.4f %9zu %9zu %9zu %10.2f %9zu %11.1f %11.1f %9.2f %9.1f\n", r.tetSize, r.tetrahedra, r.nodes,
-              r.freeNodes, r.volumeSeconds, r.frames.size(), medianOf(ms),
+              r.freeNodes, r.volumeSeconds, r.frames.size(), median(ms),
               ms.empty() ? 0.0 : *std::max_element(ms.begin(), ms.end()), double(r.newtonIterations) / steps,
               double(r.conjugateGradientIterations) / steps);
 }

@@ -11,18 +11,13 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "frame_selection.hpp"
 #include "lacrima/geometry/error.hpp"
 #include "lacrima/geometry/gltf_asset.hpp"
 
 namespace lacrima::cli {
 
 namespace {
-
-std::string lowerExtension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return ext;
-}
 
 // The channels grouped by layer, in file order: the part of a name before its last '.' ("" for
 // the beauty's R, G, B, A and bare channels such as Z), each with its channels' suffixes.

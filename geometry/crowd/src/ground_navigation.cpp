@@ -48,7 +48,7 @@ Vec2d GroundNavigation::nextWaypoint(const Vec2d& from, const Vec2d& goal) const
   // a little less, so that they count as clear. An agent already inside the margin (pushed there)
   // tests its first leg against the bare obstacles.
   const double clearance = 0.99 * margin_;
-  if (obstacles_.empty() || clear(from, goal, 0.0) && clear(from, goal, clearance)) return goal;
+  if (obstacles_.empty() || (clear(from, goal, 0.0) && clear(from, goal, clearance))) return goal;
   // Nodes: 0 = from, 1 = goal, then the corners. Dijkstra over the visibility graph (a handful of
   // obstacles: a dense O(n^2) search is enough).
   std::vector<Vec2d> nodes{from, goal};

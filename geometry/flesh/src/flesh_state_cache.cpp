@@ -12,7 +12,7 @@ namespace lacrima::flesh {
 
 namespace {
 
-constexpr char kMagic[8] = {'L', 'C', 'F', 'S', 'T', 'A', 'T', '1'};
+constexpr char kStateCacheMagic[8] = {'L', 'C', 'F', 'S', 'T', 'A', 'T', '1'};
 
 void putVectors(std::ostream& out, const std::vector<Vec3d>& values) {
   for (const Vec3d& v : values) out.write(reinterpret_cast<const char*>(v.data()), sizeof(double) * 3);
@@ -39,7 +39,7 @@ std::filesystem::path fleshStateFile(const std::filesystem::path& directory, lon
 
 void writeFleshState(const std::filesystem::path& file, const FleshState& state, uint64_t key) {
   writeFileWhole(file, [&](std::ostream& out) {
-    out.write(kMagic, sizeof kMagic);
+    out.write(kStateCacheMagic, sizeof kStateCacheMagic);
     put(out, key);
     put(out, uint64_t(state.positions.size()));
     putVectors(out, state.positions);
@@ -50,9 +50,9 @@ void writeFleshState(const std::filesystem::path& file, const FleshState& state,
 std::optional<FleshState> readFleshState(const std::filesystem::path& file, uint64_t key, size_t nodes) {
   std::ifstream in(file, std::ios::binary);
   if (!in) return std::nullopt;
-  char magic[sizeof kMagic];
+  char magic[sizeof kStateCacheMagic];
   uint64_t filedKey = 0, filedNodes = 0;
-  if (!in.read(magic, sizeof magic) || std::memcmp(magic, kMagic, sizeof kMagic) != 0) return std::nullopt;
+  if (!in.read(magic, sizeof magic) || std::memcmp(magic, kStateCacheMagic, sizeof kStateCacheMagic) != 0) return std::nullopt;
   if (!get(in, filedKey) || filedKey != key || !get(in, filedNodes) || filedNodes != nodes) return std::nullopt;
   FleshState state{std::vector<Vec3d>(nodes), std::vector<Vec3d>(nodes)};
   if (!getVectors(in, state.positions) || !getVectors(in, state.velocities)) return std::nullopt;

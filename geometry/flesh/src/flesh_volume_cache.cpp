@@ -13,13 +13,13 @@ namespace lacrima::flesh {
 
 namespace {
 
-constexpr char kMagic[8] = {'L', 'C', 'F', 'L', 'E', 'S', 'H', '2'};
+constexpr char kVolumeCacheMagic[8] = {'L', 'C', 'F', 'L', 'E', 'S', 'H', '2'};
 
 }  // namespace
 
 uint64_t fleshVolumeKey(const SkinPatch& patch, const FleshVolumeSettings& settings) {
   Fnv1a h;
-  h.add(kMagic, sizeof kMagic);
+  h.add(kVolumeCacheMagic, sizeof kVolumeCacheMagic);
   h.add(patch.positions.size());
   for (const Vec3d& p : patch.positions) h.add(p.data(), sizeof(double) * 3);
   for (const Vec3d& n : patch.normals) h.add(n.data(), sizeof(double) * 3);
@@ -35,7 +35,7 @@ uint64_t fleshVolumeKey(const SkinPatch& patch, const FleshVolumeSettings& setti
 
 void writeFleshVolume(const std::filesystem::path& file, const FleshVolume& volume, uint64_t key) {
   writeFileWhole(file, [&](std::ostream& out) {
-    out.write(kMagic, sizeof kMagic);
+    out.write(kVolumeCacheMagic, sizeof kVolumeCacheMagic);
     put(out, key);
     put(out, uint64_t(volume.mesh.nodes.size()));
     put(out, uint64_t(volume.mesh.tets.size()));
@@ -54,13 +54,13 @@ void writeFleshVolume(const std::filesystem::path& file, const FleshVolume& volu
 std::optional<FleshVolume> readFleshVolume(const std::filesystem::path& file, uint64_t key) {
   std::ifstream in(file, std::ios::binary);
   if (!in) return std::nullopt;
-  char magic[sizeof kMagic];
+  char magic[sizeof kVolumeCacheMagic];
   uint64_t filedKey = 0, nodes = 0, tets = 0;
   int32_t skinNodes = 0;
-  if (!in.read(magic, sizeof magic) || std::memcmp(magic, kMagic, sizeof kMagic) != 0) return std::nullopt;
+  if (!in.read(magic, sizeof magic) || std::memcmp(magic, kVolumeCacheMagic, sizeof kVolumeCacheMagic) != 0) return std::nullopt;
   if (!get(in, filedKey) || filedKey != key || !get(in, nodes) || !get(in, tets) || !get(in, skinNodes)) return std::nullopt;
   const auto size = std::filesystem::file_size(file);
-  const uint64_t expected = sizeof kMagic + 3 * sizeof(uint64_t) + sizeof(int32_t) + nodes * 24 + tets * 16 + nodes +
+  const uint64_t expected = sizeof kVolumeCacheMagic + 3 * sizeof(uint64_t) + sizeof(int32_t) + nodes * 24 + tets * 16 + nodes +
                             nodes * (4 + 48);
   if (size != expected || skinNodes < 0 || uint64_t(skinNodes) > nodes) return std::nullopt;
   FleshVolume volume;
