@@ -47,8 +47,7 @@ ClosestPointGrid::ClosestPointGrid(const TriangleMesh& mesh) : mesh_(mesh) {
     cellSize_[a] = extent[a] > 0.0f ? extent[a] / float(dims_[size_t(a)]) : edge;
   }
   const size_t cells = size_t(dims_[0]) * size_t(dims_[1]) * size_t(dims_[2]);
-  std::vector<uint32_t> count(cells + 1, 0);
-  auto forEachCell = [&](uint32_t t, auto&& visit) {
+  auto forEachCellOf = [&](uint32_t t, auto&& visit) {
     Vec3 a, b, c;
     a = mesh.positions[mesh.indices[3 * size_t(t)]];
     b = mesh.positions[mesh.indices[3 * size_t(t) + 1]];
@@ -60,11 +59,9 @@ ClosestPointGrid::ClosestPointGrid(const TriangleMesh& mesh) : mesh_(mesh) {
         for (int x = from[0]; x <= to[0]; ++x) visit(cellIndex({x, y, z}));
   };
   const uint32_t triangles = uint32_t(mesh.triangleCount());
-  for (uint32_t t = 0; t < triangles; ++t) forEachCell(t, [&](size_t cell) { ++count[cell + 1]; });
-  for (size_t i = 1; i <= cells; ++i) count[i] += count[i - 1];
-  cellStart_ = count;
-  cellTriangles_.resize(count[cells]);
-  for (uint32_t t = 0; t < triangles; ++t) forEachCell(t, [&](size_t cell) { cellTriangles_[count[cell]++] = t; });
+  trianglesByCell_ = makeBucketLists(cells, [&](auto visit) {
+    for (uint32_t t = 0; t < triangles; ++t) forEachCellOf(t, [&](size_t cell) { visit(t, cell); });
+  });
 }
 
 ClosestPointGrid::Cell ClosestPointGrid::cellOf(const Vec3& p) const {
@@ -93,9 +90,7 @@ SurfacePoint ClosestPointGrid::closest(const Vec3& p) const {
   float bestDistance = std::numeric_limits<float>::infinity();
   uint32_t bestTriangle = std::numeric_limits<uint32_t>::max();
   auto visitCell = [&](const Cell& cell) {
-    const size_t index = cellIndex(cell);
-    for (uint32_t k = cellStart_[index]; k < cellStart_[index + 1]; ++k) {
-      const uint32_t t = cellTriangles_[k];
+    for (const uint32_t t : trianglesByCell_.in(cellIndex(cell))) {
       Vec3 w;
       const float d = closestPointOnTriangle(mesh_, t, p, w);
       // closestSurfacePoint keeps the first (lowest) triangle of equal distance.

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "lacrima/geometry/bucket_lists.hpp"
 #include "lacrima/geometry/math.hpp"
 #include "lacrima/geometry/mesh.hpp"
 #include "lacrima/geometry/surface_point.hpp"
@@ -34,8 +35,7 @@ class ClosestPointGrid {
   Vec3 origin_ = Vec3::Zero();
   Vec3 cellSize_ = Vec3::Ones();
   Cell dims_{1, 1, 1};
-  std::vector<uint32_t> cellStart_;  // per cell, into cellTriangles_ (size cells + 1)
-  std::vector<uint32_t> cellTriangles_;
+  BucketLists trianglesByCell_;  // every triangle in each cell its box (grown by a slack) overlaps
 };
 
 }  // namespace lacrima
