@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <vector>
 
 namespace lacrima::flesh {
 namespace hyperelastic_test {
@@ -179,6 +180,31 @@ TEST(Hyperelastic, StressDifferentialIsPositiveSemiDefinite) {
       EXPECT_GE(stressDifferential(m, kLame, at, df).cwiseProduct(df).sum(), -1e-9) << int(m);
     }
   }
+}
+
+// The preconditioner's block by its definition: column a is dP(e_a g^T) g.
+Mat3d stiffnessBlockByDefinition(FleshMaterial m, const StressLinearization& at, const Vec3d& g) {
+  Mat3d block;
+  for (int axis = 0; axis < 3; ++axis)
+    block.col(axis) = stressDifferential(m, kLame, at, Vec3d::Unit(axis) * g.transpose()) * g;
+  return block;
+}
+
+TEST(Hyperelastic, StiffnessBlockEqualsTheStressDifferentialsItStandsFor) {
+  std::vector<Mat3d> shapes = {Mat3d::Identity(), someRotation(), Vec3d(0.6, 1.0, 0.8).asDiagonal() * someRotation(),
+                               Vec3d(1.4, 0.9, 1.1).asDiagonal() * someRotation(),
+                               Vec3d(-0.5, 1.0, 1.0).asDiagonal() * someRotation()};  // inverted
+  for (int i = 0; i < 40; ++i) shapes.push_back(Mat3d::Identity() + 0.4 * Mat3d::Random());
+  for (FleshMaterial m : kMaterials)
+    for (const Mat3d& f : shapes) {
+      const StressLinearization at = linearizeStress(m, kLame, f);
+      for (int trial = 0; trial < 8; ++trial) {
+        const Vec3d g = 30.0 * Vec3d::Random();  // a gradient row of Dm^-1 (1/m)
+        const Mat3d expected = stiffnessBlockByDefinition(m, at, g);
+        const Mat3d block = stiffnessBlock(m, kLame, at, g);
+        EXPECT_LE((block - expected).norm(), 1e-12 * expected.norm()) << int(m) << "\n" << block << "\n" << expected;
+      }
+    }
 }
 
 }  // namespace hyperelastic_test

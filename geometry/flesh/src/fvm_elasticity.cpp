@@ -131,11 +131,8 @@ void FvmElasticity::addStiffnessBlockDiagonal(std::vector<Mat3d>& blocks) const 
     gradients.row(0) = -(dmInv.row(0) + dmInv.row(1) + dmInv.row(2));
     for (int c = 1; c < 4; ++c) gradients.row(c) = dmInv.row(c - 1);
     for (int c = 0; c < 4; ++c)
-      for (int axis = 0; axis < 3; ++axis) {
-        const Mat3d dF = Vec3d::Unit(axis) * gradients.row(c);
-        const Mat3d dP = stressDifferential(material_, lame_, linearization_[t], dF);
-        corners[4 * t + size_t(c)].col(axis) = restVolume_[t] * dP * gradients.row(c).transpose();
-      }
+      corners[4 * t + size_t(c)] =
+          restVolume_[t] * stiffnessBlock(material_, lame_, linearization_[t], gradients.row(c).transpose());
   });
   tbb::parallel_for(tbb::blocked_range<size_t>(0, nodeCount_, 1024), [&](const tbb::blocked_range<size_t>& r) {
     for (size_t n = r.begin(); n != r.end(); ++n)

@@ -134,4 +134,26 @@ Mat3d stressDifferential(FleshMaterial material, const LameParameters& lame, con
   return 2.0 * lame.mu * (df - rotationPart) + lame.lambda * at.held.cwiseProduct(df).sum() * at.held;
 }
 
+namespace {
+
+Mat3d crossProductMatrix(const Vec3d& g) {
+  Mat3d m;
+  m << 0.0, -g.z(), g.y(), g.z(), 0.0, -g.x(), -g.y(), g.x(), 0.0;
+  return m;
+}
+
+}  // namespace
+
+Mat3d stiffnessBlock(FleshMaterial material, const LameParameters& lame, const StressLinearization& at, const Vec3d& g) {
+  if (material == FleshMaterial::StVenantKirchhoff) {
+    const Vec3d u = at.f * g;
+    return g.dot(at.held * g) * Mat3d::Identity() + (lame.mu + lame.lambda) * u * u.transpose() +
+           lame.mu * g.squaredNorm() * at.f * at.f.transpose();
+  }
+  const Vec3d w = at.held * g;
+  const Mat3d cross = crossProductMatrix(g);
+  return 2.0 * lame.mu * g.squaredNorm() * Mat3d::Identity() +
+         lame.mu * at.rotation * (cross * at.twist * cross) * at.rotation.transpose() + lame.lambda * w * w.transpose();
+}
+
 }  // namespace lacrima::flesh
