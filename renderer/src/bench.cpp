@@ -3,8 +3,11 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <limits>
+#include <utility>
 
 #include "embree_scene.hpp"
 #include "lacrima/geometry/error.hpp"
@@ -43,16 +46,95 @@ RaySet makeRays(const Frame& frame, const EmbreeScene& scene) {
   return rays;
 }
 
+// Seconds a set of queries took, and how many of them hit (which checks that two ways of asking
+// asked the same).
+struct QueryTiming {
+  double seconds = 0.0;
+  uint64_t hits = 0;
+};
+
 template <typename Query>
-double timeQueries(const std::vector<Ray>& rays, Query query) {
-  std::atomic<int> sink{0};
+QueryTiming timeQueries(const std::vector<Ray>& rays, Query query) {
+  std::atomic<uint64_t> sink{0};
   const auto start = std::chrono::steady_clock::now();
   tbb::parallel_for(tbb::blocked_range<size_t>(0, rays.size(), 4096), [&](const tbb::blocked_range<size_t>& r) {
     int hits = 0;
     for (size_t i = r.begin(); i != r.end(); ++i) hits += query(rays[i]) ? 1 : 0;
-    sink += hits;
+    sink += uint64_t(hits);
   });
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return {std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), sink.load()};
+}
+
+// The rays in packets of 16 (the tail's lanes masked off), each packet one query(valid, first,
+// count) call; the same parallel split as timeQueries.
+template <typename PacketQuery>
+QueryTiming timePackets(const std::vector<Ray>& rays, PacketQuery query) {
+  constexpr size_t kLanes = 16;
+  const size_t packets = (rays.size() + kLanes - 1) / kLanes;
+  std::atomic<uint64_t> sink{0};
+  const auto start = std::chrono::steady_clock::now();
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, packets, 4096 / kLanes), [&](const tbb::blocked_range<size_t>& r) {
+    int hits = 0;
+    for (size_t p = r.begin(); p != r.end(); ++p)
+      hits += query(&rays[p * kLanes], std::min(kLanes, rays.size() - p * kLanes));
+    sink += uint64_t(hits);
+  });
+  return {std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), sink.load()};
+}
+
+// Fills lane i of a packet's SoA rays (RTCRay16 or the ray of RTCRayHit16) from `ray`, t in [0, inf).
+template <typename Ray16>
+void setLane(Ray16& r, int i, const Ray& ray) {
+  r.org_x[i] = ray.origin.x();
+  r.org_y[i] = ray.origin.y();
+  r.org_z[i] = ray.origin.z();
+  r.dir_x[i] = ray.direction.x();
+  r.dir_y[i] = ray.direction.y();
+  r.dir_z[i] = ray.direction.z();
+  r.tnear[i] = 0.0f;
+  r.tfar[i] = std::numeric_limits<float>::infinity();
+  r.time[i] = 0.0f;
+  r.mask[i] = 0xFFFFFFFFu;
+  r.id[i] = 0;
+  r.flags[i] = 0;
+}
+
+// rtcIntersect16 / rtcOccluded16 over `rays`, with the context flag that tells Embree whether
+// a packet's rays run together (camera rays through neighbouring pixels) or not (bounces).
+std::pair<QueryTiming, QueryTiming> timePacketQueries(RTCScene handle, const std::vector<Ray>& rays,
+                                                      RTCIntersectContextFlags flags, bool occludedToo) {
+  const auto intersect16 = [&](const Ray* first, size_t count) {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    context.flags = flags;
+    alignas(64) int valid[16] = {};
+    alignas(64) RTCRayHit16 rh{};
+    for (size_t i = 0; i < count; ++i) {
+      valid[i] = -1;
+      setLane(rh.ray, int(i), first[i]);
+      rh.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
+    }
+    rtcIntersect16(valid, handle, &context, &rh);
+    int hits = 0;
+    for (size_t i = 0; i < count; ++i) hits += rh.hit.geomID[i] != RTC_INVALID_GEOMETRY_ID ? 1 : 0;
+    return hits;
+  };
+  const auto occluded16 = [&](const Ray* first, size_t count) {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    context.flags = flags;
+    alignas(64) int valid[16] = {};
+    alignas(64) RTCRay16 r{};
+    for (size_t i = 0; i < count; ++i) {
+      valid[i] = -1;
+      setLane(r, int(i), first[i]);
+    }
+    rtcOccluded16(valid, handle, &context, &r);
+    int hits = 0;
+    for (size_t i = 0; i < count; ++i) hits += r.tfar[i] < 0.0f ? 1 : 0;
+    return hits;
+  };
+  return {timePackets(rays, intersect16), occludedToo ? timePackets(rays, occluded16) : QueryTiming{}};
 }
 
 }  // namespace
@@ -85,9 +167,21 @@ RawTraceRates measureRawEmbreeThroughput(const Frame& frame) {
     std::vector<Ray> all = rays.primary;
     all.insert(all.end(), rays.bounce.begin(), rays.bounce.end());
     rates.intersectRays = all.size();
-    rates.intersectSeconds = timeQueries(all, intersect);
+    const QueryTiming intersect1 = timeQueries(all, intersect);
+    rates.intersectSeconds = intersect1.seconds;
+    rates.intersectHits = intersect1.hits;
     rates.occludedRays = rays.bounce.size();
-    rates.occludedSeconds = timeQueries(rays.bounce, occluded);
+    const QueryTiming occluded1 = timeQueries(rays.bounce, occluded);
+    rates.occludedSeconds = occluded1.seconds;
+    rates.occludedHits = occluded1.hits;
+    const QueryTiming primary16 =
+        timePacketQueries(handle, rays.primary, RTC_INTERSECT_CONTEXT_FLAG_COHERENT, false).first;
+    const auto [bounce16, bounceOccluded16] =
+        timePacketQueries(handle, rays.bounce, RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT, true);
+    rates.intersect16Seconds = primary16.seconds + bounce16.seconds;
+    rates.intersect16Hits = primary16.hits + bounce16.hits;
+    rates.occluded16Seconds = bounceOccluded16.seconds;
+    rates.occluded16Hits = bounceOccluded16.hits;
   });
   return rates;
 }

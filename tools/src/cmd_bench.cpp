@@ -54,7 +54,8 @@ void printThroughput(const BenchOptions& o, const std::string& shotPath, const S
               o.threads ? std::to_string(o.threads).c_str() : "all", triangleCount(frame), frame.spheres.size(),
               o.repetitions);
   const Frame deformed = deformedCopy(frame);
-  std::vector<double> seconds, tracingSeconds, pathRates, rayRates, intersectRates, occludedRates, buildSeconds, refitSeconds;
+  std::vector<double> seconds, tracingSeconds, pathRates, rayRates, intersectRates, occludedRates, intersect16Rates,
+      occluded16Rates, buildSeconds, refitSeconds;
   for (int r = 0; r < o.repetitions; ++r) {
     RenderStats stats;
     renderFrame(frame, &stats);
@@ -67,6 +68,8 @@ void printThroughput(const BenchOptions& o, const std::string& shotPath, const S
     const RawTraceRates raw = measureRawEmbreeThroughput(frame);
     intersectRates.push_back(raw.intersectRaysPerSecond());
     occludedRates.push_back(raw.occludedRaysPerSecond());
+    intersect16Rates.push_back(raw.intersect16RaysPerSecond());
+    occluded16Rates.push_back(raw.occluded16RaysPerSecond());
     const SceneUpdateTimes sceneTimes = measureSceneBuildAndRefit(frame, deformed);
     buildSeconds.push_back(sceneTimes.buildSeconds);
     refitSeconds.push_back(sceneTimes.refitSeconds);
@@ -80,6 +83,9 @@ void printThroughput(const BenchOptions& o, const std::string& shotPath, const S
   std::printf("raw rtcIntersect1/s   %s (camera + bounce rays, no shading)\n", formatRate(rawIntersect).c_str());
   std::printf("raw rtcOccluded1/s    %s\n", formatRate(median(occludedRates)).c_str());
   std::printf("renderer / raw ratio  %.2f\n", rawIntersect > 0 ? renderRays / rawIntersect : 0.0);
+  std::printf("raw rtcIntersect16/s  %s (the same rays in packets of 16: camera rays coherent, bounces not)\n",
+              formatRate(median(intersect16Rates)).c_str());
+  std::printf("raw rtcOccluded16/s   %s\n", formatRate(median(occluded16Rates)).c_str());
   std::printf("scene build seconds   %.4f (median; Embree device + BVH from scratch, first frame of a shot)\n",
               median(buildSeconds));
   std::printf("scene refit seconds   %.4f (median; every vertex moved, BVH refitted, later frames)\n",

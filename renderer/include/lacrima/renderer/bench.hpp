@@ -12,14 +12,25 @@ struct RawTraceRates {
   double intersectSeconds = 0.0;
   uint64_t occludedRays = 0;
   double occludedSeconds = 0.0;
+  // The same rays in packets of 16 (rtcIntersect16 / rtcOccluded16; camera rays flagged coherent,
+  // bounces incoherent): what a renderer that traced its rays in packets would get from Embree.
+  double intersect16Seconds = 0.0;
+  double occluded16Seconds = 0.0;
+  // How many of the queries hit, each way (the same counts: both ways trace the same rays).
+  uint64_t intersectHits = 0, intersect16Hits = 0, occludedHits = 0, occluded16Hits = 0;
   double intersectRaysPerSecond() const { return intersectSeconds > 0 ? double(intersectRays) / intersectSeconds : 0; }
   double occludedRaysPerSecond() const { return occludedSeconds > 0 ? double(occludedRays) / occludedSeconds : 0; }
+  double intersect16RaysPerSecond() const {
+    return intersect16Seconds > 0 ? double(intersectRays) / intersect16Seconds : 0;
+  }
+  double occluded16RaysPerSecond() const { return occluded16Seconds > 0 ? double(occludedRays) / occluded16Seconds : 0; }
 };
 
 // Traces one jittered camera ray per pixel per sample (rtcIntersect1), then from every hit a
 // cosine-distributed bounce direction (rtcIntersect1) and a shadow query towards a random
 // direction (rtcOccluded1), in TBB tiles with frame.settings.threads threads, like the
-// renderer. Only the Embree calls and the ray set-up are timed.
+// renderer; then the same rays again in packets of 16. Only the Embree calls and the ray set-up
+// are timed.
 RawTraceRates measureRawEmbreeThroughput(const Frame& frame);
 
 struct SceneUpdateTimes {
