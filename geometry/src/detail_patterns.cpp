@@ -1,4 +1,4 @@
-// Detail pattern functions of seed 004 section 3; guards and choices are documented in the header.
+// Detail pattern functions of Lin & Cheng 2013 section 3; guards and choices are documented in the header.
 #include "lacrima/geometry/detail_patterns.hpp"
 
 #include <fmt/format.h>
@@ -28,7 +28,7 @@ double signedFloor(double d) {
   return std::signbit(d) ? -kDetailPatternEpsilon : kDetailPatternEpsilon;
 }
 
-// seed 004 eq. 1 in double, without the rest-level shift.
+// Lin & Cheng 2013 eq. 1 in double, without the rest-level shift.
 double foreheadPaper(double x, double y, double t, double alpha, double beta) {
   const double theta = polarAngle(x, y);
   const double s = std::sin((x * x + y * y) - t * std::sin(theta) - std::sin(beta * theta));

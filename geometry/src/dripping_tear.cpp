@@ -1,4 +1,4 @@
-// The dripping tear of seed 004 section 4.1, eq. 7; the interpretation is documented in
+// The dripping tear of Lin & Cheng 2013 section 4.1, eq. 7; the interpretation is documented in
 // dripping_tear.hpp.
 #include <cmath>
 
@@ -59,7 +59,7 @@ void addDropTriangles(TriangleMesh& mesh, int rings, int segments) {
 }  // namespace
 
 Vec3 drippingTearEq7(const DrippingTearParams& p, float u, float v, float t) {
-  // seed 004 eq. 7
+  // Lin & Cheng 2013 eq. 7
   const float x = p.alpha * std::sin(u) * std::cos(v) / (t * std::cos(u));
   const float y = p.alpha * std::sin(u) * std::sin(v) / (t * std::cos(u));
   const float z = p.beta * t * std::cos(u) + p.lambda * t;

@@ -1,4 +1,4 @@
-// Animator controls: b(w) and j(w) of seed 002 eq. 2.
+// Animator controls: b(w) and j(w) of Bao et al. 2019 eq. 2.
 #include "lacrima/geometry/face_controls.hpp"
 
 #include <cmath>
@@ -80,7 +80,7 @@ FacePose FaceControls::evaluate(const std::map<std::string, float>& values) cons
     clampedValues[i] = std::clamp(value, controls_[i].min, controls_[i].max);
   }
 
-  // Seed 002 eq. 2: b(w) and j(w), here linear maps of the clamped controls, summed.
+  // Bao et al. 2019 eq. 2: b(w) and j(w), here linear maps of the clamped controls, summed.
   FacePose pose;
   pose.blendshapeWeights.assign(targetNames_.size(), 0.0f);
   std::vector<float> channels(2 * kRigidChannels + kEyeChannels * eyeNames_.size(), 0.0f);

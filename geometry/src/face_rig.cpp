@@ -1,4 +1,4 @@
-// Face rig: x(b, j) = T(j)(n + B b) per primitive (seed 002, eq. 1).
+// Face rig: x(b, j) = T(j)(n + B b) per primitive (Bao et al. 2019, eq. 1).
 #include "lacrima/geometry/face_rig.hpp"
 
 #include <cmath>
@@ -44,7 +44,7 @@ void requireValidTargets(const GltfPrimitive& primitive) {
   }
 }
 
-// Seed 002 eq. 1, the pre-skinning shape n + B b; returns whether any vertex moved.
+// Bao et al. 2019 eq. 1, the pre-skinning shape n + B b; returns whether any vertex moved.
 bool addBlendshapes(std::vector<Vec3>& positions, const GltfPrimitive& primitive, const std::vector<float>& weights) {
   bool moved = false;
   const size_t used = std::min(weights.size(), primitive.targets.size());
@@ -171,7 +171,7 @@ bool FaceRig::skin(size_t i, const FacePose& pose, std::vector<Vec3>& positions)
     return true;
   }
   if (!jawWeights_[i].empty() && !pose.jaw.isIdentity()) {
-    // Seed 002, LBS T = sum_k w_k T_k with two bones: the skull (head) and the jaw (head * jaw).
+    // LBS (Bao et al. 2019): T = sum_k w_k T_k with two bones: the skull (head) and the jaw (head * jaw).
     SkinWeights w{2, std::vector<float>(2 * positions.size())};
     for (size_t v = 0; v < positions.size(); ++v) {
       w.weights[2 * v] = 1.0f - jawWeights_[i][v];

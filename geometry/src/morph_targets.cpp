@@ -37,7 +37,7 @@ int GltfAsset::findTarget(const std::string& name) const {
 }
 
 TriangleMesh applyMorphTargets(const GltfPrimitive& primitive, const std::vector<float>& weights) {
-  // Seed 002, x = n + B b: the neutral shape n plus the blendshape matrix B (one sparse column
+  // Bao et al. 2019, x = n + B b: the neutral shape n plus the blendshape matrix B (one sparse column
   // per target) times the weights b. Skinning (T(j)) is applied by the face rig afterwards.
   TriangleMesh mesh = primitive.mesh;
   bool moved = false;

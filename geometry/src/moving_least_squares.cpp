@@ -1,4 +1,4 @@
-// Moving least squares (seed 004 section 4.2 step four, eqs. 8-14).
+// Moving least squares (Lin & Cheng 2013 section 4.2 step four, eqs. 8-14).
 #include "lacrima/geometry/moving_least_squares.hpp"
 
 #include <fmt/format.h>
@@ -36,7 +36,7 @@ std::vector<Eigen::Vector3i> monomialPowers(int d, int r) {
   return powers;
 }
 
-// The basis vector b(q) of seed 004 eq. 9: the monomials of `powers` evaluated at q (d <= 3).
+// The basis vector b(q) of Lin & Cheng 2013 eq. 9: the monomials of `powers` evaluated at q (d <= 3).
 void evaluateBasis(const std::vector<Eigen::Vector3i>& powers, int r, const double* q, int d, double* out) {
   double table[3][16];  // table[j][e] = q_j^e; r is validated to be small enough in the constructor
   for (int j = 0; j < 3; ++j) {
@@ -52,7 +52,7 @@ void evaluateBasis(const std::vector<Eigen::Vector3i>& powers, int r, const doub
 }  // namespace
 
 int MovingLeastSquares::basisSize(int dimension, int degree) {
-  // m = (d+r)!/(d! r!) (seed 004, after eq. 10), as a product that stays exact in integers.
+  // m = (d+r)!/(d! r!) (Lin & Cheng 2013, after eq. 10), as a product that stays exact in integers.
   long long m = 1;
   for (int i = 1; i <= dimension; ++i) m = m * (degree + i) / i;
   return int(m);
@@ -82,7 +82,7 @@ MovingLeastSquares::MovingLeastSquares(Eigen::MatrixXd points, Eigen::MatrixXd v
   }
   powers_ = monomialPowers(d, degree_);
 
-  // A(x) = sum_i w_i b(p_i) b(p_i)^T (seed 004 eq. 12) is singular for every x exactly when the
+  // A(x) = sum_i w_i b(p_i) b(p_i)^T (Lin & Cheng 2013 eq. 12) is singular for every x exactly when the
   // n x m matrix with rows b(p_i) is rank deficient, because all weights are positive (an
   // infinite weight at epsilon = 0 is handled separately in evaluate). Checking that once here
   // (centred and scaled as in evaluate) turns "A is singular" into an input error.
@@ -113,7 +113,7 @@ Eigen::VectorXd MovingLeastSquares::evaluate(const Eigen::VectorXd& x) const {
   const Eigen::Index n = points_.rows();
   const int m = int(powers_.size());
 
-  // theta_i^2 + epsilon^2, the reciprocal of the weight w(theta_i) (seed 004, after eq. 10).
+  // theta_i^2 + epsilon^2, the reciprocal of the weight w(theta_i) (Lin & Cheng 2013, after eq. 10).
   const double eps2 = epsilon_ * epsilon_;
   Eigen::VectorXd offsets(n);
   double radius2 = 0.0;
@@ -124,7 +124,7 @@ Eigen::VectorXd MovingLeastSquares::evaluate(const Eigen::VectorXd& x) const {
   }
   const double minOffset = offsets.minCoeff();
   if (minOffset == 0.0) {
-    // epsilon = 0 and x is a data point: w is infinite there (seed 004: "setting epsilon to zero
+    // epsilon = 0 and x is a data point: w is infinite there (Lin & Cheng 2013: "setting epsilon to zero
     // results in a singularity at theta = 0, which forces the MLS fit function to interpolate").
     // The limit epsilon -> 0 of the fit is the value at that point, or the mean of the values of
     // all points that sit exactly at x (their weights are equal and dominate all others).
@@ -164,7 +164,7 @@ Eigen::VectorXd MovingLeastSquares::evaluate(const Eigen::VectorXd& x) const {
     a.selfadjointView<Eigen::Lower>().rankUpdate(b, w);       // sum_i w_i b(p_i) b(p_i)^T (eq. 12, left)
     rhs.noalias() += (w * b) * values_.row(i);                 // sum_i w_i b(p_i) f_i      (eq. 12, right)
   }
-  // c(x) = A^-1 sum_i w_i b(p_i) f_i (seed 004 eq. 13); f(x) = b^T(x) c(x) = c_0 (eq. 14).
+  // c(x) = A^-1 sum_i w_i b(p_i) f_i (Lin & Cheng 2013 eq. 13); f(x) = b^T(x) c(x) = c_0 (eq. 14).
   const Eigen::LDLT<Eigen::MatrixXd, Eigen::Lower> ldlt(a);  // reads only the lower triangle filled above
   const Eigen::MatrixXd c = ldlt.solve(rhs);
   return c.row(0).transpose();
@@ -182,7 +182,7 @@ std::vector<float> smoothHeightField(const std::vector<Vec2>& uv, const std::vec
     values(Eigen::Index(i), 0) = double(heights[i]);
   }
   const MovingLeastSquares mls(std::move(points), std::move(values), degree, epsilon);
-  // Seed 004 step four: "the vertices cannot go below the top surface", so the smoothed heights
+  // Lin & Cheng 2013 step four: "the vertices cannot go below the top surface", so the smoothed heights
   // keep the lowest input height as a floor.
   const float floor = *std::min_element(heights.begin(), heights.end());
   std::vector<float> smoothed(uv.size());

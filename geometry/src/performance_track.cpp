@@ -155,7 +155,7 @@ std::vector<std::vector<float>> adaptiveTemporalFilter(const std::vector<std::ve
   std::vector<std::vector<float>> out(frames.size());
   for (size_t i = 0; i < frames.size(); ++i) {
     const size_t k = std::min(size_t(options.window), i);  // the first frames have a shorter past
-    // Seed 003 (Weise et al. 2011, Sec. 3): t*_i = sum_j w_j t_{i-j} / sum_j w_j over j = 0..k, with
+    // Weise et al. 2011, Sec. 3: t*_i = sum_j w_j t_{i-j} / sum_j w_j over j = 0..k, with
     // w_j = exp(-j H max_{l in 1..k} |t_i - t_{i-l}|): fast motion makes the weights fall off
     // quickly (little lag), a still face averages the whole window (little jitter).
     float motion = 0.0f;

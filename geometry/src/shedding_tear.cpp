@@ -1,4 +1,4 @@
-// Shedding tear, seed 004 section 4.2 steps 1-5 (see shedding_tear.hpp for the construction).
+// Shedding tear, Lin & Cheng 2013 section 4.2 steps 1-5 (see shedding_tear.hpp for the construction).
 #include "lacrima/geometry/shedding_tear.hpp"
 
 #include <fmt/format.h>
@@ -65,7 +65,7 @@ SheddingTearStrip buildSheddingTearStrip(const TriangleMesh& restSkin, const std
   if (path.size() < 2)
     throw InputError(fmt::format("{}: the path has {} points; give at least two", kSheddingTear, path.size()));
 
-  // Seed 004 section 4.2 step 1: the path on the rest skin, as a polyline with cumulative arc length.
+  // Lin & Cheng 2013 section 4.2 step 1: the path on the rest skin, as a polyline with cumulative arc length.
   std::vector<Vec3> control(path.size());
   std::vector<float> arc(path.size(), 0.0f);
   for (size_t i = 0; i < path.size(); ++i) {
@@ -74,7 +74,7 @@ SheddingTearStrip buildSheddingTearStrip(const TriangleMesh& restSkin, const std
   }
   const float pathLength = arc.back();
 
-  // Seed 004 section 4.2 step 5: h = s + c t, the grown part of the path.
+  // Lin & Cheng 2013 section 4.2 step 5: h = s + c t, the grown part of the path.
   SheddingTearStrip strip;
   strip.columns = params.acrossSamples;
   const float h = std::clamp(params.start + params.speed * t, 0.0f, pathLength);
@@ -109,7 +109,7 @@ SheddingTearStrip buildSheddingTearStrip(const TriangleMesh& restSkin, const std
     tangent.normalize();
     const Vec3 across = n.cross(tangent);  // (tangent, across, n) is right-handed
 
-    // Seed 004 section 4.2 step 3: the head over the last headLength of the grown path.
+    // Lin & Cheng 2013 section 4.2 step 3: the head over the last headLength of the grown path.
     float g = 1.0f, widthFactor = 1.0f;
     if (headLength > 0.0f && a > h - headLength) {
       const float x = std::clamp((a - (h - headLength)) / headLength, 0.0f, 1.0f);
@@ -145,7 +145,7 @@ SheddingTearStrip buildSheddingTearStrip(const TriangleMesh& restSkin, const std
     }
   }
 
-  // Seed 004 section 4.2 step 4: upward-only noise, smoothed by MLS (seed 004 eqs. 8-14), never below the plain top.
+  // Lin & Cheng 2013 section 4.2 step 4: upward-only noise, smoothed by MLS (eqs. 8-14), never below the plain top.
   if (params.noiseDensity > 0.0f && params.noiseAmplitude > 0.0f) {
     std::vector<float> bumps(strip.points.size(), 0.0f);
     bool any = false;
@@ -188,7 +188,7 @@ TriangleMesh sheddingTearMesh(const TriangleMesh& skin, const SheddingTearStrip&
   if (!(baseOffset > 0.0f) || !std::isfinite(baseOffset))
     throw InputError(fmt::format("{}: baseOffset = {} must be finite and > 0", kSheddingTear, baseOffset));
 
-  // Seed 004 section 4.2 step 2: base grid (rows x columns), then the top's interior columns;
+  // Lin & Cheng 2013 section 4.2 step 2: base grid (rows x columns), then the top's interior columns;
   // the edge columns are shared.
   const uint32_t topStart = uint32_t(rows * columns);
   mesh.positions.resize(size_t(rows * columns + rows * (columns - 2)));

@@ -33,7 +33,7 @@ void applyLinearBlendSkinning(std::vector<Vec3>& positions, const std::vector<Af
                                             weights.weights.size(), positions.size(), bones.size()));
   const size_t n = bones.size();
   for (size_t v = 0; v < positions.size(); ++v) {
-    // Seed 002, LBS: v' = sum_k w_k T_k v. Blending the matrices first (T = sum_k w_k T_k) is the
+    // LBS (Bao et al. 2019): v' = sum_k w_k T_k v. Blending the matrices first (T = sum_k w_k T_k) is the
     // same linear map and costs one matrix-vector product per vertex instead of one per bone.
     Eigen::Matrix<float, 3, 4> blended = Eigen::Matrix<float, 3, 4>::Zero();
     for (size_t k = 0; k < n; ++k) {

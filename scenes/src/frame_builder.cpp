@@ -166,7 +166,7 @@ void addTear(const Shot& shot, const ShotTear& tear, int frameNumber, const Shut
   frame.meshes.push_back(std::move(instance));
 }
 
-// Seed 004 section 4.2: the shedding tear's strip on the rest skin region at the shutter-open time,
+// Lin & Cheng 2013 section 4.2: the shedding tear's strip on the rest skin region at the shutter-open time,
 // placed on the posed (and detailed) primitive; with a shutter the same strip is also placed on
 // the shutter-close skin, so the tear moves with the face but its growth within the shutter is
 // not blurred.

@@ -109,7 +109,7 @@ void resolveTear(const Shot& shot, ShotSheddingTear& tear, std::vector<SheddingT
                                                   gridPoints, kMaxSheddingTearGridPoints)});
     return;
   }
-  // Seed 004 section 4.2 step 1: the region the tear passes through, extracted from the skin.
+  // Lin & Cheng 2013 section 4.2 step 1: the region the tear passes through, extracted from the skin.
   auto region = std::make_shared<SurfaceRegion>(
       extractSurfaceRegion(*rest, line, stripRegionRadius(line, tear.params.width)));
   tear.regionPath.clear();

@@ -1229,7 +1229,7 @@ class ShotReader {
       if (auto p = readVec3(c_, (*v)[i], childPointer(o.at("path"), i))) path.push_back(*p);
   }
 
-  // Seed 004 section 4.2: a strip of water shed along a path over the skin (ShotSheddingTear).
+  // Lin & Cheng 2013 section 4.2: a strip of water shed along a path over the skin (ShotSheddingTear).
   void readSheddingTear(const Json& v, const std::string& pointer) {
     ObjectReader o(c_, v, pointer,
                    {"type", "asset", "part", "path", "startFrame", "material", "width", "thickness", "start", "speed",
@@ -1267,7 +1267,7 @@ class ShotReader {
     if (c_.errorCount() == before && asset) shot_.sheddingTears.push_back(tear);
   }
 
-  // Issue 5: tear fluid welling at a skin point and running down its flow path (ShotLiquidTear).
+  // A liquid tear: tear fluid welling at a skin point and running down its flow path (ShotLiquidTear).
   // Volumes in microlitres, angles in degrees, welling times in frames, the rest in SI units.
   void readLiquidTear(const Json& v, const std::string& pointer) {
     ObjectReader o(c_, v, pointer,

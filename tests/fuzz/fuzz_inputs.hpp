@@ -16,7 +16,7 @@ void loadShotInput(const uint8_t* data, size_t size);
 void loadGltfInput(const uint8_t* data, size_t size);
 
 // readPerformanceTrack (JSON when the input starts with '{', else CSV), resampled to 24 fps and
-// filtered (seed 003).
+// filtered (Weise et al. 2011).
 void loadPerformanceTrackInput(const uint8_t* data, size_t size);
 
 }  // namespace lacrima::fuzz

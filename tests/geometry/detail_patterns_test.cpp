@@ -1,4 +1,4 @@
-// Detail pattern functions of seed 004 section 3: the six heights against hand-computed values,
+// Detail pattern functions of Lin & Cheng 2013 section 3: the six heights against hand-computed values,
 // their guards, the damping and applying a pattern to a mesh.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Dripping tear (seed 004 section 4.1, eq. 7): closed, oriented and finite over a whole
+// Dripping tear (Lin & Cheng 2013 section 4.1, eq. 7): closed, oriented and finite over a whole
 // animation, eq. 7 at the head vertices, the documented narrowing with t, placement along gravity
 // and bitwise repeatability.
 #include <gtest/gtest.h>

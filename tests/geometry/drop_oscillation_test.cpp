@@ -1,4 +1,4 @@
-// Falling tear drops ring in the Rayleigh/Lamb mode n = 2 (issue 5): the period and the damping
+// Falling tear drops ring in the Rayleigh/Lamb mode n = 2: the period and the damping
 // measured on the drawn meshes of a simulated drip against Rayleigh's frequency and Lamb's damping
 // time, the drawn volume, closed meshes, the initial stretch from the hanging bead, and the state
 // as a pure function of time.

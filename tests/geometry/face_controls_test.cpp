@@ -1,4 +1,4 @@
-// Animator controls: b(w), j(w) of seed 002 eq. 2.
+// Animator controls: b(w), j(w) of Bao et al. 2019 eq. 2.
 #include <gtest/gtest.h>
 
 #include <functional>
@@ -85,7 +85,7 @@ TEST(FaceControls, UnknownNamesAreInputErrorsWithTheClosestName) {
 }
 
 TEST(FaceControls, DriveTheRig) {
-  // Seed 002 eq. 2 end to end: a control opens the synthetic jaw through both b and j.
+  // Bao et al. 2019 eq. 2 end to end: a control opens the synthetic jaw through both b and j.
   const GltfAsset asset = test::makeSyntheticFace();
   const FaceRig rig(asset, test::syntheticRigConfig());
   const FaceControls controls(rig, {{"open", 0, 1, {{"jawOpen", 1.0f}}, {{"jaw.rx", 5.0f}}},

@@ -1,4 +1,4 @@
-// FaceRig: x(b, j) = T(j)(n + B b) (seed 002, eq. 1) on a synthetic face and on the ICT face.
+// FaceRig: x(b, j) = T(j)(n + B b) (Bao et al. 2019, eq. 1) on a synthetic face and on the ICT face.
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -134,7 +134,7 @@ TEST_F(SyntheticRig, JawRotationBlendsTheSkullAndJawTransformsByWeight) {
   const std::vector<Vec3>& n = asset.primitives[0].mesh.positions;
   for (size_t v = 0; v < n.size(); ++v) {
     const float w = rig.jawWeights(0)[v];
-    const Vec3 expected = (1.0f - w) * n[v] + w * (jaw * n[v]);  // seed 002 LBS with skull = identity
+    const Vec3 expected = (1.0f - w) * n[v] + w * (jaw * n[v]);  // LBS (Bao et al. 2019), skull = identity
     EXPECT_LT((face.positions[v] - expected).norm(), 1e-6f) << v;
   }
   EXPECT_GT(maxDistance(face.positions, n), 0.01f);

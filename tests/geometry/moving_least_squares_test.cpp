@@ -1,4 +1,4 @@
-// Moving least squares (seed 004 section 4.2 step four, eqs. 8-14).
+// Moving least squares (Lin & Cheng 2013 section 4.2 step four, eqs. 8-14).
 #include "lacrima/geometry/moving_least_squares.hpp"
 
 #include <gtest/gtest.h>
@@ -68,7 +68,7 @@ Eigen::MatrixXd sample(const Eigen::MatrixXd& points, const Polynomial& f) {
 }
 
 // The paper's formula evaluated literally: raw monomials b(p) in the original coordinates,
-// A = sum_i w_i b(p_i) b(p_i)^T, f(x) = b(x)^T A^-1 sum_i w_i b(p_i) f_i (seed 004 eqs. 12-14).
+// A = sum_i w_i b(p_i) b(p_i)^T, f(x) = b(x)^T A^-1 sum_i w_i b(p_i) f_i (Lin & Cheng 2013 eqs. 12-14).
 // Only well conditioned for points near the origin; used as an oracle there.
 double paperFormula(const Eigen::MatrixXd& points, const Eigen::VectorXd& values, int r, double epsilon,
                     const Eigen::VectorXd& x) {
@@ -193,7 +193,7 @@ TEST(MovingLeastSquares, MatchesThePapersFormulaNearTheOrigin) {
 }
 
 // w = 1/(theta^2 + eps^2) is singular at theta = 0 when eps = 0, which forces interpolation
-// (seed 004); for eps > 0 the error at a data point shrinks with eps. It does so monotonically
+// (Lin & Cheng 2013); for eps > 0 the error at a data point shrinks with eps. It does so monotonically
 // only once eps is well below the distance delta to the nearest other point (for eps ~ delta the
 // neighbour's weight competes and the error can grow), then like eps^2: the error must fall from
 // eps = delta to 0.1 delta, and then by at least tenfold per decade down to 1e-5 delta (or reach
@@ -306,7 +306,7 @@ TEST(SmoothHeightField, ReducesNoiseOnAPlane) {
   EXPECT_EQ(smoothHeightField(uv, heights, 1, 0.0), heights);
 }
 
-// Seed 004: the raised vertices "cannot go below the top surface". A fit of degree 2 next to a
+// Lin & Cheng 2013: the raised vertices "cannot go below the top surface". A fit of degree 2 next to a
 // bump undershoots; the smoothed field keeps the lowest input height (0) as its floor.
 TEST(SmoothHeightField, NeverGoesBelowTheLowestInputHeight) {
   std::mt19937 rng(8);

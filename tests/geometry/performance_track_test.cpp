@@ -1,5 +1,5 @@
 // Performance-capture weight tracks: CSV reading with exact error locations, resampling, and
-// seed 003's adaptive temporal filter.
+// Weise et al. (2011)'s adaptive temporal filter.
 #include <gtest/gtest.h>
 
 #include <fstream>

@@ -1,4 +1,4 @@
-// Rivulets (issue 16, item 2): Duffy & Moffatt 1995's small-width rivulet law against its own
+// Rivulets: Duffy & Moffatt 1995's small-width rivulet law against its own
 // lubrication integral, and the tear simulation's rivulet: it carries the welling rate at the
 // law's width, its front runs at the kinematic shock speed, it swallows beads, drains and breaks
 // into beads when the welling stops, and keeps the volume to 1e-6 throughout.

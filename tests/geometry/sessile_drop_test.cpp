@@ -1,4 +1,4 @@
-// Sessile, sliding and hanging tear drops (issue 5): fluid constants, the Young-Laplace drop
+// Sessile, sliding and hanging tear drops: fluid constants, the Young-Laplace drop
 // against its two closed-form limits (spherical cap, gravity puddle) and its own first integral
 // (vertical force balance), the spherical-cap bead model, the Furmidge sliding criterion and
 // Tate's law with the Harkins-Brown correction.

@@ -1,4 +1,4 @@
-// Shedding tear (seed 004 section 4.2 steps 1-5): surface coordinates, a closed outward tear on a
+// Shedding tear (Lin & Cheng 2013 section 4.2 steps 1-5): surface coordinates, a closed outward tear on a
 // skin mesh, never below the skin while the skin deforms, monotonic growth (step 5), upward-only
 // noise (step 4) and bitwise repeatability.
 #include <gtest/gtest.h>
@@ -109,7 +109,7 @@ TEST(SheddingTear, ClosedOutwardAndAboveTheSkinWhileTheSkinDeforms) {
         ASSERT_EQ(findMeshDefect(tear), "");
         ASSERT_EQ(findClosedMeshDefect(tear), "") << "t = " << t;
         EXPECT_GT(signedVolume(tear), 0.0) << "t = " << t;
-        // Seed 004 section 4.2 step 4: "the vertices cannot go below" - here, below the skin.
+        // Lin & Cheng 2013 section 4.2 step 4: "the vertices cannot go below" - here, below the skin.
         EXPECT_GE(lowestAboveSkin(tear, skin), 0.5f * params.baseOffset) << "t = " << t;
       }
     }
@@ -125,7 +125,7 @@ TEST(SheddingTear, BaseHoversAndEdgesMeetTheSkin) {
     highest = std::max(highest, v.z());
   }
   EXPECT_NEAR(lowest, params.baseOffset, 1e-7f);
-  // The head bulges above the body's thickness (seed 004 section 4.2 step 3).
+  // The head bulges above the body's thickness (Lin & Cheng 2013 section 4.2 step 3).
   EXPECT_GT(highest, params.baseOffset + params.thickness * 1.2f);
   EXPECT_LE(highest, params.baseOffset + params.thickness * (1.0f + params.headBulge) + 1e-7f);
   // Volume close to the lens cross-section (2/3 width thickness) times the length.
@@ -134,7 +134,7 @@ TEST(SheddingTear, BaseHoversAndEdgesMeetTheSkin) {
   EXPECT_LT(signedVolume(tear), 2.0 * body);
 }
 
-// Seed 004 section 4.2 step 3: the head is thicker than the body and its leading cap is narrowed
+// Lin & Cheng 2013 section 4.2 step 3: the head is thicker than the body and its leading cap is narrowed
 // to tipFraction of the width.
 TEST(SheddingTear, RoundedHeadAtTheLeadingEnd) {
   const TriangleMesh rest = flatSkin();

@@ -1,4 +1,4 @@
-// Contact angles per skin region for liquid tears (issue 5: skin 55-110 degrees, per region): path
+// Contact angles per skin region for liquid tears (water meets skin at 55-110 degrees, varying over the face): path
 // pieces naming a region (LiquidPathSample::contactAngleRegion) use its angles for the sliding
 // criterion, the bead's shape and the width of the trail it lays. Analytic planes, gravity -y.
 #include <gtest/gtest.h>

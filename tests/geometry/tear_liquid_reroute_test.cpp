@@ -1,5 +1,5 @@
-// Moving the liquid onto a new course of its flow path (issue 5: the path is "recomputed as the
-// face moves"): TearLiquidSimulation::reroute carries beads and film by an arc-length map and
+// Moving the liquid onto a new course of its flow path (the path is traced again as the face
+// moves): TearLiquidSimulation::reroute carries beads and film by an arc-length map and
 // conserves the volume; FlowPathTransfer computes that map between two traced courses (exact on
 // a plane: the projection of one straight course onto another).
 #include <gtest/gtest.h>

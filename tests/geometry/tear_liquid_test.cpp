@@ -1,4 +1,4 @@
-// The liquid state of tears along a flow path (issue 5): welling, stick and slide, the trail film
+// The liquid state of tears along a flow path: welling, stick and slide, the trail film
 // and its drying, coalescence, hanging drops and their ballistic fall, volume bookkeeping and
 // determinism. Paths are analytic planes (gravity -y) so every expectation has a closed form.
 #include <gtest/gtest.h>

@@ -77,8 +77,8 @@ TEST_F(DefaultShotStory, TheHangingDropLetsGoOnCameraAndFallsClearOfTheSkin) {
 }
 
 TEST_F(DefaultShotStory, BeadsStopOnTheCheekAndTakeSecondsFromTheLidToTheJawLine) {
-  // Issue 16: a tear takes 1-4 s from the lower lid to the jaw line (~8 cm down), with visible
-  // stops. Per bead: the time from its overflow until its liquid (the bead, or the bead it merged
+  // On film a crying tear takes 1-4 s from the lower lid to the jaw line (~8 cm down), with
+  // visible stops. Per bead: the time from its overflow until its liquid (the bead, or the bead it merged
   // into) is 8 cm down the path; and the longest it stood still between 1 and 8 cm.
   constexpr double kJawLine = 0.08, kStep = 0.25;  // metres; frames
   LiquidTearRun run(*shot_, tear());

@@ -1,4 +1,4 @@
-// Simulated flesh in shots (issue 18): the "flesh" key builds a tetrahedral volume under skin
+// Simulated flesh in shots: the "flesh" key builds a tetrahedral volume under skin
 // regions and moves the rendered skin with it. The flesh lags a sudden nod of the head
 // and settles on the rig's pose; a still face is left bitwise as the rig made it; the skin
 // outside the regions never moves; a frame built alone is the frame built in sequence; and the

@@ -1,4 +1,4 @@
-// Liquid tears and the face around them (issue 5): the lacrimal fluid strip (M_LacrimalFluid)
+// Liquid tears and the face around them: the lacrimal fluid strip (M_LacrimalFluid)
 // swells by the simulated meniscus volume near the tear's source and relaxes after the overflow;
 // the skin along the flow path is refined ("trailRefinement") so the per-vertex wet trail
 // resolves; exact messages for a bad "trailRefinement".

@@ -1,4 +1,4 @@
-// Rivulets in shots (issue 16, item 2): a liquid tear welling fast enough runs down the cheek as
+// Rivulets in shots: a liquid tear welling fast enough runs down the cheek as
 // one closed water mesh lying just under the skin it wets, drawn with the volume the simulation
 // holds; the shot's "rivulet" keys and their messages.
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
-// The course of a liquid tear's flow path follows the moving face (issue 5: "recomputed as the
-// face moves"). On an analytic surface turned a little every frame (a test LiquidTearSurface):
+// The course of a liquid tear's flow path follows the moving face (it is traced
+// again as the face moves). On an analytic surface turned a little every frame (a test LiquidTearSurface):
 // each frame's course is that pose's exact steepest descent, a bead's track bends as the surface
 // turns, a frame alone equals the frame in a sequence, and the volume is conserved across the
 // course changes. On the default shot, the course moves with the head.

@@ -1,5 +1,5 @@
 // Skin that pins a liquid tear's contact line harder in some patches and softer in others
-// ("pinning", issue 16: beads stop and start): the course's samples carry the factor of the skin
+// ("pinning": beads stop and start): the course's samples carry the factor of the skin
 // under them, a tear on such skin stops where a tear on uniform skin runs on, a frame alone equals
 // it in a sequence, and bad values get exact messages.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Contact angles per skin region for liquid tears in shots ("contactAngleRegions", issue 5): the
+// Contact angles per skin region for liquid tears in shots ("contactAngleRegions"): the
 // course's samples near a region's centre carry its angles, the bead meshes there are drawn at its
 // mean angle (measured on the mesh), a frame alone equals it in a sequence, and bad regions get
 // exact messages.

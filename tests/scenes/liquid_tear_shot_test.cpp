@@ -1,4 +1,4 @@
-// Liquid tears in shots ("tears" of type "liquid", issue 5): the flow path from the inner eye
+// Liquid tears in shots ("tears" of type "liquid"): the flow path from the inner eye
 // corner traced on the smoothed skin, beads as closed outward meshes on the posed skin that appear
 // at the overflow and run down, frames independent of their order, the face's motion followed,
 // falling drops as ringing meshes, the volume budget, and exact messages for bad input.

@@ -1,4 +1,4 @@
-// Shedding tears in shots ("tears" of type "shedding", seed 004 section 4.2): growth from their
+// Shedding tears in shots ("tears" of type "shedding", Lin & Cheng 2013 section 4.2): growth from their
 // start frame, a closed outward mesh on every frame, following the posed and detailed face, motion
 // blur, repeatability and exact messages for bad input.
 #include <gtest/gtest.h>

@@ -41,7 +41,7 @@ int countOf(const std::string& text, const std::string& part) {
 }
 
 // The ICT face with two tears that change the topology: a shedding tear that grows down the cheek
-// (seed 004 section 4.2; a longer mesh every frame, so the Embree scene is rebuilt each time) and a
+// (Lin & Cheng 2013 section 4.2; a longer mesh every frame, so the Embree scene is rebuilt each time) and a
 // liquid tear welling at the inner corner of the right eye (beads appear and grow), over a
 // subdivided forehead detail (large posed meshes, as in the default shot).
 std::filesystem::path writeFaceTearShot(const std::filesystem::path& dir, int frameCount) {

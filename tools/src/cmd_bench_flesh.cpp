@@ -1,5 +1,5 @@
 // `lacrima bench --flesh`: what the simulated flesh costs a frame, at chosen resolutions of its
-// volume (issue 18 asks for the ICT face at about 20k and 100k tetrahedra). Each size is simulated
+// volume (the ICT face at about 20k and 100k tetrahedra, say). Each size is simulated
 // from the shot's first frame, every step, states not filed; the report gives the median and
 // slowest frame, and the Newton and conjugate-gradient iterations a step took.
 #include <tbb/task_arena.h>

@@ -1,5 +1,5 @@
-// `lacrima bench --sph`: what the SPH liquid costs (issue 19 asks for particle updates per second
-// at 100k particles on 2 cores). A dam break (a water block at one end of a tank three times its
+// `lacrima bench --sph`: what the SPH liquid costs (particle updates per second at 100k
+// particles on 2 cores, say). A dam break (a water block at one end of a tank three times its
 // length, 2.5 mm particles) is stepped for --steps steps after one unmeasured step; the report gives
 // the median step, the particle updates per second over the measured steps, the solvers'
 // iterations, and the milliseconds to surface the liquid for a frame (sph_surface.hpp).

@@ -1,5 +1,5 @@
-// `lacrima bench --tracking`: what the face tracker costs (issue 21 asks for at least 20 frames a
-// second on 2 cores, against the seed's 20 Hz: Weise, Bouaziz, Li & Pauly 2011, rigid stage under
+// `lacrima bench --tracking`: what the face tracker costs (a live take needs at least 20 frames
+// a second on 2 cores, Weise et al.'s own rate: Weise, Bouaziz, Li & Pauly 2011, rigid stage under
 // 5 ms, non-rigid 45 ms a frame on their machine). A synthetic take of the ICT face (keyed
 // archetypal expressions with blinks, the head turning; rasterised depth with a Kinect's noise,
 // landmarks jittered by up to 1 pixel) is tracked with lacrima's prior and with one trained at the

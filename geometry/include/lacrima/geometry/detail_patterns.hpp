@@ -1,6 +1,6 @@
 #pragma once
 // Detail pattern functions: animated wrinkles, dimples and eye-pouch trembling displaced onto a
-// region of a face mesh (seed 004, section 3: "Adding Detailed Animated Expressions").
+// region of a face mesh (Lin & Cheng 2013, section 3: "Adding Detailed Animated Expressions").
 //
 // The paper writes every basic pattern as an implicit surface p = h(x, y, t) - z in a local frame
 // (x, y tangent, z normal); the functions below return the displacement height h. Their
@@ -70,28 +70,28 @@ namespace lacrima {
 // Floor for the divisors and the log argument of the patterns (see the guards above).
 inline constexpr double kDetailPatternEpsilon = 1e-6;
 
-// seed 004 eq. 1 (forehead wrinkles), the paper's value:
+// Lin & Cheng 2013 eq. 1 (forehead wrinkles), the paper's value:
 //   e^(alpha * |sin((x^2 + y^2) - t sin(theta) - sin(beta theta))^2|), theta = atan2(y, x).
 // alpha: depth of the wrinkles; beta: their style.
 float foreheadWrinklePaperHeight(float x, float y, float t, float alpha, float beta);
-// seed 004 eq. 1 minus its rest level 1 (see above): 0 on the wrinkle lines, sign of alpha.
+// Lin & Cheng 2013 eq. 1 minus its rest level 1 (see above): 0 on the wrinkle lines, sign of alpha.
 float foreheadWrinkleHeight(float x, float y, float t, float alpha, float beta);
 
-// seed 004 eq. 2 (eye-corner wrinkles): alpha * e^(beta * |sqrt(x^2 + y^2) - t sin(gamma theta)|).
+// Lin & Cheng 2013 eq. 2 (eye-corner wrinkles): alpha * e^(beta * |sqrt(x^2 + y^2) - t sin(gamma theta)|).
 // alpha: depth; beta: a preset constant; gamma: number of wrinkles.
 float eyeCornerWrinkleHeight(float x, float y, float t, float alpha, float beta, float gamma);
 
-// seed 004 eq. 3 (cheek wrinkles): alpha * sin(beta * sqrt(x^2 + y^2) + t).
+// Lin & Cheng 2013 eq. 3 (cheek wrinkles): alpha * sin(beta * sqrt(x^2 + y^2) + t).
 // alpha: depth; beta: number of wrinkles.
 float cheekWrinkleHeight(float x, float y, float t, float alpha, float beta);
 
-// seed 004 eq. 4 (frown): alpha * sin(x y / (beta + t)). alpha: depth; beta: wrinkle spacing.
+// Lin & Cheng 2013 eq. 4 (frown): alpha * sin(x y / (beta + t)). alpha: depth; beta: wrinkle spacing.
 float frownHeight(float x, float y, float t, float alpha, float beta);
 
-// seed 004 eq. 5 (dimple): log(x^2 + y^2 + t) (natural log; no parameters in the paper).
+// Lin & Cheng 2013 eq. 5 (dimple): log(x^2 + y^2 + t) (natural log; no parameters in the paper).
 float dimpleHeight(float x, float y, float t);
 
-// seed 004 eq. 6 (eye-pouch trembling): |(cos(x + alpha t) + cos(y + beta t))^gamma| / t.
+// Lin & Cheng 2013 eq. 6 (eye-pouch trembling): |(cos(x + alpha t) + cos(y + beta t))^gamma| / t.
 // alpha, beta: trembling style; gamma: height of the skin sticking out.
 float eyePouchHeight(float x, float y, float t, float alpha, float beta, float gamma);
 

@@ -1,8 +1,8 @@
 #pragma once
-// The dripping tear of seed 004 section 4.1 (a drop that leaves the face and falls), as a closed,
+// The dripping tear of Lin & Cheng 2013 section 4.1 (a drop that leaves the face and falls), as a closed,
 // outward-oriented, watertight triangle mesh whose shape changes with time.
 //
-// Seed 004 eq. 7:
+// Lin & Cheng 2013 eq. 7:
 //   x = alpha sin(u) cos(v) / (t cos(u)),   y = alpha sin(u) sin(v) / (t cos(u)),
 //   z = beta t cos(u) + lambda t.
 //
@@ -74,7 +74,7 @@ struct DrippingTearParams {
   float minTime = 0.25f;        // seconds: the shape uses max(t, minTime) (division guard)
 };
 
-// eq. 7 itself at (u, v, t) with no guard (seed 004 eq. 7); the caller keeps t != 0 and
+// eq. 7 itself at (u, v, t) with no guard (Lin & Cheng 2013 eq. 7); the caller keeps t != 0 and
 // cos(u) != 0. Used by makeDrippingTear for the head and handy for checking it.
 Vec3 drippingTearEq7(const DrippingTearParams& p, float u, float v, float t);
 

@@ -1,5 +1,5 @@
 #pragma once
-// Shape oscillation of a free-falling tear drop (issue 5, "Tears that obey physics"): a drop that
+// Shape oscillation of a free-falling tear drop: a drop that
 // leaves the skin stretched along gravity rings in its fundamental Rayleigh/Lamb mode n = 2
 // (prolate <-> oblate about its axis) while it falls, and viscosity damps the ringing.
 //

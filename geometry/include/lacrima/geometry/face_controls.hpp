@@ -1,5 +1,5 @@
 #pragma once
-// Animator controls over a face rig: seed 002 eq. 2, x(w) = T(j(w))(n + B b(w)).
+// Animator controls over a face rig: Bao et al. 2019 eq. 2, x(w) = T(j(w))(n + B b(w)).
 // Each control is a slider with a range; it maps linearly to blendshape weights b and joint
 // parameters j. This file computes b(w) and j(w); FaceRig evaluates x.
 #include <map>

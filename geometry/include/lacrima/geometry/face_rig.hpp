@@ -1,6 +1,6 @@
 #pragma once
 // A face rig over a loaded glTF face: blendshapes, then head, jaw and eye-gaze joints.
-// Seed 002, eq. 1: x(b, j) = T(j)(n + B b), evaluated per primitive.
+// Bao et al. 2019, eq. 1: x(b, j) = T(j)(n + B b), evaluated per primitive.
 #include <string>
 #include <vector>
 

@@ -1,6 +1,6 @@
 #pragma once
-// Carrying liquid from one course of a flow path to the next when the surface moves (issue 5: the
-// path is "recomputed as the face moves"). Both courses are FlowPaths on meshes of one topology
+// Carrying liquid from one course of a flow path to the next when the surface moves (the path is
+// traced again as the face moves, and the liquid on it must stay where it was on the skin). Both courses are FlowPaths on meshes of one topology
 // (the skin posed at two frames): a point at arc length s of the old course is a material point of
 // the surface (a triangle and barycentric weights); it is placed on the surface as it is now and
 // projected to the nearest point of the new course, whose arc length is the image of s. A bead

@@ -130,7 +130,7 @@ struct GltfAsset {
 // counts, key times, node / sampler indices, target paths, interpolations).
 GltfAsset loadGltfAsset(const std::filesystem::path& path);
 
-// Neutral mesh plus weighted sparse deltas: x = n + B b (seed 002, eq. 1 without skinning).
+// Neutral mesh plus weighted sparse deltas: x = n + B b (Bao et al. 2019, eq. 1 without skinning).
 // weights is indexed like asset.targetNames (missing trailing weights count as zero).
 // Normals are recomputed (welded by primitive.weldMap) when a non-zero weight moves a vertex of
 // this primitive; otherwise the result is bitwise the neutral mesh. A non-finite weight throws

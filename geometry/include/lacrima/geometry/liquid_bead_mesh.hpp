@@ -1,5 +1,5 @@
 #pragma once
-// The water mesh of a bead sitting on the skin (issue 5, "Shape": a spherical-cap cross-section,
+// The water mesh of a bead sitting on the skin (a spherical-cap cross-section,
 // elongated by gravity; see BeadShape in sessile_drop.hpp): a closed, outward-oriented cap draped
 // over the skin so that its flat side follows the skin at a small offset: above it, or (negative)
 // just under it, so the skin under the bead lies inside the water as wetted skin does.

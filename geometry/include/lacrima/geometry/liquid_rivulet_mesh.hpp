@@ -1,5 +1,5 @@
 #pragma once
-// The water mesh of a rivulet running over the skin (issue 16, item 2; the flow in rivulet.hpp): a
+// The water mesh of a rivulet running over the skin (the flow in rivulet.hpp): a
 // closed, outward-oriented tube swept along stations on the skin. At each station the
 // cross-section is the rivulet's parabola h(y) = height (1 - (y / halfWidth)^2) over the base
 // y in [-halfWidth, halfWidth] (Duffy & Moffatt 1995's small-width profile), in the plane spanned

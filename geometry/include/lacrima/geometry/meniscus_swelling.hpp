@@ -1,5 +1,5 @@
 #pragma once
-// The lacrimal tear meniscus swelling as it fills (issue 5, "Tears that obey physics"): the thin
+// The lacrimal tear meniscus swelling as it fills: the thin
 // strip of tear fluid along the lid margins (the ICT face's M_LacrimalFluid) is thickened near the
 // tear's source by the volume the simulated meniscus holds (TearLiquidSimulation::meniscusVolume),
 // and thins back when it overflows.

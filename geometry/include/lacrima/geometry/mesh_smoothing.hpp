@@ -1,7 +1,7 @@
 #pragma once
 // Low-pass smoothing of a mesh's positions that keeps its topology (same vertices, same
 // triangles), e.g. to trace a flow path over the large-scale shape of a face instead of its
-// tessellation pits (issue 5): the path's SurfacePoints are then valid on the original mesh too.
+// tessellation pits: the path's SurfacePoints are then valid on the original mesh too.
 //
 // Taubin's lambda/mu smoothing (G. Taubin, "A signal processing approach to fair surface design",
 // SIGGRAPH 1995, sections 3-4): each iteration is a shrinking step x += lambda L(x) followed by an

@@ -1,5 +1,5 @@
 #pragma once
-// Moving least squares (MLS) approximation, as used by the shedding tear's step four in seed 004
+// Moving least squares (MLS) approximation, as used by the shedding tear's step four in Lin & Cheng 2013
 // (section 4.2, eqs. (8)-(14)): the noisy top surface of a tear is smoothed by fitting, at every
 // evaluation point x, a polynomial of total degree r to all data by weighted least squares with
 // weights that fall off with the distance to x.
@@ -12,9 +12,9 @@
 namespace lacrima {
 
 // f(x) = argmin over polynomials F of total degree r in d dimensions of
-//   sum_i w(|x - p_i|) |F(p_i) - f_i|^2                                       (seed 004 eq. 8, 10)
-// with w(theta) = 1 / (theta^2 + epsilon^2)                                  (seed 004, after eq. 10)
-// evaluated at x as F(x) = b^T(x) c(x) with A(x) c(x) = sum_i w_i b(p_i) f_i (seed 004 eqs. 9, 12-14).
+//   sum_i w(|x - p_i|) |F(p_i) - f_i|^2                                       (Lin & Cheng 2013 eq. 8, 10)
+// with w(theta) = 1 / (theta^2 + epsilon^2)                                  (Lin & Cheng 2013, after eq. 10)
+// evaluated at x as F(x) = b^T(x) c(x) with A(x) c(x) = sum_i w_i b(p_i) f_i (Lin & Cheng 2013 eqs. 9, 12-14).
 // (Eq. 8 as printed has no square on the residual norm; eq. 10 and the normal equations 11-14 that
 // the paper solves have it, so the square is used.)
 //
@@ -44,7 +44,7 @@ class MovingLeastSquares {
   int dimension() const { return int(points_.cols()); }
   int degree() const { return degree_; }
   double epsilon() const { return epsilon_; }
-  // m = (d+r)!/(d! r!), the number of monomials of total degree <= r in d variables (seed 004,
+  // m = (d+r)!/(d! r!), the number of monomials of total degree <= r in d variables (Lin & Cheng 2013,
   // after eq. 10).
   static int basisSize(int dimension, int degree);
 
@@ -56,7 +56,7 @@ class MovingLeastSquares {
   double epsilon_;
 };
 
-// The shedding tear's use (seed 004 section 4.2 step four): per-vertex heights along the base
+// The shedding tear's use (Lin & Cheng 2013 section 4.2 step four): per-vertex heights along the base
 // surface normal, given at the vertices' 2D parameter coordinates (u, v), smoothed by MLS of
 // total degree `degree` in (u, v) and evaluated back at every vertex. `epsilon` is in (u, v)
 // units: larger values smooth more, 0 interpolates (returns the heights unchanged). The tear's

@@ -1,5 +1,5 @@
 #pragma once
-// Performance-capture blendshape weight tracks (seed 003: a tracker's output is a sequence of
+// Performance-capture blendshape weight tracks (Weise et al. 2011: a tracker's output is a sequence of
 // blendshape weights over time), read from CSV and resampled to the render frame rate.
 #include <filesystem>
 #include <map>
@@ -46,11 +46,11 @@ PerformanceTrack readPerformanceTrack(const std::filesystem::path& path, const s
 PerformanceTrack resampleTrack(const PerformanceTrack& track, float targetFps);
 
 struct AdaptiveFilterOptions {
-  int window = 5;          // k, frames looked back (seed 003 uses k = 5)
+  int window = 5;          // k, frames looked back (Weise et al. 2011 use k = 5)
   float sharpness = 20.0f;  // H: larger means less smoothing for a given amount of motion
 };
 
-// Seed 003's temporal filter, applied to the whole weight vector of each frame (it filters the
+// Weise et al. (2011)'s temporal filter, applied to the whole weight vector of each frame (it filters the
 // rigid pose there; the same filter keeps weight jitter down without lagging fast expressions):
 // a causal weighted average over the last k frames whose weights decay faster when the window
 // moved more. Throws InputError for window < 0, non-finite or negative sharpness.

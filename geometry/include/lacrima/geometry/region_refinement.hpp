@@ -1,7 +1,7 @@
 #pragma once
 // Local subdivision of a triangle mesh: a selected set of triangles is refined (1-to-4 split,
 // linear or Loop), the triangles around it are split so that no T-junction appears, and the rest
-// stays as it was. Fine skin details (seed 004, section 3) need more vertices than a face mesh
+// stays as it was. Fine skin details (Lin & Cheng 2013, section 3) need more vertices than a face mesh
 // has, but only where the detail is.
 //
 // The refinement is returned as stencils: every vertex of the refined mesh is a sparse weighted

@@ -1,5 +1,5 @@
 #pragma once
-// A rivulet: tear liquid running down the skin as one continuous stream (issue 16, item 2), its
+// A rivulet: tear liquid running down the skin as one continuous stream, its
 // cross-section and its flow rate.
 //
 // Duffy & Moffatt 1995 ("Flow of a viscous trickle on a slowly varying incline", Chem. Eng. J.

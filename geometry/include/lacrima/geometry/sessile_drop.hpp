@@ -1,10 +1,9 @@
 #pragma once
-// Physics building blocks for tears sitting on, sliding over and hanging from skin (issue 5,
-// "Tears that obey physics"): fluid constants, the exact axisymmetric sessile drop of the
-// Young-Laplace equation, a spherical-cap bead model, the Furmidge stick/slide criterion and
-// Tate's law for a hanging drop. Pure functions of SI values (metres, kg, seconds, radians); no
-// meshes, no shots. Bad arguments (non-positive volume, contact angle outside (0, pi), ...)
-// throw InputError naming the argument.
+// Physics building blocks for tears sitting on, sliding over and hanging from skin: fluid
+// constants, the exact axisymmetric sessile drop of the Young-Laplace equation, a spherical-cap
+// bead model, the Furmidge stick/slide criterion and Tate's law for a hanging drop. Pure functions
+// of SI values (metres, kg, seconds, radians); no meshes, no shots. Bad arguments (non-positive
+// volume, contact angle outside (0, pi), ...) throw InputError naming the argument.
 //
 // Geometry convention (Bashforth & Adams 1883; Hoorfar & Neumann 2006, Adv. Colloid Interface
 // Sci. 121:25, "Recent progress in ADSA", the Laplace equation section): the drop sits on a horizontal plane, its

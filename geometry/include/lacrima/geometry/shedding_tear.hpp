@@ -1,5 +1,5 @@
 #pragma once
-// The shedding tear of seed 004 section 4.2 (a tear that runs down the skin), as a closed,
+// The shedding tear of Lin & Cheng 2013 section 4.2 (a tear that runs down the skin), as a closed,
 // outward-oriented, watertight triangle mesh lying on a skin mesh.
 //
 // Surface coordinates
@@ -9,14 +9,14 @@
 // its vertices are and how thick it is there) and then placed on any mesh with the same topology
 // (a deformed, bent or scaled skin): each vertex follows its skin triangle exactly.
 //
-// Construction (seed 004 section 4.2)
+// Construction (Lin & Cheng 2013 section 4.2)
 // -----------------------------------
-// * Seed 004 section 4.2 step 1 (base surface): the tear path is a polyline of SurfacePoints. It is sampled every
+// * Step 1 (base surface): the tear path is a polyline of SurfacePoints. It is sampled every
 //   sampleSpacing of (rest) arc length; at each sample, acrossSamples points are spread over the
 //   width across the path in the skin's tangent plane and projected back to the nearest point of
 //   the skin. The result is a rows x acrossSamples grid of SurfacePoints, finer than the face mesh
 //   (the paper's "linear subdivision" of the extracted area).
-// * Seed 004 section 4.2 step 2 (top surface and walls): every grid point gets a thickness; the top surface is the base
+// * Step 2 (top surface and walls): every grid point gets a thickness; the top surface is the base
 //   offset along the skin triangle's geometric normal by it. The across profile is a parabola,
 //     thickness = maxThickness * g(a) * (1 - (2 v / W(a))^2),   v in [-W(a)/2, W(a)/2],
 //   thickest in the middle and zero at both edges, where top and base share their vertices (the
@@ -24,21 +24,21 @@
 //   path). The two ends of the strip are closed by lens-shaped caps. The base does not lie on the
 //   skin but baseOffset above it along the same normal, so the water never coincides with the skin
 //   surface (no z-fighting, and rays leaving the skin enter the water cleanly).
-// * Seed 004 section 4.2 step 3 (tear head): over the last headLength of the grown path (x from 0 to 1), the thickness
+// * Step 3 (tear head): over the last headLength of the grown path (x from 0 to 1), the thickness
 //   factor g rises smoothly from 1 to 1 + headBulge over x in [0, 1/2] (smoothstep), then both g and
 //   the width factor W(a)/width close like a quarter ellipse, sqrt(1 - (2x - 1)^2), floored at
 //   tipFraction so the leading cap stays a small non-degenerate lens: a bulging, rounded head.
 //   Elsewhere g = 1 and W = width. Optionally (tailLength > 0) the start of the strip tapers the
 //   same way over its first tailLength (a quarter ellipse from tipFraction up to 1), so the tear
 //   emerges from the skin at its source rather than starting with a blunt cap.
-// * Seed 004 section 4.2 step 4 (noise): each interior grid point is raised with probability noiseDensity by a random
+// * Step 4 (noise): each interior grid point is raised with probability noiseDensity by a random
 //   bump in [noiseAmplitude / 2, noiseAmplitude] (a hash of seed and grid index, so the same seed
 //   gives bitwise the same tear, and a grid point keeps its bump while the tear grows). The bump
-//   field is smoothed by moving least squares (smoothHeightField, seed 004 eqs. 8-14, in (arc
+//   field is smoothed by moving least squares (smoothHeightField, Lin & Cheng 2013 eqs. 8-14, in (arc
 //   length, across) coordinates, epsilon = smoothingEpsilon), clamped at zero, and multiplied by
 //   the across parabola so the edges stay on the skin. Noise only raises: the top never goes
 //   below the un-noised top.
-// * Seed 004 section 4.2 step 5 (growth): only the path up to arc length h = start + speed * t (clamped to the path's
+// * Step 5 (growth): only the path up to arc length h = start + speed * t (clamped to the path's
 //   length) is built; grid rows sit at fixed arc lengths 0, sampleSpacing, 2 sampleSpacing, ...
 //   plus one row at h, so a longer tear contains the rows of a shorter one. With h < minimum
 //   length (sampleSpacing / 4) the tear is empty (no vertices).

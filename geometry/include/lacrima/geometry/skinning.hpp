@@ -22,13 +22,13 @@ Mat3 eulerDegreesToRotation(const Vec3& eulerDegrees);
 Affine3 jointTransform(const RigidJoint& joint, const Vec3& pivot);
 
 // Bone weights of every vertex, dense: weights[v * boneCount + k] is the weight of bone k on
-// vertex v. Rows should sum to 1 (seed 002: "w: weights of each vertex to each bone, sum = 1").
+// vertex v. Rows should sum to 1 (a vertex's bone weights, as in Bao et al. 2019).
 struct SkinWeights {
   size_t boneCount = 0;
   std::vector<float> weights;
 };
 
-// Seed 002, linear blend skinning: v' = sum_k w_k T_k v, in place.
+// Bao et al. 2019, linear blend skinning: v' = sum_k w_k T_k v, in place.
 // Throws std::invalid_argument when the weights do not have one row of boneCount per position
 // or boneCount differs from bones.size().
 void applyLinearBlendSkinning(std::vector<Vec3>& positions, const std::vector<Affine3>& bones,

@@ -1,7 +1,7 @@
 #pragma once
 // The path a drop of water takes down a triangle mesh under gravity: steepest descent on the
-// piecewise-linear surface, traced exactly triangle by triangle (issue 5, "flow path"). It can
-// supply the tear path that seed 004 section 4.2 step 1 takes as given (resampleFlowPath gives
+// piecewise-linear surface, traced exactly triangle by triangle. It can
+// supply the tear path that Lin & Cheng 2013 section 4.2 step 1 takes as given (resampleFlowPath gives
 // the polyline of SurfacePoints that buildSheddingTearStrip expects).
 //
 // Method

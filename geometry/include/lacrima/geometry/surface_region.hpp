@@ -1,5 +1,5 @@
 #pragma once
-// A region of a triangle mesh around a polyline, extracted as a mesh of its own (seed 004 section
+// A region of a triangle mesh around a polyline, extracted as a mesh of its own (Lin & Cheng 2013 section
 // 4.2 step 1: "the region the tear passes through is extracted from the face"), so that
 // nearest-point queries near the polyline look at a few hundred triangles instead of the whole
 // face, and give exactly what they give on the whole mesh.

@@ -1,9 +1,9 @@
 #pragma once
-// The liquid state of tears running along one flow path on the skin (issue 5, "Tears that obey
-// physics"): the lacrimal meniscus filling and overflowing, beads that stick and slide, the wet
-// trail they leave and its drying, hanging drops that detach and fall. Deterministic: the state
-// at time t is simulated forward from t = 0 with a fixed time step, so it is a pure function of
-// t and the input (any frame can be computed alone and gives bitwise the same answer).
+// The liquid state of tears running along one flow path on the skin: the lacrimal meniscus filling
+// and overflowing, beads that stick and slide, the wet trail they leave and its drying, hanging
+// drops that detach and fall. Deterministic: the state at time t is simulated forward from t = 0
+// with a fixed time step, so it is a pure function of t and the input (any frame can be computed
+// alone and gives bitwise the same answer).
 //
 // Laws (SI units throughout; sources and modelling choices):
 // * Welling: the source adds `rate` m^3/s during [start, end) to the meniscus. When the meniscus
@@ -69,14 +69,14 @@
 //   modelling choice for the break-up criterion) spaced by rivuletBreakupSpacing at the width it
 //   ran at, each bead at the volume-weighted centre of its stretch; they stick or slide as any bead.
 // * A bead whose volume falls below minBeadVolume has run out: its rest joins the film (Dried).
-// * Contact angles per skin region (issue 5: skin 55-110 degrees, per region): each path piece
-//   has the contact angles of its start sample (LiquidPathSample::contactAngleRegion, an index
-//   into params.contactAngleRegions; -1: params.contactAngles). Every law above that depends on
-//   the angles (retention and the sliding criterion, terminal speed, base width c_w V^(1/3) and
-//   so the trail's width and consumption, bead shape, hanging contact radius, detach amplitude)
-//   uses the angles of the piece under the bead's centre, for the whole step. The angles change
-//   sharply at a piece boundary (modelling choice: no blend across a region's border); a bead
-//   entering a region of larger hysteresis can pin there, one of smaller hysteresis can set off.
+// * Contact angles per skin region (water meets skin at 55-110 degrees, varying over the face): each
+//   path piece has the contact angles of its start sample (LiquidPathSample::contactAngleRegion, an
+//   index into params.contactAngleRegions; -1: params.contactAngles). Every law above that depends
+//   on the angles (retention and the sliding criterion, terminal speed, base width c_w V^(1/3) and
+//   so the trail's width and consumption, bead shape, hanging contact radius, detach amplitude) uses
+//   the angles of the piece under the bead's centre, for the whole step. The angles change sharply
+//   at a piece boundary (modelling choice: no blend across a region's border); a bead entering a
+//   region of larger hysteresis can pin there, one of smaller hysteresis can set off.
 //
 // * Pinning: skin is not a uniform surface; its contact-angle hysteresis varies from place to
 //   place (sebum, vellus hair, furrows, pores), so a bead slides on, slows, stops where the skin
@@ -304,13 +304,12 @@ class TearLiquidSimulation {
   void step();
 
   // Moves the liquid onto a new course: the flow path traced again on the surface as it has moved
-  // (issue 5, "recomputed as the face moves"). newArcLength(s) is the arc length on `path` of the
-  // surface's material point at arc length s of the current path (e.g. FlowPathTransfer). Every
-  // bead goes to the image of its arc length (a bead at the source stays at 0); a hanging bead
-  // that is no longer at a drip site is released (it slides on if the new slope carries it);
-  // each trail cell's film is spread over the image of the cell (volume and width kept, so the
-  // film thins where the course stretched). Volumes are unchanged. Throws InputError for an
-  // invalid path (the simulation is then unchanged).
+  // (the face moves). newArcLength(s) is the arc length on `path` of the surface's material point at
+  // arc length s of the current path (e.g. FlowPathTransfer). Every bead goes to the image of its
+  // arc length (a bead at the source stays at 0); a hanging bead that is no longer at a drip site is
+  // released (it slides on if the new slope carries it); each trail cell's film is spread over the
+  // image of the cell (volume and width kept, so the film thins where the course stretched). Volumes
+  // are unchanged. Throws InputError for an invalid path (the simulation is then unchanged).
   void reroute(std::vector<LiquidPathSample> path, const std::function<double(double)>& newArcLength);
   const std::vector<LiquidPathSample>& path() const { return input_.path; }
 

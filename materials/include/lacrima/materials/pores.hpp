@@ -1,6 +1,6 @@
 #pragma once
 // Procedural skin pores: a height field of small pits that tilts the shading normal so that
-// specular highlights break up (issue 6: "fine-scale normal variation so highlights break up").
+// specular highlights break up, as they do on real skin.
 //
 // Field: one pore per cell of a cubic lattice of spacing `scale` (metres), centred at a point
 // jittered uniformly inside its cell by a hash of the cell (Worley 1996, "A Cellular Texture

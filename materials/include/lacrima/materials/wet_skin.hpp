@@ -1,6 +1,6 @@
 #pragma once
-// Wet skin: the skin BSDF (skin.hpp) partly covered by a thin water film (a tear's trail; issue 5
-// "Wet skin"). The renderer builds one per hit from the film thickness there (MeshInstance::wetness).
+// Wet skin: the skin BSDF (skin.hpp) partly covered by a thin water film (a tear's trail). The
+// renderer builds one per hit from the film thickness there (MeshInstance::wetness).
 //
 // Coverage: c = 1 - exp(-d / d0), d = film thickness, d0 = kWetFilmCoverageThickness = 2 um
 // (modelling choice: a film thinner than a few micrometres breaks up into patches on the skin's

@@ -19,7 +19,7 @@ namespace lacrima {
 // shot's first frame or an earlier wellStart), clamped at 0.
 double liquidTearSeconds(const Shot& shot, const ShotLiquidTear& tear, double frame);
 
-// ---- The course: the flow path re-traced as the face moves (issue 5) ---------------------------
+// ---- The course: the flow path re-traced as the face moves -------------------------------------
 
 // The surface a tear runs over, posed at integer frames: the real skin of its primitive and the
 // smoothed copy (same topology) the flow path is traced on.

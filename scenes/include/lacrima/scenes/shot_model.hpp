@@ -78,7 +78,7 @@ struct AssetChannel {
   AnimatedFloat value;
 };
 
-// A performance-capture weight track (seed 003) bound to an asset: resampled to the shot's fps
+// A performance-capture weight track (Weise et al. 2011) bound to an asset: resampled to the shot's fps
 // and optionally filtered at load; sample i plays at shot frame startFrame + i.
 struct ShotPerformance {
   static constexpr size_t kNone = size_t(-1);
@@ -190,7 +190,7 @@ struct ShotSurfaceAnchor {
   Vec2 uv = Vec2::Zero();     // Uv: in the part's TEXCOORD_0
 };
 
-// A dripping tear (seed 004 section 4.1, eq. 7; docs/shot-format.md "tears"): from startFrame on,
+// A dripping tear (Lin & Cheng 2013 section 4.1, eq. 7; docs/shot-format.md "tears"): from startFrame on,
 // a drop mesh at t = (frame - startFrame) / fps seconds leaves the skin point `origin` along
 // `gravity`. Before startFrame there is no drop.
 struct ShotTear {
@@ -212,7 +212,7 @@ struct ShotTear {
   double secondsAt(double frame, double fps) const { return (frame - startFrame) / fps; }
 };
 
-// A shedding tear (seed 004 section 4.2; docs/shot-format.md "tears"): a strip of water running
+// A shedding tear (Lin & Cheng 2013 section 4.2; docs/shot-format.md "tears"): a strip of water running
 // over the skin along `path`, grown to arc length h = start + speed t at t = (frame - startFrame)
 // / fps seconds, placed on the part's posed primitive (after details) so it follows the face.
 struct ShotSheddingTear {
@@ -225,7 +225,7 @@ struct ShotSheddingTear {
   uint32_t materialId = 0;
   std::string pointer;         // the tear in the shot file ("/tears/2"), for problems found resolving it
   // Resolved by loadShot from the part posed at the shot's first frame (the rest skin): the one
-  // primitive all path points snap to, the rest skin's triangles around the path (seed 004
+  // primitive all path points snap to, the rest skin's triangles around the path (Lin & Cheng 2013
   // section 4.2 step 1: the extracted region) and the snapped path on that region.
   size_t primitive = 0;
   std::shared_ptr<const SurfaceRegion> region;
@@ -238,7 +238,7 @@ struct ShotSheddingTear {
 class LiquidTearCourses;    // liquid_tear.hpp
 class LiquidTearRunKeeper;  // liquid_tear.hpp
 
-// A liquid tear (issue 5; docs/shot-format.md "Liquid tears"): tear fluid welling at a skin point
+// A liquid tear (docs/shot-format.md "Liquid tears"): tear fluid welling at a skin point
 // and running down the flow path from it as beads that stick, slide, leave a drying film, hang and
 // drip (TearLiquidSimulation, tear_liquid.hpp). The path is traced again at every integer frame on a
 // smoothed copy of the part posed there (its courses, LiquidTearCourses in liquid_tear.hpp), kept in
@@ -308,7 +308,7 @@ struct ShotLiquidTear {
   std::shared_ptr<LiquidTearRunKeeper> runKeeper;
 };
 
-// Animated skin detail (seed 004 section 3; docs/shot-format.md "details"): a sum of basic
+// Animated skin detail (Lin & Cheng 2013 section 3; docs/shot-format.md "details"): a sum of basic
 // patterns displaced onto the part's posed primitives in an ellipse around a skin point, at
 // frames startFrame..endFrame.
 struct ShotDetail {
