@@ -99,36 +99,42 @@ void setLane(Ray16& r, int i, const Ray& ray) {
   r.flags[i] = 0;
 }
 
+// Lanes [0, count) of a packet hold first[0..count), valid; the others stay masked off.
+template <typename Ray16>
+void fillPacket(Ray16& packet, int (&valid)[16], const Ray* first, size_t count) {
+  for (size_t i = 0; i < count; ++i) {
+    valid[i] = -1;
+    setLane(packet, int(i), first[i]);
+  }
+}
+
+RTCIntersectContext contextWithFlags(RTCIntersectContextFlags flags) {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  context.flags = flags;
+  return context;
+}
+
 // rtcIntersect16 / rtcOccluded16 over `rays`, with the context flag that tells Embree whether
 // a packet's rays run together (camera rays through neighbouring pixels) or not (bounces).
 std::pair<QueryTiming, QueryTiming> timePacketQueries(RTCScene handle, const std::vector<Ray>& rays,
                                                       RTCIntersectContextFlags flags, bool occludedToo) {
   const auto intersect16 = [&](const Ray* first, size_t count) {
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
-    context.flags = flags;
+    RTCIntersectContext context = contextWithFlags(flags);
     alignas(64) int valid[16] = {};
     alignas(64) RTCRayHit16 rh{};
-    for (size_t i = 0; i < count; ++i) {
-      valid[i] = -1;
-      setLane(rh.ray, int(i), first[i]);
-      rh.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
-    }
+    fillPacket(rh.ray, valid, first, count);
+    for (unsigned& geometry : rh.hit.geomID) geometry = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect16(valid, handle, &context, &rh);
     int hits = 0;
     for (size_t i = 0; i < count; ++i) hits += rh.hit.geomID[i] != RTC_INVALID_GEOMETRY_ID ? 1 : 0;
     return hits;
   };
   const auto occluded16 = [&](const Ray* first, size_t count) {
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
-    context.flags = flags;
+    RTCIntersectContext context = contextWithFlags(flags);
     alignas(64) int valid[16] = {};
     alignas(64) RTCRay16 r{};
-    for (size_t i = 0; i < count; ++i) {
-      valid[i] = -1;
-      setLane(r, int(i), first[i]);
-    }
+    fillPacket(r, valid, first, count);
     rtcOccluded16(valid, handle, &context, &r);
     int hits = 0;
     for (size_t i = 0; i < count; ++i) hits += r.tfar[i] < 0.0f ? 1 : 0;
