@@ -100,7 +100,7 @@ class FloodReader {
           if (auto b = groundRect(c_, (*obstacles)[i], childPointer(o.at("obstacles"), i))) r.obstacles.push_back(*b);
       }
     }
-    // The river's particles: the seed's 100k at 0.15 m is the largest tried (docs/crowd.md).
+    // The river's particles: Schaffer et al.'s 100k at 0.15 m is the largest tried (docs/crowd.md).
     const double particles = r.width * r.depth * r.length / std::pow(2.0 * r.particleRadius, 3);
     if (particles > 2e5)
       o.error("particleRadius", fmt::format("the river would hold {:.3g} particles at particleRadius {} m, more than the "

@@ -79,7 +79,7 @@ TEST(Figure, ACarriedFigureTurnsAtTheWatersSpeedPlusItsOwnRate) {
     lowest = std::min(lowest, animator.extraTurnRate(a)), highest = std::max(highest, animator.extraTurnRate(a));
   EXPECT_GE(lowest, 0.1);
   EXPECT_LE(highest, 0.5);
-  EXPECT_GT(highest - lowest, 0.3) << "spread over the seed's range";
+  EXPECT_GT(highest - lowest, 0.3) << "spread over Schaffer et al.'s range";
   EXPECT_EQ(FigureAnimator(agents, 3).extraTurnRate(17), animator.extraTurnRate(17)) << "the same for the same seed";
 
   // Agent 0 carried for one 0.05 s frame in water of 2.5 m/s: each axis turns by (2.5 + rate) 0.05.

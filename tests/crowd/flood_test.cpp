@@ -1,7 +1,7 @@
 // The flood scenario (flood.hpp) at a small size: a 12 m river of SPH water keeps flowing (fed
 // upstream, drained at its end, neither emptied nor thrown about), a vulnerable agent is carried
 // downstream and over the end where a strong one walks across, and the run is bitwise the same with
-// one thread or all. The seed's experiments at full size are `lacrima flood` (docs/crowd.md).
+// one thread or all. Schaffer et al.'s experiments at full size are `lacrima flood` (docs/crowd.md).
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
@@ -62,7 +62,7 @@ TEST(Flood, TheRiverKeepsFlowingFedUpstreamAndDrainedAtItsEnd) {
   EXPECT_LT(highest, 1.5) << "no water thrown out of the channel";
 }
 
-// The seed's runs start with a dry bed the water enters (its figures 7 and 8): the front leaves the
+// Schaffer et al.'s runs start with a dry bed the water enters (its figures 7 and 8): the front leaves the
 // emitter and runs downstream no faster than the inflow plus Ritter's dam-break front (2 sqrt(g h),
 // Ritter 1892) and no slower than half the inflow.
 TEST(Flood, ADryRiverFillsFromItsUpstreamEnd) {
@@ -86,7 +86,7 @@ TEST(Flood, ADryRiverFillsFromItsUpstreamEnd) {
   EXPECT_GT(flood.particlesEmitted(), 0u);
 }
 
-// A block in the stream shelters the water behind it (the seed's section 4.3): a river 20 m long
+// A block in the stream shelters the water behind it (Schaffer et al.'s section 4.3): a river 20 m long
 // and 8 m wide with a 2 x 2 x 1 m block in its middle; averaged over 4-10 s, the water in the
 // block's lee runs slower than the water beside the lee.
 TEST(Flood, ABlockInTheStreamSheltersTheWaterBehindIt) {

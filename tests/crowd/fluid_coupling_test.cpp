@@ -1,5 +1,5 @@
 // The liquid-to-agent coupling (fluid_coupling.hpp): the collision test finds what a brute-force
-// test finds, eq. 9 has the limits the seed states (tau = 0 ignores the liquid, tau = 1 is the
+// test finds, eq. 9 has the limits Schaffer et al. state (tau = 0 ignores the liquid, tau = 1 is the
 // inelastic collision of eq. 8, momentum kept), the ragdoll rule, and, on a synthetic river, the
 // trends of Schaffer et al. 2020's Table 1: the time for the last agent to cross grows with the
 // endurance tau and the stream's speed, and strong agents get across streams that carry weak
@@ -140,7 +140,7 @@ CrossingResult crossTheRiver(double endurance, double streamSpeed, double partic
 }
 
 TEST(FluidCoupling, CrossingARiverTakesLongerForVulnerableAgentsAndFasterStreamsAsInTheSeedsTable1) {
-  // 60 kg a particle: about 2 particles (120 kg) collide with an agent in a frame, as the seed's
+  // 60 kg a particle: about 2 particles (120 kg) collide with an agent in a frame, as Schaffer et al.'s
   // timings imply (docs/crowd.md); the trends, not the numbers, are the claim.
   const double particleMass = 60.0;
   const double taus[] = {0.0, 0.2, 0.8, 1.0}, speeds[] = {0.5, 1.5, 2.5};

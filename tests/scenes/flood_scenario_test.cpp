@@ -1,4 +1,4 @@
-// Flood scenario files (lacrima/scenes/flood_scenario.hpp): the seed's experiments in
+// Flood scenario files (lacrima/scenes/flood_scenario.hpp): Schaffer et al.'s experiments in
 // scenes/floods load as the experiments docs/crowd.md describes, and bad input is reported at its
 // JSON path.
 #include <gtest/gtest.h>
@@ -82,7 +82,7 @@ TEST(FloodScenario, ASmallScenarioLoadsWithItsEnduranceKeys) {
   EXPECT_EQ(s.labels[0], "walkers") << "the name when there is no label";
   EXPECT_EQ(s.params.crowds[0].agents.size(), 4u);
   EXPECT_TRUE(s.params.crowds[0].agents[3].position == crowd::Vec2d(5, 1));
-  EXPECT_EQ(s.params.river.depth, 1.0) << "the seed's by default";
+  EXPECT_EQ(s.params.river.depth, 1.0) << "Schaffer et al.'s by default";
 }
 
 TEST(FloodScenario, BadInputIsReportedAtItsPath) {

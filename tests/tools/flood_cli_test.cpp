@@ -1,4 +1,4 @@
-// `lacrima flood`: the real binary runs one of the seed's experiments for a simulated second and
+// `lacrima flood`: the real binary runs one of Schaffer et al.'s experiments for a simulated second and
 // writes its trajectories, top-view plots and table; a scenario file of one's own runs too; bad
 // options and bad scenario files write nothing.
 #include <OpenImageIO/imageio.h>

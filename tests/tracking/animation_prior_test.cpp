@@ -167,7 +167,7 @@ TEST(AnimationPrior, FittingWithThePriorRecoversANoisyPerformanceBetter) {
               "%.4f without the prior, %.4f with it; mean vertex error %.3f and %.3f mm\n",
               trainSeconds, prior.latentDimension(), prior.componentCount(), int(frames), std::sqrt(withoutSquares / frames),
               std::sqrt(withSquares / frames), withoutMm, withMm);
-  // Measured: 0.071 without, 0.029 with (the seed's figure 8: without the prior, noise becomes
+  // Measured: 0.071 without, 0.029 with (Weise et al.'s figure 8: without the prior, noise becomes
   // implausible expressions).
   EXPECT_LT(std::sqrt(withSquares / frames), 0.05);
   EXPECT_LT(withSquares, 0.25 * withoutSquares);

@@ -57,7 +57,7 @@ TEST(BlendshapeFit, RecoversAnExpressionFromDepthAndLandmarks) {
     EXPECT_LE(fit.weights.maxCoeff(), 1.0);
     // Measured: without noise, weight RMSE 0.017 and 0.10 mm; with a Kinect's noise, 0.073 and
     // 0.21 mm: the noise goes mostly into targets that barely move the skin (eyeLook*, eyeWide),
-    // which the seed's animation prior is there to hold.
+    // which Weise et al.'s animation prior is there to hold.
     EXPECT_LT(vertexMm, noise == 0.0 ? 0.15 : 0.4);
     EXPECT_LT(weightRmse, noise == 0.0 ? 0.03 : 0.1);
   }

@@ -2,7 +2,7 @@
 // the ICT face (a keyed blend of archetypal expressions; the head still for half a second, then
 // turning and sliding) is captured by the synthetic depth sensor with a Kinect's noise and 68
 // landmarks, tracked frame by frame, and compared with the truth: weights, vertices, head pose,
-// and the jitter of a still head, with and without the seed's animation prior and pose filter.
+// and the jitter of a still head, with and without Weise et al.'s animation prior and pose filter.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -139,7 +139,7 @@ TEST(ClosedLoop, ThePriorLetsAFastBlinkThrough) {
   EXPECT_GT(keptPeak, 0.85);
   EXPECT_GT(kept[10], 0.7) << "shut by the blink's third frame";
   EXPECT_LT(kept.back(), 0.15) << "open again";
-  // At the seed's 99 % the synthetic training's frame-to-frame changes fall among the dropped
+  // At Weise et al.'s 99 % the synthetic training's frame-to-frame changes fall among the dropped
   // directions, whose small variance holds the blink back (docs/tracking.md, "Training data").
   EXPECT_LT(droppedPeak, keptPeak - 0.1);
 }

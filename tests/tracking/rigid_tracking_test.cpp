@@ -1,6 +1,6 @@
 // Rigid tracking (lacrima/tracking): the pinhole camera and depth frames, the synthetic depth
 // sensor (z-buffer and Nguyen et al. 2012's axial noise), point-plane ICP recovering a known head
-// motion of the ICT face from its rendered depth, and the seed's adaptive pose filter.
+// motion of the ICT face from its rendered depth, and Weise et al.'s adaptive pose filter.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -64,7 +64,7 @@ TEST(DepthSensor, TheNoiseHasTheAxialModelsDeviation) {
 }
 
 // The ICT face's skin (M_Face), its points and normals, and the points of its upper part (above
-// the nose tip's height), the region the seed tracks rigidly.
+// the nose tip's height), the region Weise et al. track rigidly.
 struct FaceModel {
   TriangleMesh skin;
   std::vector<Vec3d> upperPoints, upperNormals;

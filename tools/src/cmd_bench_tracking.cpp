@@ -2,8 +2,8 @@
 // a second on 2 cores, Weise et al.'s own rate: Weise, Bouaziz, Li & Pauly 2011, rigid stage under
 // 5 ms, non-rigid 45 ms a frame on their machine). A synthetic take of the ICT face (keyed
 // archetypal expressions with blinks, the head turning; rasterised depth with a Kinect's noise,
-// landmarks jittered by up to 1 pixel) is tracked with lacrima's prior and with one trained at the
-// seed's size; the report gives each prior's training seconds, each stage's median and slowest
+// landmarks jittered by up to 1 pixel) is tracked with lacrima's prior and with one trained at
+// Weise et al.'s size; the report gives each prior's training seconds, each stage's median and slowest
 // milliseconds a frame, the frames a second, and the track's error against the take's truth.
 #include <algorithm>
 #include <chrono>
@@ -103,14 +103,14 @@ int runBenchTracking(const BenchOptions& o) {
     seedSize.iterations = 60;
     trainStart = Clock::now();
     const AnimationPrior seedPrior = archetypalPrior(model.targetNames, seedSize);
-    std::printf("prior, the seed's size: 20 analysers, 50 EM starts of 60 iterations, trained in %.2f s\n",
+    std::printf("prior, Weise et al.'s size: 20 analysers, 50 EM starts of 60 iterations, trained in %.2f s\n",
                 secondsSince(trainStart));
 
     trackAndReport("lacrima's prior and the filter", model, &lacrimaPrior, frames, take, true);
     trackAndReport("seed-size prior and the filter", model, &seedPrior, frames, take, true);
     trackAndReport("lacrima's prior, no filter", model, &lacrimaPrior, frames, take, false);
     trackAndReport("no prior, no filter", model, nullptr, frames, take, false);
-    std::printf("the seed (Weise et al. 2011, on their 2011 machine): rigid < 5 ms, non-rigid 45 ms, 20 frames/s, "
+    std::printf("Weise et al. 2011 (on their 2011 machine): rigid < 5 ms, non-rigid 45 ms, 20 frames/s, "
                 "< 150 ms latency\n");
     return kExitOk;
   } catch (const InputError& e) {

@@ -33,7 +33,7 @@ using crowd::FloodSimulation;
 constexpr int kPixelsPerMetre = 8;
 
 // A top view of the field, x to the right (the river flows to the left), z up: the river blue,
-// obstacles dark grey, the goal yellow, every agent's positions red (the seed's figures).
+// obstacles dark grey, the goal yellow, every agent's positions red (Schaffer et al.'s figures).
 class TopView {
  public:
   explicit TopView(const crowd::FloodParams& p)
@@ -250,7 +250,7 @@ ExperimentResult runExperiment(const FloodScenario& experiment, const FloodOptio
 
 }  // namespace
 
-// The scenario files to run: those given, or the seed's (scenes/floods), sorted by name.
+// The scenario files to run: those given, or Schaffer et al.'s (scenes/floods), sorted by name.
 std::vector<std::filesystem::path> scenarioFiles(const FloodOptions& options) {
   std::vector<std::filesystem::path> files(options.scenarios.begin(), options.scenarios.end());
   if (files.empty()) {

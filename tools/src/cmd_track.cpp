@@ -1,5 +1,5 @@
-// `lacrima track`: the seed's realtime tracker (Weise, Bouaziz, Li & Pauly 2011;
-// geometry/tracking, docs/tracking.md) on a recorded performance (depth EXRs + landmarks), writing
+// `lacrima track`: the realtime tracker of Weise, Bouaziz, Li & Pauly 2011
+// (geometry/tracking, docs/tracking.md) on a recorded performance (depth EXRs + landmarks), writing
 // the weight track `lacrima render` plays (the shot's `performance`) and the head pose; or a
 // synthetic performance of a face to validate it on (`--synthesize`).
 #include <fmt/format.h>

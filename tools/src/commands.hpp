@@ -44,7 +44,7 @@ struct ExportOptions {
 };
 
 struct FloodOptions {
-  std::vector<std::string> scenarios;    // flood scenario files; empty: scenes/floods/*.json (the seed's)
+  std::vector<std::string> scenarios;    // flood scenario files; empty: scenes/floods/*.json (Schaffer et al.'s)
   std::vector<std::string> experiments;  // of those, the ones named (file stems); empty: all
   std::string outputDirectory = "flood";
   // Overrides of every scenario's values, when given.
@@ -102,7 +102,7 @@ struct BenchOptions {
   bool sph = false;
   int sphParticles = 100000, sphSteps = 10;
   // --tracking: the face tracker's cost and accuracy on a synthetic take of this many frames,
-  // with lacrima's prior and one at the seed's size (cmd_bench_tracking.cpp).
+  // with lacrima's prior and one at Weise et al.'s size (cmd_bench_tracking.cpp).
   bool tracking = false;
   int trackFrames = 120;
   // --quality: time to equal error (cmd_bench_quality.cpp).

@@ -41,9 +41,9 @@ const char* kDescription =
     "      render the regression shots and compare them with their reference images\n"
     "  lacrima farm submit shot.json --chunk 6\n"
     "      the shot's frames as a Slurm array job; `lacrima farm status shot.json` follows it\n"
-    "  lacrima flood --out flood      the flood seed's experiments: crowds crossing a river of SPH water\n"
+    "  lacrima flood --out flood      Schaffer et al.'s flood experiments: crowds crossing SPH water\n"
     "  lacrima track perf/performance.json --out track\n"
-    "      a face performance (depth + landmarks) to a weight track a shot plays (the tracker seed)\n"
+    "      a face performance (depth + landmarks) to a weight track a shot plays (Weise et al. 2011)\n"
     "\n"
     "Exit status: 0 success, 1 render failure, 2 bad input (shot file, asset or options);\n"
     "diff and test-suite: 0 pass, 1 warn, 2 fail or bad input; farm status: 3 frames still running.";
@@ -193,17 +193,17 @@ void addExport(CLI::App& app, ExportOptions& o) {
 const char* kFloodExamples =
     "Examples:\n"
     "  lacrima flood --out flood\n"
-    "      the seed's experiments, scenes/floods/*.json (about 17 minutes on 2 cores)\n"
+    "      Schaffer et al.'s experiments, scenes/floods/*.json (about 17 minutes on 2 cores)\n"
     "  lacrima flood --experiments table1-1.5 --duration 60 --out /tmp/flood\n"
     "      the four crowds of Table 1 at 1.5 m/s, for the first simulated minute\n"
     "  lacrima flood my_river.json --scene-at 20 --out /tmp/flood\n"
     "      a scenario file of your own, and its scene at 20 s to render\n"
     "\n"
     "Schaffer et al. 2020's flood (docs/crowd.md): a river of SPH water (27 m wide, 1 m deep and\n"
-    "100 m long in the seed's) streaming across a field, crowds of BioCrowds agents (65 kg, 1.3 m/s)\n"
-    "crossing it, pushed by the water (the seed's eqs. 5-9) according to their endurance tau. A\n"
+    "100 m long in theirs) streaming across a field, crowds of BioCrowds agents (65 kg, 1.3 m/s)\n"
+    "crossing it, pushed by the water (their eqs. 5-9) according to their endurance tau. A\n"
     "scenario file (JSON, docs/crowd.md \"Scenario files\") gives the field, the river, the coupling\n"
-    "and the crowds; the seed's are table1-0.5, table1-1.5, table1-2.5 (Table 1's runs S1-S12 at one\n"
+    "and the crowds; theirs are table1-0.5, table1-1.5, table1-2.5 (Table 1's runs S1-S12 at one\n"
     "stream speed, tau 0, 0.2, 0.8 and 1.0 crossing the same river), counter-stream (tau 0.6, v_F\n"
     "1.5, a second group walking against the stream) and obstacle (tau 0.6, v_F 1.5, a 7 x 7 x 1 m\n"
     "block in the river). Each runs until every agent has arrived or been carried off the end, or\n"
@@ -221,9 +221,11 @@ const char* kFloodExamples =
     "Exit status: 0 success, 2 a bad scenario file or option, or an output that cannot be written.";
 
 void addFlood(CLI::App& app, FloodOptions& o) {
-  auto* flood = app.add_subcommand("flood", "Run the flood seed's experiments: crowds crossing a river of SPH water");
+  auto* flood = app.add_subcommand(
+      "flood", "Run Schaffer et al. 2020's flood experiments: crowds crossing a river of SPH water");
   flood->footer(kFloodExamples);
-  flood->add_option("scenarios", o.scenarios, "Flood scenario files (JSON; default: the seed's, scenes/floods/*.json)");
+  flood->add_option("scenarios", o.scenarios,
+                    "Flood scenario files (JSON; default: Schaffer et al.'s, scenes/floods/*.json)");
   flood->add_option("--experiments", o.experiments, "Of the scenarios, the ones named (file stems), e.g. "
                                                     "table1-1.5,obstacle")
       ->delimiter(',');
@@ -231,12 +233,12 @@ void addFlood(CLI::App& app, FloodOptions& o) {
   flood->add_option("--duration", o.duration, "Simulated seconds at most per experiment (default: the scenario's, 300)")
       ->check(CLI::Range(1.0, 3600.0));
   flood->add_option("--coupled-density", o.coupledDensity,
-                    "kg/m^3 of water as the seed's eq. 5 counts it, each colliding particle weighing this "
-                    "times its volume (default: the scenario's, 80 in the seed's; 0: water's own 1000)")
+                    "kg/m^3 of water as Schaffer et al.'s eq. 5 counts it, each colliding particle weighing this "
+                    "times its volume (default: the scenario's, 80 in Schaffer et al.'s; 0: water's own 1000)")
       ->check(CLI::Range(0.0, 1e4));
   flood->add_option("--particle-radius", o.particleRadius,
-                    "SPH particle radius in metres (default: the scenario's, 0.25: 21,600 particles in the seed's "
-                    "river; 0.15: 89,910)")
+                    "SPH particle radius in metres (default: the scenario's, 0.25: 21,600 particles in "
+                    "Schaffer et al.'s river; 0.15: 89,910)")
       ->check(CLI::Range(0.1, 1.0));
   flood->add_option("--scene-at", o.sceneTimes,
                     "Simulated seconds at which to write each crowd's scene: <experiment>_<crowd>_t<T>.glb "
@@ -264,8 +266,8 @@ const char* kTrackExamples =
     "\n"
     "The realtime tracker of Weise, Bouaziz, Li & Pauly 2011 (docs/tracking.md): per frame, ICP of the\n"
     "face's upper part against the depth map (point-plane, from the last frame's pose; the first frame's\n"
-    "from the inner landmarks and their depth), the seed's adaptive pose filter (--no-filter: off), then\n"
-    "the blendshape weights in [0, 1] fitted to the depth and the landmarks with the seed's animation\n"
+    "from the inner landmarks and their depth), Weise et al.'s adaptive pose filter (--no-filter: off), then\n"
+    "the blendshape weights in [0, 1] fitted to the depth and the landmarks with Weise et al.'s animation\n"
     "prior (--no-prior: off; trained on synthetic keyed blends of twelve archetypal expressions with\n"
     "spontaneous blinks).\n"
     "A performance is performance.json: {\"version\": 1, \"fps\": 30, \"frames\": {\"start\": 1, \"end\": 60},\n"
@@ -396,7 +398,7 @@ void addBench(CLI::App& app, BenchOptions& o) {
       "Renders the default shot (or SHOT) at a fixed small size and reports medians of the repetitions,\n"
       "then per frame (--frames) the milliseconds before the first ray: geometry stages, scene update, set-up.\n"
       "With --sph, the SPH liquid's particle updates per second on a dam break; with --tracking, the face\n"
-      "tracker's milliseconds a frame against the seed's (Weise et al. 2011: 20 Hz).\n"
+      "tracker's milliseconds a frame against Weise et al. 2011's 20 Hz.\n"
       "With --quality, reports time to equal error, e.g.\n"
       "  lacrima bench --quality --width 160 --height 90 --max-spp 64 --target 0.05");
   bench->add_option("shot", o.shotPath, "Shot file (default: scenes/shots/tear_closeup.json)");
@@ -426,7 +428,7 @@ void addBench(CLI::App& app, BenchOptions& o) {
   bench->add_flag("--tracking", o.tracking,
                   "The face tracker's cost instead (lacrima track): per frame the rigid and non-rigid stages' "
                   "milliseconds and the frames a second on a synthetic take of the ICT face, with lacrima's prior "
-                  "and one trained at the seed's size (20 analysers, 50 starts), against the take's truth");
+                  "and one trained at Weise et al.'s size (20 analysers, 50 starts), against the take's truth");
   bench->add_option("--track-frames", o.trackFrames, "--tracking: frames of the take (default 120, at 30 fps)")
       ->check(integerIn(5, 100000));
   bench->add_option("--frame", o.frame, "--quality: the frame (default: the shot's first); --flesh: the last frame");

@@ -90,7 +90,7 @@ FigureAnimator::FigureAnimator(const std::vector<Agent>& agents, uint64_t seed)
     lastPositions_.push_back(agents[a].position);
     const Vec2d toGoal = agents[a].goal - agents[a].position;
     if (toGoal.norm() > 1e-9) headings_[a] = std::atan2(toGoal.x(), toGoal.y());
-    // The seed's random increase of the ragdoll's turning rate, in [0.1, 0.5].
+    // Schaffer et al.'s random increase of the ragdoll's turning rate, in [0.1, 0.5].
     extraTurnRates_.push_back(0.1 + 0.4 * double(uint64ToUnitFloat(hashCombine(seed, uint64_t(a)))));
     poses_[a].hip = Vec3d(agents[a].position.x(), FigurePose::kHipHeight, agents[a].position.y());
     poses_[a].orientation = rotationAbout(Vec3d::UnitY(), headings_[a]);

@@ -150,7 +150,7 @@ BlendshapeFitResult fitBlendshapes(const BlendshapeModel& model, const DepthFram
     result.rmsLandmarkPixels = addLandmarkRows(model, positions, landmarks, frame.camera(), pose, params, equations);
     Eigen::MatrixXd jtj = equations.jtj.selfadjointView<Eigen::Lower>();
     if (prior.prior) {
-      // The normal equations are those of (1/2) sum r^2; the seed's energy is sum r^2 + E_prior,
+      // The normal equations are those of (1/2) sum r^2; Weise et al.'s energy is sum r^2 + E_prior,
       // so the prior enters at half its gradient and Hessian.
       Eigen::MatrixXd hessian;
       Eigen::VectorXd gradient;

@@ -2,7 +2,7 @@
 // Flood scenarios: Schaffer et al. 2020's river-crossing experiments (crowd/flood.hpp) as JSON
 // files (docs/crowd.md "Scenario files"): the field, the river, the coupling and the crowds with
 // their agents, goals and endurance over time. `lacrima flood` runs them; scenes/floods/ holds the
-// seed's.
+// experiments of Schaffer et al. 2020.
 #include <filesystem>
 #include <string>
 #include <vector>

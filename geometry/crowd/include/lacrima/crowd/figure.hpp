@@ -3,8 +3,8 @@
 // simulation did to it.
 // * Walking (or wading): upright on the ground, turned to the way it moved, its legs and arms
 //   swinging in a walk cycle whose phase is the distance walked over the stride (two steps,
-//   1.4 m: about the 1.3 m/s walk of the seed's agents at 1.9 steps a second).
-// * Carried (the seed's ragdoll rule, Schaffer et al. 2020 section 4.1): the hip at the colliding
+//   1.4 m: about the 1.3 m/s walk of Schaffer et al.'s agents at 1.9 steps a second).
+// * Carried (the ragdoll rule of Schaffer et al. 2020, section 4.1): the hip at the colliding
 //   particles' mean height, the body turned about all three axes at a rate that is the water's
 //   speed plus a number drawn per agent in [0.1, 0.5] (radians a second), limbs spread.
 // The figure itself is either built here (ellipsoids on a skeleton of pelvis, torso, head, thighs,

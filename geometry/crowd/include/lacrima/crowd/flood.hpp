@@ -8,12 +8,12 @@
 // in an inflow and an outflow zone is held at v_F, an open boundary in the manner of Tafuni et al.
 // 2018's buffer zones, so that the river keeps its depth). It starts
 // full and flowing at v_F, or dry, the water entering at the emitter at t = 0 and running down the
-// bed as a front (the seed's runs: its figures 7 and 8 show the water reaching the agents at 10-15 s). Obstacles are blocks standing on the ground: walls for the water and
+// bed as a front (Schaffer et al.'s runs: its figures 7 and 8 show the water reaching the agents at 10-15 s). Obstacles are blocks standing on the ground: walls for the water and
 // for the agents. Every frame (`frameTime`, the coupling's frame) the liquid is advanced, then each
 // crowd walks, pushed by the particles colliding with its agents. An agent carried past the end of
 // the river (x < 0) is lost. The liquid does not depend on the agents (the coupling is one way),
 // so any number of crowds can cross the same river in one simulation: each is a separate run of
-// the seed's table. The seed's experiments are scenario files (scenes/floods, read by
+// Schaffer et al.'s table. Schaffer et al.'s experiments are scenario files (scenes/floods, read by
 // lacrima/scenes/flood_scenario.hpp).
 #include <string>
 #include <utility>
@@ -28,7 +28,7 @@ namespace lacrima::crowd {
 struct RiverParams {
   double zMin = 11.5, width = 27.0, depth = 1.0, length = 100.0;  // metres; it flows towards -x
   double speed = 1.5;             // v_F, m/s, of the inflow and of the water at the start
-  double particleRadius = 0.25;   // metres: 21,600 particles fill the seed's river at 0.25
+  double particleRadius = 0.25;   // metres: 21,600 particles fill Schaffer et al.'s river at 0.25
   double bankHeight = 2.0;        // metres: the channel's side walls
   std::vector<GroundRect> obstacles;  // blocks in the river or on the ground
   double obstacleHeight = 1.0;
@@ -38,10 +38,10 @@ struct RiverParams {
 struct FloodCrowd {
   std::string name;
   std::vector<Agent> agents;
-  // The endurance tau over time: (seconds, tau) keys, held from each key to the next (the seed
-  // changes tau at a frame); before the first key, the first key's value.
+  // The endurance tau over time: (seconds, tau) keys, held from each key to the next (Schaffer et al.
+  // change tau at a frame); before the first key, the first key's value.
   std::vector<std::pair<double, double>> endurance{{0.0, 0.0}};
-  double agentMass = 65.0;  // kg, the seed's
+  double agentMass = 65.0;  // kg, Schaffer et al.'s
 };
 
 struct FloodParams {
@@ -53,7 +53,7 @@ struct FloodParams {
   double frameTime = 0.1;  // seconds: the coupling's frame (eq. 5 sums the mass colliding in one)
   // The density of the water as eq. 5 counts it: each colliding particle weighs this times its
   // volume (2r)^3; <= 0: the liquid's own rest density (1000 kg/m^3, 125 kg a particle at r = 0.25 m).
-  // The seed's sums are per frame of a sparse stream whose particles it does not specify;
+  // Schaffer et al.'s sums are per frame of a sparse stream whose particles it does not specify;
   // docs/crowd.md derives the mass its timings imply (about 80 kg/m^3 at 10 frames a second).
   // A density, not a mass, so that the push does not change with the particle size.
   double coupledDensity = 0.0;

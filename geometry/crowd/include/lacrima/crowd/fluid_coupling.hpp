@@ -23,9 +23,9 @@
 namespace lacrima::crowd {
 
 struct CouplingParams {
-  double particleRadius = 0.25;  // r_p, metres (the seed's)
-  double agentRadius = 0.5;      // r_a, metres (the seed's)
-  double cellSize = 2.0;         // metres (the seed's; BioCrowds' space discretisation)
+  double particleRadius = 0.25;  // r_p, metres (Schaffer et al.'s)
+  double agentRadius = 0.5;      // r_a, metres (Schaffer et al.'s)
+  double cellSize = 2.0;         // metres (Schaffer et al.'s; BioCrowds' space discretisation)
   double ragdollEndurance = 0.8;  // tau at or above which an agent can be carried as a ragdoll
   double ragdollSpeed = 2.0;      // m/s: the liquid's speed above which it is
 };

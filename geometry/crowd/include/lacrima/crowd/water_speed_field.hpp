@@ -1,7 +1,7 @@
 #pragma once
 // Where the water runs fast and where it is slow: the mean ground speed of a particle liquid per
 // square cell of the field, averaged over every particle in the cell over every frame added. It
-// shows what an obstacle does to a stream (the seed's section 4.3: "a protected area behind the
+// shows what an obstacle does to a stream (Schaffer et al.'s section 4.3: "a protected area behind the
 // obstacle") and is how tests and `lacrima flood` measure a block's shelter.
 #include <vector>
 

@@ -1,17 +1,17 @@
 #pragma once
-// The seed's dynamic expression prior (Weise, Bouaziz, Li & Pauly 2011, section 3.1, eqs. 6-11):
+// The dynamic expression prior of Weise, Bouaziz, Li & Pauly 2011 (section 3.1, eqs. 6-11):
 // the density of the current blendshape weights x together with the n previous frames' X_n,
 // p(x, X_n), as a mixture of probabilistic principal component analysers (MPPCA, Tipping & Bishop
 // 1999) learned by EM from existing animations, in a PCA latent space of the windows that keeps 99 %
-// of their variance (the seed: "a more stable learning phase"), each analyser of a third of the
-// latent dimension (the seed's choice), the EM run from several random starts (the seed: 50) and
+// of their variance (Weise et al.: "a more stable learning phase"), each analyser of a third of the
+// latent dimension (Weise et al.'s choice), the EM run from several random starts (Weise et al.: 50) and
 // the most likely kept.
 // The latent model is singular in the full space of windows; lacrima gives the directions PCA
 // dropped an isotropic Gaussian of their mean variance, so that -ln p is finite everywhere:
 //   y = [x; x_{i-1}; ...; x_{i-n}],  z = P^T (y - mean),  r = (I - P P^T)(y - mean),
 //   -ln p(y) = -ln sum_k pi_k N(z; mu_k, C_k) + |r|^2 / (2 sigma_r^2) + const,
 //   C_k = W_k W_k^T + sigma_k^2 I (eq. 7, in the latent space: eq. 10).
-// For the fit, the energy's gradient in x (the seed's eqs. 19-21) and a Gauss-Newton Hessian (the
+// For the fit, the energy's gradient in x (Weise et al.'s eqs. 19-21) and a Gauss-Newton Hessian (the
 // mixture's responsibilities held at the current x).
 #include <cstdint>
 #include <string>
@@ -25,10 +25,10 @@ namespace lacrima::tracking {
 using WeightSequence = std::vector<Eigen::VectorXd>;
 
 struct AnimationPriorParams {
-  int previousFrames = 3;         // n (the seed found 3 <= n <= 5 good)
-  int components = 20;            // K analysers (the seed's 20)
+  int previousFrames = 3;         // n (Weise et al. found 3 <= n <= 5 good)
+  int components = 20;            // K analysers (Weise et al.'s 20)
   double keptVariance = 0.99;     // of the windows' PCA
-  int restarts = 8;               // EM runs from random starts (the seed's 50)
+  int restarts = 8;               // EM runs from random starts (Weise et al.'s 50)
   int iterations = 60;            // EM iterations per run
   uint64_t seed = 1;
   // The training weights' precision: no variance of the model falls below its square (a held
@@ -101,7 +101,7 @@ Eigen::VectorXd blinkExpression(const std::vector<std::string>& targetNames);
 // The prior lacrima trains when a production gives no animations: 30 keyed performances of 120
 // frames at 30 fps blending the archetypal expressions, with spontaneous blinks, 10 analysers, one EM start of 30 iterations (about
 // 0.1 s for the ICT face's 57 targets; docs/tracking.md, "Training data"); or with other EM
-// settings (`lacrima bench --tracking` trains it at the seed's size too).
+// settings (`lacrima bench --tracking` trains it at Weise et al.'s size too).
 AnimationPriorParams archetypalPriorParams();
 AnimationPrior archetypalPrior(const std::vector<std::string>& targetNames,
                                const AnimationPriorParams& params = archetypalPriorParams());

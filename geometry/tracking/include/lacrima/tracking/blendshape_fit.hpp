@@ -1,16 +1,16 @@
 #pragma once
-// The non-rigid stage of the seed's tracker (Weise, Bouaziz, Li & Pauly 2011, section 3.2): given
+// The non-rigid stage of the tracker of Weise, Bouaziz, Li & Pauly 2011 (section 3.2): given
 // the head's rigid pose, the blendshape weights x in [0, 1]^m that best explain the frame,
-//   x* = argmin E_geo + E_im + E_prior (the seed's eq. 13),
-// * E_geo = sum_i (n_i . (v_i(x) - v_i*))^2 / sigma_geo^2 (the seed's eq. 14): v_i(x) the model's
+//   x* = argmin E_geo + E_im + E_prior (Weise et al.'s eq. 13),
+// * E_geo = sum_i (n_i . (v_i(x) - v_i*))^2 / sigma_geo^2 (Weise et al.'s eq. 14): v_i(x) the model's
 //   vertex i (neutral plus weighted deltas, B x), posed; n_i its normal; v_i* the measured surface
 //   along v_i's ray (projective association, as the rigid stage);
-// * E_im: the seed's image term is optical flow against the actor's texture; lacrima's uses 2D
+// * E_im: Weise et al.'s image term is optical flow against the actor's texture; lacrima's uses 2D
 //   facial landmarks instead (the 68-point layout, as a capture rig's or a phone's face tracker
 //   gives them): sum_l |pi(v_l(x)) - u_l|^2 / sigma_im^2, pi the camera's projection.
 // * E_prior = -ln p(x, X_n), the animation prior over x and the previous frames' weights
 //   (animation_prior.hpp), when one is given.
-// The data terms are the seed's sums of squares over sigma^2; minimised by Gauss-Newton with the bounds kept by projection: each step solves the normal
+// The data terms are Weise et al.'s sums of squares over sigma^2; minimised by Gauss-Newton with the bounds kept by projection: each step solves the normal
 // equations over the weights not held at a bound by their gradient, then clamps to [0, 1].
 #include <optional>
 #include <string>

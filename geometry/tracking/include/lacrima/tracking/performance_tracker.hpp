@@ -1,5 +1,5 @@
 #pragma once
-// The seed's tracker frame by frame (Weise, Bouaziz, Li & Pauly 2011, section 3): the face as
+// The tracker of Weise, Bouaziz, Li & Pauly 2011 frame by frame (section 3): the face as
 // reconstructed in the previous frame is aligned rigidly to the new depth map over its upper part
 // (rigid_icp.hpp), the pose filtered (pose_filter.hpp), then the blendshape weights fitted at that
 // pose (blendshape_fit.hpp) with the animation prior over the previous frames' weights when one is

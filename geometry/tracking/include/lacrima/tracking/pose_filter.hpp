@@ -1,12 +1,12 @@
 #pragma once
-// The seed's temporal filter of the rigid pose (Weise, Bouaziz, Li & Pauly 2011, section 3, "Rigid
+// The temporal filter of the rigid pose of Weise, Bouaziz, Li & Pauly 2011 (section 3, "Rigid
 // Tracking"; in the spirit of Roberts 1959's exponentially weighted moving average): translation
 // and rotation (as a quaternion) are filtered apart, each as a vector t over a window of the k
 // latest frames,
 //   t^_i = sum_{j=0..k} w_j t_{i-j} / sum_j w_j,   w_j = exp(-j H max_{l=1..k} |t_i - t_{i-l}|),
 // so a still head (small variation in the window) is averaged over the whole window and a fast
 // motion (large variation) is followed with little lag. H is a constant per quantity set from the
-// noise of a still pose; the seed uses k = 5.
+// noise of a still pose; Weise et al. use k = 5.
 #include <deque>
 
 #include "lacrima/geometry/math.hpp"
@@ -27,7 +27,7 @@ class AdaptiveWindowFilter {
 };
 
 struct PoseFilterParams {
-  int window = 5;              // k, frames (the seed's)
+  int window = 5;              // k, frames (Weise et al.'s)
   // H per metre: a still head whose tracking jitters by ~0.2 mm varies by ~1 mm over the window,
   // e^{-0.2} a step back (averaged over the whole window); a head moving 5 mm a frame varies by
   // 25 mm, e^{-5} a step back (followed with a lag of ~0.03 mm).

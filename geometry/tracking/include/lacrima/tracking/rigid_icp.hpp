@@ -7,7 +7,7 @@
 //   or whose normals differ by more than `maxNormalAngleDegrees` are dropped, and so are pairs
 //   further apart than three times the median pair (occluded model points).
 // * Each iteration minimises sum_i (n_i . (R p_i + t - q_i))^2, n_i the model's normal at p_i
-//   (the seed's eq. 10 measures point-plane distances along the model's normals: a depth sensor's
+//   (Weise et al.'s eq. 10 measures point-plane distances along the model's normals: a depth sensor's
 //   normals are noisy), linearised in the rotation (Low 2004: the 6 x 6 normal equations in (omega, t)), and applies
 //   the step as an exact rotation.
 #include <vector>
