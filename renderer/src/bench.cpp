@@ -7,7 +7,6 @@
 #include <atomic>
 #include <chrono>
 #include <limits>
-#include <utility>
 
 #include "embree_scene.hpp"
 #include "lacrima/geometry/error.hpp"
@@ -53,33 +52,35 @@ struct QueryTiming {
   uint64_t hits = 0;
 };
 
-template <typename Query>
-QueryTiming timeQueries(const std::vector<Ray>& rays, Query query) {
+// Runs count(i) for i in [0, n) split between the threads, `grain` at a time, and times it;
+// count(i) returns how many of its queries hit.
+template <typename Count>
+QueryTiming timeInParallel(size_t n, size_t grain, Count count) {
   std::atomic<uint64_t> sink{0};
   const auto start = std::chrono::steady_clock::now();
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, rays.size(), 4096), [&](const tbb::blocked_range<size_t>& r) {
-    int hits = 0;
-    for (size_t i = r.begin(); i != r.end(); ++i) hits += query(rays[i]) ? 1 : 0;
-    sink += uint64_t(hits);
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, n, grain), [&](const tbb::blocked_range<size_t>& r) {
+    uint64_t hits = 0;
+    for (size_t i = r.begin(); i != r.end(); ++i) hits += count(i);
+    sink += hits;
   });
   return {std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), sink.load()};
 }
 
-// The rays in packets of 16 (the tail's lanes masked off), each packet one query(valid, first,
-// count) call; the same parallel split as timeQueries.
+template <typename Query>
+QueryTiming timeQueries(const std::vector<Ray>& rays, Query query) {
+  return timeInParallel(rays.size(), 4096, [&](size_t i) { return query(rays[i]) ? 1u : 0u; });
+}
+
+constexpr size_t kLanes = 16;
+
+// The rays in packets of 16 (the last one's unused lanes masked off): query(first, count) traces
+// one packet and returns its hits. The same number of rays a task as timeQueries.
 template <typename PacketQuery>
 QueryTiming timePackets(const std::vector<Ray>& rays, PacketQuery query) {
-  constexpr size_t kLanes = 16;
   const size_t packets = (rays.size() + kLanes - 1) / kLanes;
-  std::atomic<uint64_t> sink{0};
-  const auto start = std::chrono::steady_clock::now();
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, packets, 4096 / kLanes), [&](const tbb::blocked_range<size_t>& r) {
-    int hits = 0;
-    for (size_t p = r.begin(); p != r.end(); ++p)
-      hits += query(&rays[p * kLanes], std::min(kLanes, rays.size() - p * kLanes));
-    sink += uint64_t(hits);
+  return timeInParallel(packets, 4096 / kLanes, [&](size_t p) {
+    return query(&rays[p * kLanes], std::min(kLanes, rays.size() - p * kLanes));
   });
-  return {std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), sink.load()};
 }
 
 // Fills lane i of a packet's SoA rays (RTCRay16 or the ray of RTCRayHit16) from `ray`, t in [0, inf).
@@ -101,13 +102,15 @@ void setLane(Ray16& r, int i, const Ray& ray) {
 
 // Lanes [0, count) of a packet hold first[0..count), valid; the others stay masked off.
 template <typename Ray16>
-void fillPacket(Ray16& packet, int (&valid)[16], const Ray* first, size_t count) {
+void fillPacket(Ray16& packet, int (&valid)[kLanes], const Ray* first, size_t count) {
   for (size_t i = 0; i < count; ++i) {
     valid[i] = -1;
     setLane(packet, int(i), first[i]);
   }
 }
 
+// A context whose flag tells Embree whether a packet's rays run together (camera rays through
+// neighbouring pixels) or not (bounces).
 RTCIntersectContext contextWithFlags(RTCIntersectContextFlags flags) {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
@@ -115,32 +118,31 @@ RTCIntersectContext contextWithFlags(RTCIntersectContextFlags flags) {
   return context;
 }
 
-// rtcIntersect16 / rtcOccluded16 over `rays`, with the context flag that tells Embree whether
-// a packet's rays run together (camera rays through neighbouring pixels) or not (bounces).
-std::pair<QueryTiming, QueryTiming> timePacketQueries(RTCScene handle, const std::vector<Ray>& rays,
-                                                      RTCIntersectContextFlags flags, bool occludedToo) {
-  const auto intersect16 = [&](const Ray* first, size_t count) {
+QueryTiming timeIntersect16(RTCScene handle, const std::vector<Ray>& rays, RTCIntersectContextFlags flags) {
+  return timePackets(rays, [&](const Ray* first, size_t count) {
     RTCIntersectContext context = contextWithFlags(flags);
-    alignas(64) int valid[16] = {};
+    alignas(64) int valid[kLanes] = {};
     alignas(64) RTCRayHit16 rh{};
     fillPacket(rh.ray, valid, first, count);
     for (unsigned& geometry : rh.hit.geomID) geometry = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect16(valid, handle, &context, &rh);
-    int hits = 0;
+    uint64_t hits = 0;
     for (size_t i = 0; i < count; ++i) hits += rh.hit.geomID[i] != RTC_INVALID_GEOMETRY_ID ? 1 : 0;
     return hits;
-  };
-  const auto occluded16 = [&](const Ray* first, size_t count) {
+  });
+}
+
+QueryTiming timeOccluded16(RTCScene handle, const std::vector<Ray>& rays, RTCIntersectContextFlags flags) {
+  return timePackets(rays, [&](const Ray* first, size_t count) {
     RTCIntersectContext context = contextWithFlags(flags);
-    alignas(64) int valid[16] = {};
+    alignas(64) int valid[kLanes] = {};
     alignas(64) RTCRay16 r{};
     fillPacket(r, valid, first, count);
     rtcOccluded16(valid, handle, &context, &r);
-    int hits = 0;
+    uint64_t hits = 0;
     for (size_t i = 0; i < count; ++i) hits += r.tfar[i] < 0.0f ? 1 : 0;
     return hits;
-  };
-  return {timePackets(rays, intersect16), occludedToo ? timePackets(rays, occluded16) : QueryTiming{}};
+  });
 }
 
 }  // namespace
@@ -180,14 +182,13 @@ RawTraceRates measureRawEmbreeThroughput(const Frame& frame) {
     const QueryTiming occluded1 = timeQueries(rays.bounce, occluded);
     rates.occludedSeconds = occluded1.seconds;
     rates.occludedHits = occluded1.hits;
-    const QueryTiming primary16 =
-        timePacketQueries(handle, rays.primary, RTC_INTERSECT_CONTEXT_FLAG_COHERENT, false).first;
-    const auto [bounce16, bounceOccluded16] =
-        timePacketQueries(handle, rays.bounce, RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT, true);
+    const QueryTiming primary16 = timeIntersect16(handle, rays.primary, RTC_INTERSECT_CONTEXT_FLAG_COHERENT);
+    const QueryTiming bounce16 = timeIntersect16(handle, rays.bounce, RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT);
     rates.intersect16Seconds = primary16.seconds + bounce16.seconds;
     rates.intersect16Hits = primary16.hits + bounce16.hits;
-    rates.occluded16Seconds = bounceOccluded16.seconds;
-    rates.occluded16Hits = bounceOccluded16.hits;
+    const QueryTiming occluded16 = timeOccluded16(handle, rays.bounce, RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT);
+    rates.occluded16Seconds = occluded16.seconds;
+    rates.occluded16Hits = occluded16.hits;
   });
   return rates;
 }
