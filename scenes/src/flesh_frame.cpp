@@ -284,10 +284,12 @@ std::vector<Vec3d> FleshRun::nodeOffsetsAt(double frame) {
   return offsets;
 }
 
-void applyFlesh(const ShotFlesh& flesh, const GltfPrimitive& primitiveSource, double frame, size_t primitive,
-                TriangleMesh& posed) {
-  if (!flesh.run || primitive != flesh.primitive || posed.positions.size() != flesh.skinEmbedding.size()) return;
-  const std::vector<Vec3d> offsets = flesh.run->nodeOffsetsAt(frame);
+bool fleshMoves(const ShotFlesh& flesh, size_t primitive, const TriangleMesh& posed) {
+  return flesh.run && primitive == flesh.primitive && posed.positions.size() == flesh.skinEmbedding.size();
+}
+
+void moveSkinWithFlesh(const ShotFlesh& flesh, const GltfPrimitive& primitiveSource, const std::vector<Vec3d>& offsets,
+                       TriangleMesh& posed) {
   const flesh::TetMesh& mesh = flesh.tetVolume->mesh;
   bool any = false;
   for (size_t v = 0; v < posed.positions.size(); ++v) {

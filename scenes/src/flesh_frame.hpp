@@ -100,11 +100,14 @@ class FleshRun {
   size_t nextPosedSlot_ = 0;
 };
 
-// Moves the posed primitive's embedded skin vertices by the flesh's offsets at `frame`, interpolated
-// in their tetrahedra, and renews its normals as the rig makes them (primitiveSource: the asset's
-// glTF primitive it was posed from). Nothing for a primitive that is not the flesh's, or a flesh
-// not resolved; a still face keeps the rig's normals bitwise.
-void applyFlesh(const ShotFlesh& flesh, const GltfPrimitive& primitiveSource, double frame, size_t primitive,
-                TriangleMesh& posed);
+// Whether the flesh moves this posed primitive: it is the flesh's, and the flesh is resolved.
+bool fleshMoves(const ShotFlesh& flesh, size_t primitive, const TriangleMesh& posed);
+
+// Moves the posed primitive's embedded skin vertices by the flesh's node offsets (its run's
+// nodeOffsetsAt one time), interpolated in their tetrahedra, and renews its normals as the rig
+// makes them (primitiveSource: the asset's glTF primitive it was posed from). A still face keeps
+// the rig's normals bitwise. Only for a primitive the flesh moves (fleshMoves).
+void moveSkinWithFlesh(const ShotFlesh& flesh, const GltfPrimitive& primitiveSource, const std::vector<Vec3d>& offsets,
+                       TriangleMesh& posed);
 
 }  // namespace lacrima::shotfile

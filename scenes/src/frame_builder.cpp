@@ -4,6 +4,7 @@
 // posed, detailed skin), eyes and lashes (on the posed eyeball shells and lash cards), lights and camera, each at shutter open and, when the shot has a shutter
 // and it moves, at shutter close (motion blur). Nothing is read from disk here.
 #include <fmt/format.h>
+#include <tbb/parallel_invoke.h>
 
 #include <algorithm>
 #include <chrono>
@@ -54,11 +55,13 @@ struct ShutterTimes {
 // Every primitive of every asset posed at one time (world space).
 using PosedAssets = std::vector<std::vector<TriangleMesh>>;
 
-PosedAssets poseAssets(const Shot& shot, double frame, const PosedAssets* still) {
+enum class StillAssets { Posed, Skipped };
+
+PosedAssets poseAssets(const Shot& shot, double frame, StillAssets still) {
   PosedAssets posed(shot.assets.size());
   for (size_t a = 0; a < shot.assets.size(); ++a) {
     const ShotAsset& asset = shot.assets[a];
-    if (still && !asset.animated()) continue;  // at shutter close only what moves is posed again
+    if (still == StillAssets::Skipped && !asset.animated()) continue;
     const shotfile::AssetPose pose = assetPoseAt(asset, frame);
     for (size_t i = 0; i < asset.gltf->primitives.size(); ++i) posed[a].push_back(posedPrimitive(asset, pose, i));
   }
@@ -258,24 +261,38 @@ void applyFleshes(const Shot& shot, const ShutterTimes& shutter, PosedAssets& op
   for (const ShotFlesh& flesh : shot.flesh) {
     if (open[flesh.asset].empty() || flesh.primitive >= open[flesh.asset].size()) continue;
     const GltfPrimitive& source = shot.assets[flesh.asset].gltf->primitives[flesh.primitive];
-    shotfile::applyFlesh(flesh, source, shutter.open, flesh.primitive, open[flesh.asset][flesh.primitive]);
-    if (close && !(*close)[flesh.asset].empty())
-      shotfile::applyFlesh(flesh, source, shutter.close, flesh.primitive, (*close)[flesh.asset][flesh.primitive]);
+    TriangleMesh& atOpen = open[flesh.asset][flesh.primitive];
+    TriangleMesh* atClose = close && !(*close)[flesh.asset].empty() ? &(*close)[flesh.asset][flesh.primitive] : nullptr;
+    if (!shotfile::fleshMoves(flesh, flesh.primitive, atOpen)) continue;
+    // The simulation steps forward in time: open's offsets first, then close's.
+    const std::vector<Vec3d> offsetsAtOpen = flesh.run->nodeOffsetsAt(shutter.open);
+    const std::vector<Vec3d> offsetsAtClose = atClose ? flesh.run->nodeOffsetsAt(shutter.close) : std::vector<Vec3d>{};
+    tbb::parallel_invoke([&] { shotfile::moveSkinWithFlesh(flesh, source, offsetsAtOpen, atOpen); },
+                         [&] {
+                           if (atClose) shotfile::moveSkinWithFlesh(flesh, source, offsetsAtClose, *atClose);
+                         });
   }
 }
 
 // Applies the shot's details active at this frame to the posed assets (at shutter open and close).
 void applyDetails(const Shot& shot, int frameNumber, const ShutterTimes& shutter, PosedAssets& open,
                   std::optional<PosedAssets>& close) {
+  std::vector<const ShotDetail*> active;
   for (const ShotDetail& detail : shot.details) {
     if (!detail.activeAt(frameNumber) || open[detail.asset].empty()) continue;
-    if (close) {
-      // A still asset is not posed again at close; its detail may move, so it gets its own copy.
-      if ((*close)[detail.asset].empty()) (*close)[detail.asset] = open[detail.asset];
-      applyDetail(shot, detail, shutter.close, (*close)[detail.asset]);
-    }
-    applyDetail(shot, detail, shutter.open, open[detail.asset]);
+    // A still asset is not posed again at close; its detail may move, so it gets its own copy.
+    if (close && (*close)[detail.asset].empty()) (*close)[detail.asset] = open[detail.asset];
+    active.push_back(&detail);
   }
+  // Open and close are independent copies: displaced side by side.
+  tbb::parallel_invoke([&] {
+    for (const ShotDetail* detail : active) applyDetail(shot, *detail, shutter.open, open[detail->asset]);
+  },
+                       [&] {
+                         if (close)
+                           for (const ShotDetail* detail : active)
+                             applyDetail(shot, *detail, shutter.close, (*close)[detail->asset]);
+                       });
 }
 
 // Simulates each liquid tear over the shutter and swells the lacrimal strip near its source with its
@@ -348,8 +365,11 @@ Frame buildFrame(const Shot& shot, int frameNumber, FrameBuildTimes* times) {
   std::vector<shotfile::LiquidTearShutter> liquidRuns;
   {
     const StageClock clock(&t.rigSeconds);
-    open = poseAssets(shot, shutter.open, nullptr);
-    if (shutter.blurred()) close = poseAssets(shot, shutter.close, &open);
+    // At shutter close only what moves is posed again; the two poses are independent.
+    tbb::parallel_invoke([&] { open = poseAssets(shot, shutter.open, StillAssets::Posed); },
+                         [&] {
+                           if (shutter.blurred()) close = poseAssets(shot, shutter.close, StillAssets::Skipped);
+                         });
   }
   {
     const StageClock clock(&t.fleshSeconds);
