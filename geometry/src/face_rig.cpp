@@ -1,6 +1,10 @@
 // Face rig: x(b, j) = T(j)(n + B b) per primitive (Bao et al. 2019, eq. 1).
 #include "lacrima/geometry/face_rig.hpp"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -39,27 +43,47 @@ void requireValidTargets(const GltfPrimitive& primitive) {
   for (size_t k = 0; k < primitive.targets.size(); ++k) {
     const SparseDelta& t = primitive.targets[k];
     if (t.vertices.size() != t.deltas.size() ||
-        (!t.vertices.empty() && t.vertices.back() >= primitive.mesh.vertexCount()))
+        (!t.vertices.empty() && t.vertices.back() >= primitive.mesh.vertexCount()) ||
+        std::adjacent_find(t.vertices.begin(), t.vertices.end(), std::greater_equal<>()) != t.vertices.end())
       throw std::invalid_argument(fmt::format("face rig: target {} of {} is malformed", k, primitive.name));
   }
 }
 
+// The vertex ranges the rig's per-vertex loops are split into between threads. Each vertex is
+// computed as the serial loop would (same operations, same order), so any split gives the same bits.
+constexpr uint32_t kVerticesPerTask = 8192;
+
+template <typename Body>
+void forVertexRanges(size_t count, Body body) {
+  tbb::parallel_for(tbb::blocked_range<uint32_t>(0, uint32_t(count), kVerticesPerTask),
+                    [&](const tbb::blocked_range<uint32_t>& r) { body(r.begin(), r.end()); });
+}
+
 // Bao et al. 2019 eq. 1, the pre-skinning shape n + B b; returns whether any vertex moved.
 bool addBlendshapes(std::vector<Vec3>& positions, const GltfPrimitive& primitive, const std::vector<float>& weights) {
-  bool moved = false;
+  std::vector<size_t> active;  // most weights are zero in any frame
   const size_t used = std::min(weights.size(), primitive.targets.size());
-  for (size_t k = 0; k < used; ++k) {
-    const float w = weights[k];
-    if (w == 0.0f) continue;  // most weights are zero in any frame
-    const SparseDelta& target = primitive.targets[k];
-    for (size_t i = 0; i < target.vertices.size(); ++i) positions[target.vertices[i]] += w * target.deltas[i];
-    moved |= !target.vertices.empty();
-  }
-  return moved;
+  for (size_t k = 0; k < used; ++k)
+    if (weights[k] != 0.0f && !primitive.targets[k].vertices.empty()) active.push_back(k);
+  if (active.empty()) return false;
+  // Each vertex adds its targets' deltas in target order; a range finds each target's vertices in it
+  // by their ascending indices.
+  forVertexRanges(positions.size(), [&](uint32_t begin, uint32_t end) {
+    for (const size_t k : active) {
+      const SparseDelta& target = primitive.targets[k];
+      const float w = weights[k];
+      auto it = std::lower_bound(target.vertices.begin(), target.vertices.end(), begin);
+      for (; it != target.vertices.end() && *it < end; ++it)
+        positions[*it] += w * target.deltas[size_t(it - target.vertices.begin())];
+    }
+  });
+  return true;
 }
 
 void transformPositions(std::vector<Vec3>& positions, const Affine3& t) {
-  for (Vec3& p : positions) p = t * p;
+  forVertexRanges(positions.size(), [&](uint32_t begin, uint32_t end) {
+    for (uint32_t v = begin; v < end; ++v) positions[v] = t * positions[v];
+  });
 }
 
 // Jaw weight per vertex: |delta| / (largest |delta| of the target over all primitives).

@@ -1,5 +1,8 @@
 // Whole-mesh operations: transforms, bounds, volume and the validity checks that guard the
 // renderer against meshes it cannot trace.
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cstdint>
 #include <string>
@@ -25,17 +28,22 @@ std::string formatVec(const Vec3& v) { return fmt::format("({}, {}, {})", v.x(),
 }  // namespace
 
 void transformMesh(TriangleMesh& mesh, const Affine3& transform) {
-  for (Vec3& p : mesh.positions) p = transform * p;
-
   // Normals are covectors: they transform by the inverse transpose of the linear part, which
   // keeps them perpendicular to the surface under non-uniform scale.
   const Mat3 linear = transform.linear();
   const Mat3 normalMatrix = linear.inverse().transpose();
-  for (Vec3& n : mesh.normals) {
-    const Vec3 m = normalMatrix * n;
-    const float length = m.norm();
-    if (length > 0.0f && std::isfinite(length)) n = m / length;
-  }
+  // Vertex by vertex, so the threads' split does not change a bit.
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, mesh.positions.size(), 8192), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t v = r.begin(); v != r.end(); ++v) mesh.positions[v] = transform * mesh.positions[v];
+  });
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, mesh.normals.size(), 8192), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t v = r.begin(); v != r.end(); ++v) {
+      Vec3& n = mesh.normals[v];
+      const Vec3 m = normalMatrix * n;
+      const float length = m.norm();
+      if (length > 0.0f && std::isfinite(length)) n = m / length;
+    }
+  });
 
   // A mirroring transform turns counter-clockwise triangles clockwise; flip them back so the
   // winding keeps agreeing with the (correctly transformed) normals.

@@ -2,7 +2,12 @@
 // falling drops as moving spheres; see liquid_tear_frame.hpp and lacrima/scenes/liquid_tear.hpp.
 #include "liquid_tear_frame.hpp"
 
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
+
 #include <algorithm>
+#include <functional>
+#include <optional>
 
 #include "lacrima/geometry/drop_oscillation.hpp"
 #include "lacrima/geometry/liquid_bead_mesh.hpp"
@@ -113,6 +118,44 @@ const T* findById(const std::vector<T>& items, int id, int T::*key) {
   return nullptr;
 }
 
+// A mesh at shutter open carrying its vertices at close: `atClose` is the same item's mesh at close
+// (the same layout), or nothing when the item is not there at close. The two are made side by side.
+MeshInstance blurredInstance(const std::function<TriangleMesh()>& atOpen, const std::function<TriangleMesh()>& atClose,
+                             bool closeExists, uint32_t materialId) {
+  TriangleMesh open, close;
+  tbb::parallel_invoke([&] { open = atOpen(); }, [&] {
+    if (closeExists) close = atClose();
+  });
+  MeshInstance instance(std::move(open), materialId);
+  if (closeExists && close.positions != instance.mesh.positions) {
+    instance.positionsAtClose = std::move(close.positions);
+    instance.normalsAtClose = std::move(close.normals);
+  }
+  return instance;
+}
+
+// A bead's mesh at shutter open, with its vertices at close where it is still there (by id).
+MeshInstance beadInstance(const ShotLiquidTear& tear, const BeadView& bead, const std::vector<BeadView>* closeBeads,
+                          const LiquidTearCourse& openCourse, const LiquidTearCourse& closeCourse,
+                          const TriangleMesh& skinOpen, const TriangleMesh& skinClose) {
+  const BeadView* later = closeBeads ? findById(*closeBeads, bead.id, &BeadView::id) : nullptr;
+  return blurredInstance([&] { return beadMesh(tear, openCourse.path, bead, skinOpen); },
+                         [&] { return beadMesh(tear, closeCourse.path, *later, skinClose); }, later != nullptr,
+                         tear.materialId);
+}
+
+// A rivulet's mesh at shutter open. It is blurred where its stretch keeps its cells over the shutter
+// (it swells or thins there); one whose front moves on to new cells is drawn as at shutter open.
+MeshInstance rivuletInstance(const ShotLiquidTear& tear, const RivuletView& rivulet,
+                             const std::vector<RivuletView>* closeRivulets, const LiquidTearCourse& openCourse,
+                             const LiquidTearCourse& closeCourse, const TriangleMesh& skinOpen,
+                             const TriangleMesh& skinClose) {
+  const RivuletView* later = closeRivulets ? sameLayout(*closeRivulets, rivulet) : nullptr;
+  return blurredInstance([&] { return rivuletMesh(tear, openCourse.path, rivulet, skinOpen); },
+                         [&] { return rivuletMesh(tear, closeCourse.path, *later, skinClose); }, later != nullptr,
+                         tear.materialId);
+}
+
 }  // namespace
 
 LiquidTearShutter simulateLiquidTearShutter(const Shot& shot, const ShotLiquidTear& tear, double shutterOpen,
@@ -167,30 +210,19 @@ void addLiquidTear(const ShotLiquidTear& tear, const LiquidTearShutter& run, con
   const size_t primitive = tear.sourcePoint.primitive;
   const TriangleMesh& skinOpen = openSkin[primitive];
   const TriangleMesh& skinClose = closeSkin && !closeSkin->empty() ? (*closeSkin)[primitive] : skinOpen;
-  for (const BeadView& bead : open.beads) {
-    MeshInstance instance(beadMesh(tear, openCourse->path, bead, skinOpen), tear.materialId);
-    if (const BeadView* later = blurred ? findById(close.beads, bead.id, &BeadView::id) : nullptr) {
-      TriangleMesh atClose = beadMesh(tear, closeCourse->path, *later, skinClose);
-      if (atClose.positions != instance.mesh.positions) {
-        instance.positionsAtClose = std::move(atClose.positions);
-        instance.normalsAtClose = std::move(atClose.normals);
-      }
-    }
-    frame.meshes.push_back(std::move(instance));
-  }
-  // A rivulet is blurred where its stretch keeps its cells over the shutter (it swells or thins
-  // there); one whose front moves on to new cells is drawn as at shutter open.
-  for (const RivuletView& rivulet : open.rivulets) {
-    MeshInstance instance(rivuletMesh(tear, openCourse->path, rivulet, skinOpen), tear.materialId);
-    if (const RivuletView* later = blurred ? sameLayout(close.rivulets, rivulet) : nullptr) {
-      TriangleMesh atClose = rivuletMesh(tear, closeCourse->path, *later, skinClose);
-      if (atClose.positions != instance.mesh.positions) {
-        instance.positionsAtClose = std::move(atClose.positions);
-        instance.normalsAtClose = std::move(atClose.normals);
-      }
-    }
-    frame.meshes.push_back(std::move(instance));
-  }
+  // Each bead's and rivulet's meshes at open and close are independent (rays against the skin,
+  // mostly): made side by side, then added in order.
+  std::vector<std::optional<MeshInstance>> beads(open.beads.size()), rivulets(open.rivulets.size());
+  tbb::parallel_for(size_t(0), beads.size() + rivulets.size(), [&](size_t i) {
+    if (i < beads.size())
+      beads[i] = beadInstance(tear, open.beads[i], blurred ? &close.beads : nullptr, *openCourse, *closeCourse,
+                              skinOpen, skinClose);
+    else
+      rivulets[i - beads.size()] = rivuletInstance(tear, open.rivulets[i - beads.size()], blurred ? &close.rivulets : nullptr,
+                                                   *openCourse, *closeCourse, skinOpen, skinClose);
+  });
+  for (std::optional<MeshInstance>& bead : beads) frame.meshes.push_back(std::move(*bead));
+  for (std::optional<MeshInstance>& rivulet : rivulets) frame.meshes.push_back(std::move(*rivulet));
   for (const DropView& drop : open.drops) {
     const DropView* later = blurred ? findById(close.drops, drop.beadId, &DropView::beadId) : nullptr;
     if (ringsVisibly(drop)) {

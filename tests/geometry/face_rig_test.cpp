@@ -1,5 +1,6 @@
 // FaceRig: x(b, j) = T(j)(n + B b) (Bao et al. 2019, eq. 1) on a synthetic face and on the ICT face.
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
 #include <cstring>
 #include <random>
@@ -157,6 +158,18 @@ TEST_F(SyntheticRig, UnknownPartsAndBadPosesAreInputErrors) {
   EXPECT_THROW(rig.evaluate({{}, {}, {}, {Vec3::Zero(), Vec3::Zero()}}), InputError);  // one eye only
 }
 
+TEST_F(SyntheticRig, TargetsMustListTheirVerticesInAscendingOrder) {
+  // The rig splits a target's vertices between threads by their indices, which it can only do when
+  // they ascend (as glTF's sparse accessors must).
+  GltfAsset unsorted = asset;
+  SparseDelta& smile = unsorted.primitives[0].targets[1];
+  ASSERT_GE(smile.vertices.size(), 2u);
+  std::swap(smile.vertices[0], smile.vertices[1]);
+  EXPECT_THROW(FaceRig(unsorted, test::syntheticRigConfig()), std::invalid_argument);
+  smile.vertices[1] = smile.vertices[0];  // repeated
+  EXPECT_THROW(FaceRig(unsorted, test::syntheticRigConfig()), std::invalid_argument);
+}
+
 TEST(LinearBlendSkinning, IdentityBonesLeavePositionsUnchanged) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<float> u(-1.0f, 1.0f);
@@ -281,6 +294,38 @@ TEST_F(IctFaceRig, JawRotationOpensTheMouthAndKeepsTheForeheadStill) {
   // jawOpen moves the brow by a hair, so its jaw weight is tiny but not zero.
   EXPECT_LT((posed.positions[browLandmark] - neutral.positions[browLandmark]).norm(), 1e-5f);
   EXPECT_TRUE(findMeshDefect(posed).empty());
+}
+
+TEST_F(IctFaceRig, APoseIsTheSameForAnyThreadCount) {
+  // Blendshapes, the jaw's skinning and the head's transform run split over vertex ranges.
+  FacePose pose{std::vector<float>(57, 0.0f), {}, {}, {}};
+  for (size_t k = 0; k < pose.blendshapeWeights.size(); k += 3) pose.blendshapeWeights[k] = 0.1f + 0.01f * float(k);
+  pose.jaw.eulerDegrees = Vec3(8.0f, 0.0f, 0.0f);
+  pose.head.eulerDegrees = Vec3(6.0f, -1.0f, 12.0f);
+  const std::vector<TriangleMesh> parallel = rig_->evaluate(pose);
+  std::vector<TriangleMesh> serial;
+  {
+    tbb::global_control single(tbb::global_control::max_allowed_parallelism, 1);
+    serial = rig_->evaluate(pose);
+  }
+  ASSERT_EQ(parallel.size(), serial.size());
+  for (size_t i = 0; i < parallel.size(); ++i) expectBitwiseEqual(parallel[i], serial[i]);
+}
+
+TEST_F(IctFaceRig, BlendshapesAddInTargetOrderAsOneLoopWould) {
+  FacePose pose{std::vector<float>(57, 0.0f), {}, {}, {}};
+  for (size_t k = 0; k < pose.blendshapeWeights.size(); k += 2) pose.blendshapeWeights[k] = 0.3f - 0.004f * float(k);
+  size_t face = 0;
+  while (asset_->primitives[face].part != "M_Face") ++face;
+  const GltfPrimitive& primitive = asset_->primitives[face];
+  ASSERT_GT(primitive.mesh.positions.size(), 8192u);  // split into several vertex ranges
+  std::vector<Vec3> expected = primitive.mesh.positions;
+  for (size_t k = 0; k < primitive.targets.size(); ++k)
+    for (size_t i = 0; i < primitive.targets[k].vertices.size(); ++i)
+      expected[primitive.targets[k].vertices[i]] += pose.blendshapeWeights[k] * primitive.targets[k].deltas[i];
+  const TriangleMesh posed = rig_->evaluatePrimitive(face, pose);
+  ASSERT_EQ(posed.positions.size(), expected.size());
+  EXPECT_EQ(0, std::memcmp(posed.positions.data(), expected.data(), expected.size() * sizeof(Vec3)));
 }
 
 }  // namespace face_rig_test
