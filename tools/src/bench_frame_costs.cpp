@@ -12,6 +12,7 @@
 #include "lacrima/scenes/frame_build_times.hpp"
 #include "lacrima/scenes/shot.hpp"
 #include "median.hpp"
+#include "thread_cap.hpp"
 
 namespace lacrima::cli {
 
@@ -80,7 +81,7 @@ std::vector<FrameCost> measureFrameCosts(const Shot& shot, const std::vector<int
     FrameCost cost;
     cost.frame = f;
     FrameBuildTimes times;
-    Frame frame = buildFrame(shot, f, &times);
+    Frame frame = withThreadCap(settings.threads, [&] { return buildFrame(shot, f, &times); });
     recordGeometry(times, cost);
     applyBenchSettings(settings, frame.settings);
     const SceneUpdateSplit split = probe.update(frame);

@@ -23,6 +23,7 @@
 #include "output_check.hpp"
 #include "progress.hpp"
 #include "render_plan.hpp"
+#include "thread_cap.hpp"
 
 namespace lacrima::cli {
 
@@ -230,7 +231,8 @@ std::vector<PerformanceOverride> performanceOverrides(const RenderOptions& o) {
 int runRender(const RenderOptions& o) {
   try {
     const auto start = std::chrono::steady_clock::now();
-    const Shot shot = loadShot(o.shotPath, performanceOverrides(o));
+    // --threads caps the loading too; the shot's own render.threads applies from its frames on.
+    const Shot shot = withThreadCap(o.threads.value_or(0), [&] { return loadShot(o.shotPath, performanceOverrides(o)); });
     const std::vector<int> frames = selectShotFrames(o.frames, shot);
     const std::string pattern = resolveOutputPattern(o, shot, frames.size());
     checkPreviewConfig(o, shot);
@@ -251,8 +253,9 @@ int runRender(const RenderOptions& o) {
       const SequenceProgress sequence{tally.framesDone(), int(frames.size()), int(toRender.size() - i - 1),
                                       tally.meanFrameSeconds()};
       double seconds = 0;
-      const FrameOutcome outcome =
-          renderOneFrame(renderer, o, shot, pattern, frameNumber, index, int(frames.size()), sequence, seconds);
+      const FrameOutcome outcome = withThreadCap(settingsFor(o, shot, frameNumber).threads, [&] {
+        return renderOneFrame(renderer, o, shot, pattern, frameNumber, index, int(frames.size()), sequence, seconds);
+      });
       if (outcome == FrameOutcome::Abandoned) break;
       if (outcome == FrameOutcome::NotWritten) {
         tally.notWritten = frameNumber;

@@ -128,7 +128,9 @@ void addRender(CLI::App& app, RenderOptions& o) {
   render->footer(kRenderExamples);
   addShotAndOverrides(*render, o);
   render->add_option("--frames,-f", o.frames, "Frames to render: 12, 1-48, 1-48x2 or lists like 1,5,10-12");
-  render->add_option("--threads,-t", o.threads, "Worker threads (0 = all cores)")->check(integerIn(0, INT_MAX));
+  render->add_option("--threads,-t", o.threads,
+                     "Worker threads for everything: loading the shot, each frame's geometry and its path tracing "
+                     "(0 = all cores; the image is the same for any count)")->check(integerIn(0, INT_MAX));
   render->add_flag("--quiet,-q", o.quiet, "Only print the per-frame summary lines");
   render->add_flag("--resume", o.resume,
                    "Skip frames whose EXR already exists, reads back completely and was rendered with the same "
@@ -405,7 +407,7 @@ void addBench(CLI::App& app, BenchOptions& o) {
   bench->add_option("--width", o.width, "Width")->check(integerIn(8, 4096));
   bench->add_option("--height", o.height, "Height")->check(integerIn(8, 4096));
   bench->add_option("--spp", o.spp, "Samples per pixel")->check(integerIn(1, 4096));
-  bench->add_option("--threads", o.threads, "Threads (0 = all cores)")->check(integerIn(0, INT_MAX));
+  bench->add_option("--threads", o.threads, "Threads (0 = all cores); in the frame report, for the geometry too")->check(integerIn(0, INT_MAX));
   bench->add_option("--repetitions", o.repetitions, "Repetitions (median reported)")->check(integerIn(1, 50));
   bench->add_option("--frames", o.costFrames,
                     "The frames of the per-frame cost report, in order (default: six from the middle of the shot)");
