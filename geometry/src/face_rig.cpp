@@ -1,9 +1,6 @@
 // Face rig: x(b, j) = T(j)(n + B b) per primitive (Bao et al. 2019, eq. 1).
 #include "lacrima/geometry/face_rig.hpp"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -15,6 +12,7 @@
 #include "lacrima/geometry/error.hpp"
 #include "lacrima/geometry/name_suggestion.hpp"
 #include "lacrima/geometry/region_refinement.hpp"
+#include "vertex_ranges.hpp"
 
 namespace lacrima {
 
@@ -47,16 +45,6 @@ void requireValidTargets(const GltfPrimitive& primitive) {
         std::adjacent_find(t.vertices.begin(), t.vertices.end(), std::greater_equal<>()) != t.vertices.end())
       throw std::invalid_argument(fmt::format("face rig: target {} of {} is malformed", k, primitive.name));
   }
-}
-
-// The vertex ranges the rig's per-vertex loops are split into between threads. Each vertex is
-// computed as the serial loop would (same operations, same order), so any split gives the same bits.
-constexpr uint32_t kVerticesPerTask = 8192;
-
-template <typename Body>
-void forVertexRanges(size_t count, Body body) {
-  tbb::parallel_for(tbb::blocked_range<uint32_t>(0, uint32_t(count), kVerticesPerTask),
-                    [&](const tbb::blocked_range<uint32_t>& r) { body(r.begin(), r.end()); });
 }
 
 // Bao et al. 2019 eq. 1, the pre-skinning shape n + B b; returns whether any vertex moved.

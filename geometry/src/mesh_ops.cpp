@@ -1,8 +1,5 @@
 // Whole-mesh operations: transforms, bounds, volume and the validity checks that guard the
 // renderer against meshes it cannot trace.
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <cstdint>
 #include <string>
@@ -11,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "lacrima/geometry/mesh.hpp"
+#include "vertex_ranges.hpp"
 
 namespace lacrima {
 
@@ -32,16 +30,14 @@ void transformMesh(TriangleMesh& mesh, const Affine3& transform) {
   // keeps them perpendicular to the surface under non-uniform scale.
   const Mat3 linear = transform.linear();
   const Mat3 normalMatrix = linear.inverse().transpose();
-  // Vertex by vertex, so the threads' split does not change a bit.
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, mesh.positions.size(), 8192), [&](const tbb::blocked_range<size_t>& r) {
-    for (size_t v = r.begin(); v != r.end(); ++v) mesh.positions[v] = transform * mesh.positions[v];
+  forVertexRanges(mesh.positions.size(), [&](uint32_t begin, uint32_t end) {
+    for (uint32_t v = begin; v < end; ++v) mesh.positions[v] = transform * mesh.positions[v];
   });
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, mesh.normals.size(), 8192), [&](const tbb::blocked_range<size_t>& r) {
-    for (size_t v = r.begin(); v != r.end(); ++v) {
-      Vec3& n = mesh.normals[v];
-      const Vec3 m = normalMatrix * n;
+  forVertexRanges(mesh.normals.size(), [&](uint32_t begin, uint32_t end) {
+    for (uint32_t v = begin; v < end; ++v) {
+      const Vec3 m = normalMatrix * mesh.normals[v];
       const float length = m.norm();
-      if (length > 0.0f && std::isfinite(length)) n = m / length;
+      if (length > 0.0f && std::isfinite(length)) mesh.normals[v] = m / length;
     }
   });
 

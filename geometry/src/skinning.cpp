@@ -1,12 +1,12 @@
 // Linear blend skinning and rigid joint transforms.
 #include "lacrima/geometry/skinning.hpp"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 
 #include <stdexcept>
 
 #include <fmt/format.h>
+
+#include "vertex_ranges.hpp"
 
 namespace lacrima {
 
@@ -35,9 +35,8 @@ void applyLinearBlendSkinning(std::vector<Vec3>& positions, const std::vector<Af
     throw std::invalid_argument(fmt::format("skinning: {} weights for {} vertices and {} bones",
                                             weights.weights.size(), positions.size(), bones.size()));
   const size_t n = bones.size();
-  // Vertex by vertex, so the threads' split does not change a bit.
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, positions.size(), 8192), [&](const tbb::blocked_range<size_t>& r) {
-    for (size_t v = r.begin(); v != r.end(); ++v) {
+  forVertexRanges(positions.size(), [&](uint32_t begin, uint32_t end) {
+    for (size_t v = begin; v < end; ++v) {
       // LBS (Bao et al. 2019): v' = sum_k w_k T_k v. Blending the matrices first (T = sum_k w_k T_k) is
       // the same linear map and costs one matrix-vector product per vertex instead of one per bone.
       Eigen::Matrix<float, 3, 4> blended = Eigen::Matrix<float, 3, 4>::Zero();

@@ -284,8 +284,8 @@ std::vector<Vec3d> FleshRun::nodeOffsetsAt(double frame) {
   return offsets;
 }
 
-bool fleshMoves(const ShotFlesh& flesh, size_t primitive, const TriangleMesh& posed) {
-  return flesh.run && primitive == flesh.primitive && posed.positions.size() == flesh.skinEmbedding.size();
+bool fleshMoves(const ShotFlesh& flesh, const TriangleMesh& posed) {
+  return flesh.run && posed.positions.size() == flesh.skinEmbedding.size();
 }
 
 void moveSkinWithFlesh(const ShotFlesh& flesh, const GltfPrimitive& primitiveSource, const std::vector<Vec3d>& offsets,

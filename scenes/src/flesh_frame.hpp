@@ -100,8 +100,8 @@ class FleshRun {
   size_t nextPosedSlot_ = 0;
 };
 
-// Whether the flesh moves this posed primitive: it is the flesh's, and the flesh is resolved.
-bool fleshMoves(const ShotFlesh& flesh, size_t primitive, const TriangleMesh& posed);
+// Whether the flesh moves its posed primitive: the flesh is resolved and embedded in this mesh.
+bool fleshMoves(const ShotFlesh& flesh, const TriangleMesh& posed);
 
 // Moves the posed primitive's embedded skin vertices by the flesh's node offsets (its run's
 // nodeOffsetsAt one time), interpolated in their tetrahedra, and renews its normals as the rig

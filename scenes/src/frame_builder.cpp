@@ -263,7 +263,7 @@ void applyFleshes(const Shot& shot, const ShutterTimes& shutter, PosedAssets& op
     const GltfPrimitive& source = shot.assets[flesh.asset].gltf->primitives[flesh.primitive];
     TriangleMesh& atOpen = open[flesh.asset][flesh.primitive];
     TriangleMesh* atClose = close && !(*close)[flesh.asset].empty() ? &(*close)[flesh.asset][flesh.primitive] : nullptr;
-    if (!shotfile::fleshMoves(flesh, flesh.primitive, atOpen)) continue;
+    if (!shotfile::fleshMoves(flesh, atOpen)) continue;
     // The simulation steps forward in time: open's offsets first, then close's.
     const std::vector<Vec3d> offsetsAtOpen = flesh.run->nodeOffsetsAt(shutter.open);
     const std::vector<Vec3d> offsetsAtClose = atClose ? flesh.run->nodeOffsetsAt(shutter.close) : std::vector<Vec3d>{};
