@@ -392,6 +392,17 @@ TEST(CliCheck, GoodShotIsOkAndItsWarningsGoToStderr) {
   EXPECT_EQ(err.output, warningLines(shot));
 }
 
+TEST(CliCheck, ThreadsCapTheWorkNotTheVerdict) {
+  const std::string drops = sourcePath("scenes/shots/test_drops.json");
+  const auto all = lacrimaStdout({"check", drops});
+  const auto one = lacrimaStdout({"check", drops, "--threads", "1"});
+  EXPECT_EQ(one.exitStatus, 0);
+  EXPECT_EQ(one.output, all.output);
+  const auto bad = lacrima({"check", drops, "--threads", "-2"});
+  EXPECT_EQ(bad.exitStatus, 2);
+  EXPECT_EQ(bad.output, "--threads: expected an integer >= 0, found -2\n" + kHint);
+}
+
 TEST(CliCheck, WarningsArePrintedWithTheirLocation) {
   const fs::path dir = freshDir();
   const fs::path shot = writeWarningShot(dir);

@@ -304,6 +304,24 @@ TEST(ExportSph, TheSurfacedLiquidIsExportedAsTheFrameBuilderSurfacesIt) {
   EXPECT_TRUE(sawLiquid) << "no mesh named 'sph 0' in the export";
 }
 
+// --threads caps the loading and the frames' geometry; the files are the same for any count.
+TEST(ExportThreads, OneThreadWritesTheSameBytesAsAllCores) {
+  const fs::path dir = test::testDirectory("export_threads", /*fresh=*/true);
+  const fs::path shotPath = writeExportShot(dir);
+  auto bytesOf = [](const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  };
+  for (const std::string threads : {"1", "0"}) {
+    const auto run = lacrima({"export", shotPath.string(), "--frames", "2", "--threads", threads, "--out",
+                              (dir / ("threads" + threads + ".glb")).string()});
+    ASSERT_EQ(run.exitStatus, 0) << run.output;
+  }
+  const std::string one = bytesOf(dir / "threads1.glb");
+  EXPECT_GT(one.size(), 1000u);
+  EXPECT_TRUE(one == bytesOf(dir / "threads0.glb"));
+}
+
 // ---- bad input ---------------------------------------------------------------------------------
 
 class ExportErrors : public ::testing::Test {
@@ -326,6 +344,10 @@ class ExportErrors : public ::testing::Test {
 
 TEST_F(ExportErrors, UnknownFormat) {
   EXPECT_EQ(exportFails({"--format", "fbx"}), "--format: expected glb or obj, found 'fbx'\n" + kHint);
+}
+
+TEST_F(ExportErrors, NegativeThreads) {
+  EXPECT_EQ(exportFails({"--threads", "-1"}), "--threads: expected an integer >= 0, found -1\n" + kHint);
 }
 
 TEST_F(ExportErrors, FramesOutsideTheShotOrMalformed) {

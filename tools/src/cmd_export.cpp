@@ -11,6 +11,7 @@
 #include "lacrima/scenes/shot.hpp"
 #include "memory_usage.hpp"
 #include "mesh_export.hpp"
+#include "thread_cap.hpp"
 
 namespace lacrima::cli {
 
@@ -42,23 +43,29 @@ void exportFrame(const ExportOptions& o, const Shot& shot, const std::string& pa
                scene.triangleCount(), path.string().c_str(), mtlNote.c_str());
 }
 
+// Loads the shot and writes every selected frame (InputError for bad input or an unwritable output).
+int exportFrames(const ExportOptions& o) {
+  const auto start = std::chrono::steady_clock::now();
+  const Shot shot = loadShot(o.shotPath);
+  const std::vector<int> frames = selectShotFrames(o.frames, shot);
+  const std::string pattern = exportPattern(o, shot, frames.size());
+  printShotWarnings(shot);
+  for (int frameNumber : frames) {
+    exportFrame(o, shot, pattern, frameNumber);
+    releaseFreeHeapMemory();
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::fprintf(stderr, "lacrima: %zu frame%s exported as %s in %.2f s\n", frames.size(),
+               frames.size() == 1 ? "" : "s", o.format.c_str(), seconds);
+  return kExitOk;
+}
+
 }  // namespace
 
 int runExport(const ExportOptions& o) {
   try {
-    const auto start = std::chrono::steady_clock::now();
-    const Shot shot = loadShot(o.shotPath);
-    const std::vector<int> frames = selectShotFrames(o.frames, shot);
-    const std::string pattern = exportPattern(o, shot, frames.size());
-    printShotWarnings(shot);
-    for (int frameNumber : frames) {
-      exportFrame(o, shot, pattern, frameNumber);
-      releaseFreeHeapMemory();
-    }
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::fprintf(stderr, "lacrima: %zu frame%s exported as %s in %.2f s\n", frames.size(),
-                 frames.size() == 1 ? "" : "s", o.format.c_str(), seconds);
-    return kExitOk;
+    // --threads caps the loading and every frame's geometry (thread_cap.hpp).
+    return withThreadCap(o.threads, [&] { return exportFrames(o); });
   } catch (const InputError& e) {
     std::fprintf(stderr, "%s\n", e.what());
     return kExitBadInput;

@@ -41,6 +41,7 @@ struct ExportOptions {
   std::optional<std::string> frames;  // none: the shot's range
   std::string format = "glb";         // "glb" or "obj" (main.cpp validates)
   std::string outputPattern;          // empty: the shot's output pattern with the format's extension
+  int threads = 0;                    // 0: all cores
 };
 
 struct FloodOptions {
@@ -139,7 +140,7 @@ struct TestSuiteOptions {
 int runRender(const RenderOptions& options);
 int runDiff(const DiffOptions& options);
 int runTestSuite(const TestSuiteOptions& options);
-int runCheck(const std::string& shotPath);
+int runCheck(const std::string& shotPath, int threads = 0);
 int runInfo(const std::string& path);
 int runBench(const BenchOptions& options);
 int runBenchQuality(const BenchOptions& options);

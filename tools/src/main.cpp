@@ -189,6 +189,9 @@ void addExport(CLI::App& app, ExportOptions& o) {
       ->check(oneOf({"glb", "obj"}));
   exportCommand->add_option("--out,-o", o.outputPattern,
                             "Output path pattern, #### = frame number (default: the shot's output with .glb/.obj)");
+  exportCommand->add_option("--threads,-t", o.threads,
+                            "Worker threads for loading the shot and building each frame (0 = all cores; the files are "
+                            "the same for any count)")->check(integerIn(0, INT_MAX));
   exportCommand->callback([&o] { throw CLI::RuntimeError(runExport(o)); });
 }
 
@@ -369,10 +372,12 @@ void addFarm(CLI::App& app, FarmSubmitOptions& submit, FarmStatusOptions& status
   statusCommand->callback([&status] { throw CLI::RuntimeError(runFarmStatus(status)); });
 }
 
-void addCheck(CLI::App& app, std::string& shot) {
+void addCheck(CLI::App& app, std::string& shot, int& threads) {
   auto* check = app.add_subcommand("check", "Validate a shot file and its assets without rendering");
   check->add_option("shot", shot, "Shot file (JSON)")->required();
-  check->callback([&shot] { throw CLI::RuntimeError(runCheck(shot)); });
+  check->add_option("--threads,-t", threads, "Worker threads for loading the shot and building its first frame (0 = all cores)")
+      ->check(integerIn(0, INT_MAX));
+  check->callback([&shot, &threads] { throw CLI::RuntimeError(runCheck(shot, threads)); });
 }
 
 void addInfo(CLI::App& app, std::string& file) {
@@ -556,8 +561,9 @@ int main(int argc, char** argv) {
   FloodOptions floodOptions;
   TrackOptions trackOptions;
   std::string checkShot, infoFile;
+  int checkThreads = 0;
   addRender(app, renderOptions);
-  addCheck(app, checkShot);
+  addCheck(app, checkShot, checkThreads);
   addInfo(app, infoFile);
   addBench(app, benchOptions);
   addExport(app, exportOptions);
