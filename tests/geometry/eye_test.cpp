@@ -48,21 +48,56 @@ TEST_F(IctEye, ShellIsABallWithACornealBulgeLookingForward) {
   EXPECT_GT(m.limbusLoop.size(), 8u);
 }
 
+double areaOf(const TriangleMesh& mesh) {
+  double area = 0.0;
+  for (size_t t = 0; t < mesh.triangleCount(); ++t) {
+    const Vec3d a = mesh.positions[mesh.indices[3 * t]].cast<double>();
+    const Vec3d b = mesh.positions[mesh.indices[3 * t + 1]].cast<double>();
+    const Vec3d c = mesh.positions[mesh.indices[3 * t + 2]].cast<double>();
+    area += 0.5 * (b - a).cross(c - a).norm();
+  }
+  return area;
+}
+
 TEST_F(IctEye, CorneaAndScleraPartitionTheShell) {
   const TriangleMesh& shell = part("M_ScleraRight").mesh;
   const EyeModel m = analyseEye(shell, EyeParams{}, "right eye");
+  const TriangleMesh cut = cutAtLimbus(m, shell);
   std::set<uint32_t> all(m.corneaTriangles.begin(), m.corneaTriangles.end());
   for (uint32_t t : m.scleraTriangles) EXPECT_TRUE(all.insert(t).second) << "triangle " << t << " is in both";
-  EXPECT_EQ(all.size(), shell.triangleCount());
+  EXPECT_EQ(all.size(), cut.triangleCount());
+  // Each crossed triangle became three covering it: more triangles, the same area.
+  EXPECT_GT(cut.triangleCount(), shell.triangleCount());
+  EXPECT_NEAR(areaOf(cut), areaOf(shell), 1e-5 * areaOf(shell));
   const EyeMeshes eye = buildEye(m, shell);
   EXPECT_EQ(eye.cornea.triangleCount(), m.corneaTriangles.size() + 3 * m.limbusLoop.size());  // cap, wall, back
   EXPECT_EQ(eye.sclera.triangleCount(), m.scleraTriangles.size());
   // Every cap vertex lies within the limbus, in front of the centre.
   for (uint32_t t : m.corneaTriangles)
     for (int k = 0; k < 3; ++k) {
-      const Vec3 d = shell.positions[shell.indices[3 * t + k]] - m.center;
-      EXPECT_LT((d - d.dot(m.axis) * m.axis).norm(), m.params.limbusRadius + 1.5e-3f);
+      const Vec3 d = cut.positions[cut.indices[3 * t + k]] - m.center;
+      EXPECT_LT((d - d.dot(m.axis) * m.axis).norm(), m.params.limbusRadius + 1e-6f);
+      EXPECT_GT(d.dot(m.axis), 0.0f);
     }
+}
+
+TEST_F(IctEye, TheLimbusIsACircleNotTheShellsEdges) {
+  // The cap's boundary runs on the limbus circle: each loop vertex at limbusRadius from the axis
+  // (to the error of interpolating along one shell edge), where the shell's own edges strayed up
+  // to 1.5 mm from it (a notched limbus, and an iris root following the notches).
+  const TriangleMesh& shell = part("M_ScleraRight").mesh;
+  const EyeModel m = analyseEye(shell, EyeParams{}, "right eye");
+  const TriangleMesh cut = cutAtLimbus(m, shell);
+  float worst = 0.0f;
+  for (uint32_t v : m.limbusLoop) {
+    const Vec3 d = cut.positions[v] - m.center;
+    worst = std::max(worst, std::abs((d - d.dot(m.axis) * m.axis).norm() - m.params.limbusRadius));
+  }
+  std::printf("[ info     ] limbus loop %zu vertices, at most %.2f um off the circle\n", m.limbusLoop.size(), worst * 1e6f);
+  EXPECT_GT(m.limbusLoop.size(), 24u);
+  EXPECT_LT(worst, 50e-6f);
+  // So the iris root, placed under the loop, is round too.
+  for (const Vec2& root : m.irisRoot) EXPECT_NEAR(root.x(), m.irisRootRadius, 50e-6f);
 }
 
 TEST_F(IctEye, CorneaIsAClosedOutwardVolumeAndTheIrisLiesInsideIt) {
@@ -135,12 +170,12 @@ std::string eyeErrorOf(const TriangleMesh& shell, const EyeParams& params) {
 TEST_F(IctEye, RejectsALimbusWithoutCorneaAPupilLargerThanTheIrisAndAnIrisTooDeep) {
   const TriangleMesh& shell = part("M_ScleraRight").mesh;
   EyeParams tiny;
-  tiny.limbusRadius = 1e-4f;
-  EXPECT_EQ(eyeErrorOf(shell, tiny), "right eye: no triangle of the eyeball shell lies within the limbus (0.1 mm)");
+  tiny.limbusRadius = 1e-6f;
+  EXPECT_EQ(eyeErrorOf(shell, tiny), "right eye: no triangle of the eyeball shell lies within the limbus (0.001 mm)");
   EyeParams bigPupil;
-  bigPupil.pupilRadius = 0.0055f;
+  bigPupil.pupilRadius = 0.0056f;
   EXPECT_EQ(eyeErrorOf(shell, bigPupil),
-            "right eye: the pupil (5.5 mm) must be at least 0.5 mm smaller than the iris (5.75 mm)");
+            "right eye: the pupil (5.6 mm) must be at least 0.5 mm smaller than the iris (6.02 mm)");
   EyeParams deep;
   deep.irisDepth = 0.0055f;
   EXPECT_EQ(eyeErrorOf(shell, deep), "right eye: the pupil lies behind the chamber's back; reduce irisDepth (5.5 mm)");

@@ -5,7 +5,9 @@
 // volume, cornea and aqueous humour merged), and an iris with depth (a cone from the limbus to the
 // pupil margin, set back behind the corneal apex) and a pupil sit inside that chamber.
 // Analysed once on the rest shell (analyseEye), then built on every posed shell (buildEye): the
-// cap and sclera are the posed shell's own triangles, the rest follows the shell's rigid motion.
+// cap and sclera are the posed shell's own triangles, split where the limbus circle crosses them
+// (so the limbus is the circle, not a zig-zag along the shell's edges), the rest follows the
+// shell's rigid motion.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -21,6 +23,12 @@ struct EyeParams {
   int irisRings = 6, irisSegments = 64;
 };
 
+// A vertex added where the limbus crosses an edge of the shell: (1 - t) a + t b of shell vertices.
+struct LimbusCrossing {
+  uint32_t a = 0, b = 0;
+  float t = 0.0f;
+};
+
 // What analyseEye finds on the rest shell.
 struct EyeModel {
   EyeParams params;
@@ -29,8 +37,12 @@ struct EyeModel {
   Vec3 axis = Vec3::UnitZ();      // optical axis, unit, centre -> corneal apex
   Vec3 up = Vec3::UnitY();        // unit, perpendicular to axis (world +Y projected)
   float apexHeight = 0.0f;        // corneal apex along the axis from the centre
-  std::vector<uint32_t> weldMap;  // findCoincidentVertices of the rest shell
-  std::vector<uint32_t> corneaTriangles, scleraTriangles;  // partition of the shell's triangles
+  // The shell cut at the limbus: its vertices, then one per crossed edge (crossings); its
+  // triangles, those crossed split in three (cutIndices, three per triangle).
+  std::vector<LimbusCrossing> crossings;
+  std::vector<uint32_t> cutIndices;
+  std::vector<uint32_t> weldMap;  // findCoincidentVertices of the cut rest shell
+  std::vector<uint32_t> corneaTriangles, scleraTriangles;  // partition of the cut shell's triangles
   std::vector<uint32_t> limbusLoop;  // welded vertex indices of the cap's boundary, in cap winding order
   std::vector<Vec2> irisRoot;  // per iris segment (equal angles from `right` towards `up`): (radius, height)
   float irisRootRadius = 0.0f, irisRootHeight = 0.0f;  // the root's largest radius and lowest height
@@ -50,6 +62,11 @@ struct EyeMeshes {
   TriangleMesh iris;    // annulus, front side towards the cornea
   TriangleMesh pupil;   // dark disc just behind the pupil opening, facing forward
 };
+
+// The shell (rest or posed, the rest shell's topology) cut at the limbus: the model's crossings
+// added as vertices (positions and, when the shell has them, normals interpolated) and its
+// triangles replaced by cutIndices.
+TriangleMesh cutAtLimbus(const EyeModel& model, const TriangleMesh& shell);
 
 // The rigid motion (rotation + translation, Umeyama 1991 without scale) that best carries the
 // rest shell's vertices onto the posed shell's.
