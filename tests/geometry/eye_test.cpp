@@ -6,6 +6,7 @@
 #include <set>
 
 #include "geometry/glb_test_util.hpp"
+#include "geometry/mesh_test_util.hpp"
 #include "lacrima/geometry/error.hpp"
 #include "lacrima/geometry/eye.hpp"
 #include "lacrima/geometry/face_rig.hpp"
@@ -48,17 +49,6 @@ TEST_F(IctEye, ShellIsABallWithACornealBulgeLookingForward) {
   EXPECT_GT(m.limbusLoop.size(), 8u);
 }
 
-double areaOf(const TriangleMesh& mesh) {
-  double area = 0.0;
-  for (size_t t = 0; t < mesh.triangleCount(); ++t) {
-    const Vec3d a = mesh.positions[mesh.indices[3 * t]].cast<double>();
-    const Vec3d b = mesh.positions[mesh.indices[3 * t + 1]].cast<double>();
-    const Vec3d c = mesh.positions[mesh.indices[3 * t + 2]].cast<double>();
-    area += 0.5 * (b - a).cross(c - a).norm();
-  }
-  return area;
-}
-
 TEST_F(IctEye, CorneaAndScleraPartitionTheShell) {
   const TriangleMesh& shell = part("M_ScleraRight").mesh;
   const EyeModel m = analyseEye(shell, EyeParams{}, "right eye");
@@ -68,7 +58,7 @@ TEST_F(IctEye, CorneaAndScleraPartitionTheShell) {
   EXPECT_EQ(all.size(), cut.triangleCount());
   // Each crossed triangle became three covering it: more triangles, the same area.
   EXPECT_GT(cut.triangleCount(), shell.triangleCount());
-  EXPECT_NEAR(areaOf(cut), areaOf(shell), 1e-5 * areaOf(shell));
+  EXPECT_NEAR(test::meshArea(cut), test::meshArea(shell), 1e-5 * test::meshArea(shell));
   const EyeMeshes eye = buildEye(m, shell);
   EXPECT_EQ(eye.cornea.triangleCount(), m.corneaTriangles.size() + 3 * m.limbusLoop.size());  // cap, wall, back
   EXPECT_EQ(eye.sclera.triangleCount(), m.scleraTriangles.size());

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <map>
 
+#include "geometry/mesh_test_util.hpp"
 #include "lacrima/geometry/region_refinement.hpp"
 
 namespace lacrima {
@@ -81,16 +82,6 @@ std::string weldedClosedDefect(const TriangleMesh& m) {
   return findClosedMeshDefect(welded);
 }
 
-double area(const TriangleMesh& m) {
-  double sum = 0.0;
-  for (size_t t = 0; t < m.triangleCount(); ++t) {
-    const Vec3d a = m.positions[m.indices[3 * t]].cast<double>(), b = m.positions[m.indices[3 * t + 1]].cast<double>(),
-                c = m.positions[m.indices[3 * t + 2]].cast<double>();
-    sum += 0.5 * (b - a).cross(c - a).norm();
-  }
-  return sum;
-}
-
 class RegionRefinementLevels : public ::testing::TestWithParam<std::tuple<int, RefinementScheme>> {};
 
 TEST_P(RegionRefinementLevels, RefinedPatchOfAClosedMeshStaysClosedAndOriented) {
@@ -163,7 +154,7 @@ TEST(RegionRefinement, LinearKeepsAPlanarPatchOnItsPlaneWithItsAreaAndItsVertice
   for (int levels : {1, 3}) {
     const TriangleMesh refined = refineMesh(plane, patch, RefinementScheme::Linear, levels);
     for (const Vec3& p : refined.positions) ASSERT_EQ(p.z(), 0.0f);
-    EXPECT_NEAR(area(refined), 1.0, 1e-6);
+    EXPECT_NEAR(test::meshArea(refined), 1.0, 1e-6);
     for (size_t v = 0; v < plane.vertexCount(); ++v) ASSERT_EQ(refined.positions[v], plane.positions[v]) << v;
     // The uvs of this grid are its xy: linear refinement keeps that.
     for (size_t v = 0; v < refined.vertexCount(); ++v)
@@ -231,7 +222,7 @@ TEST(RegionRefinement, LoopSmoothsTheInsideOfAPatchAndLeavesTheRestBitwise) {
   loopMesh.indices = loop.indices;
   TriangleMesh linearMesh = loopMesh;
   linearMesh.positions = linearP;
-  EXPECT_NEAR(area(loopMesh), area(linearMesh), 0.03 * area(linearMesh));
+  EXPECT_NEAR(test::meshArea(loopMesh), test::meshArea(linearMesh), 0.03 * test::meshArea(linearMesh));
 
   // Vertices on no refined triangle are bitwise where they were.
   std::vector<bool> inRegion(sphere.vertexCount(), false);
