@@ -114,6 +114,12 @@ excluded_tests+=":Dfsph.WaterColumnStaysAtRestWithAPressureGrowingAsRhoGH"
 excluded_tests+=":Dfsph.DamBreakFrontRunsAsMartinAndMoyceMeasured"
 excluded_tests+=":RayleighOscillation.*Rings*:RayleighOscillation.PeriodGrows*"
 excluded_tests+=":MeshBoundary.OneLayerOfSamplesHoldsWaterInAClosedTank"
+# And the flesh's vibrating bar refined three times (0.98 s in Release, 190 s under ASan at -O1 on
+# 2026-12-06: Eigen's 3x3 algebra is not inlined there): just under the timing rule's 1 s below,
+# so it ran on quiet days and made the flesh stage 212 s instead of ~67. The same time stepping,
+# stress and solver run under the sanitizers in the other FleshSimulation tests (a free block's
+# momentum, a jerk of the rig, the energy of both integrators), and the Release ctest runs it.
+excluded_tests+=":FleshSimulation.BarVibratesAtTheWaveEquationsPeriodUnderRefinement"
 # And the tracker's two sequence runs (40 frames captured, tracked and fitted with and without the
 # animation prior: 2 s each in Release, 2026-12-05). The same ICP, fit, prior and filter run under
 # the sanitizers in the single-frame tracking tests, and the Release ctest runs these in full.
