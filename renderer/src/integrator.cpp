@@ -63,17 +63,32 @@ const Bsdf* withTextures(const Bsdf* bsdf, const SurfaceTextures& textures, cons
   return bsdf;
 }
 
-// Skin whose relief darkens its hollows (SkinParams::cavity, skin_relief.hpp): the hit shades with
-// the albedo times the cavity factor there, a BSDF built in `storage` (textured parameters kept)
-// that also carries the relief's gradient, so the relief is evaluated once per hit.
-const Bsdf* withSkinCavity(const Bsdf* bsdf, const Material& material, const Vec3& position, TexturedHit& storage) {
+// Skin's parameters at this hit, where they differ from the material's (textured ones kept), in
+// a BSDF built in `storage`:
+// - a relief that darkens its hollows (SkinParams::cavity, skin_relief.hpp): the albedo times the
+//   cavity factor there; the BSDF also carries the relief's gradient, so the relief is evaluated
+//   once per hit;
+// - skin under water (surroundingIor > 1: inside a bead or a rivulet): its surface layer meets
+//   water, not air, and the Fresnel equations depend on the ratio of the two indices alone (Born &
+//   Wolf 1999, section 1.5.2), so its specular lobes, and the transmission its base or subsurface
+//   entry pays, take the relative index ior / surroundingIor. For skin (1.4) under tear water
+//   (1.337) F(0) falls from 2.8 % to 0.05 %: skin seen through a drop loses its sheen.
+const Bsdf* skinAtHit(const Bsdf* bsdf, const Material& material, const Vec3& position, float surroundingIor,
+                      TexturedHit& storage) {
   const auto* skin = std::get_if<SkinParams>(&material.params);
-  if (!skin || !(skin->cavity > 0.0f)) return bsdf;
+  if (!skin) return bsdf;
+  const bool cavity = skin->cavity > 0.0f, immersed = surroundingIor != 1.0f;
+  if (!cavity && !immersed) return bsdf;
   SkinParams params = storage.skin ? *storage.skin : *skin;
-  const SkinRelief relief = skinReliefAt(params, position);
-  params.albedo *= cavityAlbedoFactor(params, relief);
+  std::optional<Vec3> reliefGradient;
+  if (cavity) {
+    const SkinRelief relief = skinReliefAt(params, position);
+    params.albedo *= cavityAlbedoFactor(params, relief);
+    reliefGradient = relief.gradient;
+  }
+  if (immersed) params.ior /= surroundingIor;
   storage.skin = params;
-  return &storage.bsdf.emplace<SkinBsdf>(params, relief.gradient);
+  return &storage.bsdf.emplace<SkinBsdf>(params, reliefGradient);
 }
 
 // The per-type bounce limits (RenderSettings::bounces): how many times a path has scattered of
@@ -360,8 +375,10 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
   Ray ray = cameraRay;
   MediumStack media = cameraMedia_;  // the dielectric media the path is in (nested dielectrics only)
   // The path refracted into a closed dielectric (a bead, a rivulet) and has not left it: skin it
-  // meets there is wetted by that water, which is its film (see underSkinFilm).
+  // meets there is wetted by that water, which is its film (see underSkinFilm), and its surface
+  // meets a medium of index surroundingIor (see skinAtHit).
   bool inDielectric = false;
+  float surroundingIor = 1.0f;
   BounceCounter bounces(frame_.settings.bounces);
   // A bounce limit was passed: this segment gathers the light it meets, then the path ends.
   bool lastSegment = false;
@@ -416,7 +433,7 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
       v.bsdf = interfaceBsdf(hit.materialId, classifyInterface(media, hit.materialId, frontFacing).otherMaterial);
     TexturedHit textured;  // v.bsdf may point here for this bounce
     v.bsdf = withTextures(v.bsdf, textures_, material, hit, pathLength * pixelSpread_, textured);
-    v.bsdf = withSkinCavity(v.bsdf, material, hit.position, textured);
+    v.bsdf = skinAtHit(v.bsdf, material, hit.position, surroundingIor, textured);
     std::optional<WetSkinBsdf> wetSkin;  // v.bsdf may point here for this bounce
     v.bsdf = underSkinFilm(v.bsdf, material, inDielectric ? 0.0f : hit.wetness, wetSkin);
     if (!v.bsdf->isTransmissive()) {
@@ -495,6 +512,8 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
       if (!v.thinSheet) {
         crossInterface(media, hit.materialId, frontFacing);
         inDielectric = frontFacing;
+        // The innermost medium entered (as inDielectric, nested media are not unwound here).
+        if (isDielectric(hit.materialId)) surroundingIor = frontFacing ? media_[hit.materialId]->ior : 1.0f;
       }
     }
     if (!bs->specular) {
@@ -558,7 +577,7 @@ PathIntegrator::Below PathIntegrator::scatterBelowSurface(const SubsurfaceSkin& 
   const auto exit = findSubsurfaceExit(below, v, probe, sampler.independentStream(walkStream), counters);
   if (!exit) return result;
   // Entry pays the Fresnel transmission of the base it replaces (skin.hpp, subsurface.hpp).
-  const float entry = 1.0f - fresnelDielectric(v.woLocal.z(), skin.ior);
+  const float entry = 1.0f - fresnelDielectric(v.woLocal.z(), surface.ior());  // against water under a drop
   result.exitWeight = exit->weight * (dryFraction * entry);
   Vertex& out = result.exit.emplace(v);
   out.position = exit->position;

@@ -121,6 +121,30 @@ TEST(WetSkinRender, SkinUnderWaterShadesWithoutItsFilm) {
   EXPECT_NE(dry.rgba, renderFrame(skinFloor(-1.0f)).rgba);  // the water is there
 }
 
+// Skin under water reflects against water: Fresnel's equations take the ratio of the indices, so
+// a skin whose surface layer has the water's own index reflects nothing there. With a black base
+// the floor then renders as a black one does under the same water (only the water's surfaces
+// reflect); the old shading against air left its specular lobes with F(0) = 2 %.
+TEST(WetSkinRender, SkinUnderWaterOfTheWatersIndexReflectsNothing) {
+  constexpr float kWaterIor = 1.337f;
+  SkinParams blackSkin;
+  blackSkin.albedo = Color::Zero();
+  blackSkin.ior = kWaterIor;
+  auto underWater = [](const MaterialParams& floor) {
+    Frame frame = skinFloor(-1.0f, floor);
+    frame.materials.push_back(Material{"water", SmoothDielectricParams{kWaterIor}, Color::Zero()});
+    frame.meshes.push_back(waterSlab(1));
+    return frame;
+  };
+  const Color skin = meanColor(renderFrame(underWater(blackSkin)));
+  const Color black = meanColor(renderFrame(underWater(DiffuseParams{Color::Zero()})));
+  const Color skinInAir = meanColor(renderFrame(skinFloor(-1.0f, blackSkin)));
+  std::printf("[ wet ] black floor under water: skin of the water's index %.6f, black %.6f; the skin in air %.6f\n",
+              skin.x(), black.x(), skinInAir.x());
+  EXPECT_GT(skinInAir.x(), 0.01f);  // in air the same skin does reflect
+  EXPECT_TRUE(((skin - black).cwiseAbs() < 1e-6f).all()) << "skin " << skin.transpose() << " black " << black.transpose();
+}
+
 TEST(WetSkinRender, WetnessOfTheWrongSizeIsRejected) {
   Frame frame = skinFloor(kTrailFilm);
   frame.meshes.back().wetness.push_back(0.0f);
