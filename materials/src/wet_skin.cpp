@@ -57,7 +57,8 @@ WetSkinBsdf::WetSkinBsdf(const SkinBsdf& skin, float coverage)
       coverage_(std::clamp(coverage, 0.0f, 1.0f)),
       coat_(roughnessToAlpha(kWetCoatRoughness)),
       wetAlbedo_(Color::Zero()),
-      underNorm_(kInvPi / (1.0f - waterHemisphericalReflectance())) {
+      underNorm_(kInvPi / (1.0f - waterHemisphericalReflectance())),
+      hasUnder_(skin.hasDiffuseLobe()) {
   if (coverage_ == 0.0f) return;  // the skin alone: nothing wet to set up
   wetAlbedo_ = wetSkinBaseAlbedo(skin.albedo(), skin.ior(), kWaterIor, waterHemisphericalReflectance())
                    .cwiseMin(kMaxSkinAlbedo);  // the skin's energy margin (wet_skin.hpp, Energy)
@@ -77,19 +78,34 @@ Color WetSkinBsdf::albedo() const {
   return (1.0f - coverage_) * skin_.albedo() + coverage_ * wetAlbedo_;
 }
 
-float WetSkinBsdf::coatProbability(const Vec3& wo) const {
+float WetSkinBsdf::coatShare(const Vec3& wo) const {
   // Ratio of the wet layer's approximate albedos, coat Fw(cos_o) vs base lum(a_wet)(1 - Fw).
   const float fo = fresnelDielectric(wo.z(), kWaterIor);
   const float underEstimate = luminance(wetAlbedo_) * (1.0f - fo);
   return std::clamp(fo / std::max(fo + underEstimate, 1e-6f), 0.1f, 0.9f);
 }
 
+float WetSkinBsdf::coatProbability(const Vec3& wo) const { return hasUnder_ ? coatShare(wo) : 1.0f; }
+
+float WetSkinBsdf::belowTransmission(const Vec3& wo) const {
+  const float dry = 1.0f - fresnelDielectric(wo.z(), skin_.ior());
+  if (coverage_ == 0.0f) return dry;
+  return (1.0f - coverage_) * dry + coverage_ * (1.0f - fresnelDielectric(wo.z(), kWaterIor));
+}
+
+float WetSkinBsdf::belowProbability(const Vec3& wo) const {
+  const float dry = 1.0f - skin_.specularProbability(wo);
+  if (coverage_ == 0.0f) return dry;
+  return (1.0f - coverage_) * dry + coverage_ * (1.0f - coatShare(wo));
+}
+
 BsdfLobes WetSkinBsdf::wetLobes(const Vec3& wo, const Vec3& wi) const {
   BsdfLobes lobes;
-  // The film's base, through its top twice (wet_skin.hpp, f_under).
-  const float transO = 1.0f - fresnelDielectric(wo.z(), kWaterIor);
-  const float transI = 1.0f - fresnelDielectric(wi.z(), kWaterIor);
-  lobes.diffuse = wetAlbedo_ * (underNorm_ * transO * transI);
+  if (hasUnder_) {  // the film's base, through its top twice (wet_skin.hpp, f_under)
+    const float transO = 1.0f - fresnelDielectric(wo.z(), kWaterIor);
+    const float transI = 1.0f - fresnelDielectric(wi.z(), kWaterIor);
+    lobes.diffuse = wetAlbedo_ * (underNorm_ * transO * transI);
+  }
   // The film's top: GGX reflection, f = D G F / (4 cos_o cos_i) (Walter 2007 eq. 20).
   const Vec3 h = wo + wi;
   if (h.squaredNorm() > 0.0f) {

@@ -30,8 +30,8 @@ float powerHeuristic(float pdfA, float pdfB) {
 // with the skin's BSDF under that film, built in `storage` (on the stack, no allocation per hit).
 // The caller passes no film for skin the path meets inside a bead or rivulet: there the water over
 // the skin is the drop itself, already crossed, and a film's own top surface would add a second,
-// air-facing reflection (sparkles of the small lights under every bead). The skin's own specular
-// lobes still meet air's index there (left: it needs the medium at opaque hits).
+// air-facing reflection (sparkles of the small lights under every bead); the skin's own lobes
+// there meet water (skinAtHit).
 const Bsdf* underSkinFilm(const Bsdf* bsdf, const Material& material, float filmThickness,
                           std::optional<WetSkinBsdf>& storage) {
   if (!(filmThickness > 0.0f) || !std::holds_alternative<SkinParams>(material.params)) return bsdf;
@@ -467,13 +467,13 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
     else if (paths.active() && (direct.radiance != 0.0f).any())  // lobes only where light arrived
       paths.firstVertexDirect(throughput * direct.radiance, v.bsdf->evalLobes(v.woLocal, direct.wiLocal));
     if (subsurface_[hit.materialId]) {  // skin with subsurface: v.bsdf's lobes or a random walk
-      const float dryFraction = 1.0f - (wetSkin ? wetSkin->coverage() : 0.0f);
       const SubsurfaceSkin& skin = *subsurface_[hit.materialId];
       // A textured skin scatters below with its textured albedo and mean free path.
       const SkinParams& beneath = textured.skin ? *textured.skin : skin.params;
       const SkinBsdf& surface = textured.skin ? std::get<SkinBsdf>(textured.bsdf) : *skin.bsdf;
       sampler.setDimension(dimensions + sample_dimensions::kSubsurfaceChoice);
-      const Below below = scatterBelowSurface(skin, beneath, surface, v, dryFraction, sampler, counters);
+      const Below below =
+          scatterBelowSurface(skin, beneath, surface, wetSkin ? &*wetSkin : nullptr, v, sampler, counters);
       if (below.exit) {  // the light that leaves at the exit, whichever way the path goes on
         sampler.setDimension(dimensions + sample_dimensions::kExitLight);
         const DirectLight exitDirect = sampleDirectLight(*below.exit, media, sampler, counters);
@@ -541,14 +541,15 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
 }
 
 // Subsurface scattering (subsurface_walk.hpp, subsurface_probe.hpp). v.bsdf holds the skin's
-// specular lobes (and, under a tear film, the wet layer of wet_skin.hpp, whose base stays
-// Lambertian); the walk or probe replaces the Lambertian base of the dry fraction. Every sample
-// finds an exit and takes the light there, weighted (1 - c)(1 - F(cos_o)) times the method's
-// weight (c = film coverage): the light through the skin is split off the path, as the light
-// at any vertex is (NEE). One of the two then continues the path: v.bsdf with probability
-// pB = c + (1 - c) specularProbability(wo), else the exit, weighted 1 / (1 - pB). Each branch
-// divides by its probability, so the sum is unbiased, and the light found by the continuation
-// pairs with the NEE of its own vertex by MIS as before.
+// specular lobes (and, under a tear film, the film's coat: wet_skin.hpp, "Subsurface skin"); the
+// walk or probe replaces the Lambertian base, dry or under the film. Every sample finds an exit
+// and takes the light there, weighted by the light that crosses into the skin, 1 - F(cos_o) (dry)
+// or WetSkinBsdf::belowTransmission (wet), times the method's weight: the light through the skin
+// is split off the path, as the light at any vertex is (NEE). One of the two then continues the
+// path: v.bsdf with probability pB = specularProbability(wo) (dry) or 1 - belowProbability(wo)
+// (wet), else the exit, weighted 1 / (1 - pB). Each branch divides by its probability, so the sum
+// is unbiased, and the light found by the continuation pairs with the NEE of its own vertex by MIS
+// as before.
 std::optional<PathIntegrator::SubsurfaceSkin> PathIntegrator::makeSubsurfaceSkin(const MaterialParams& params) {
   const auto* skin = std::get_if<SkinParams>(&params);
   if (!skin || !skin->subsurface) return std::nullopt;
@@ -557,10 +558,12 @@ std::optional<PathIntegrator::SubsurfaceSkin> PathIntegrator::makeSubsurfaceSkin
 }
 
 PathIntegrator::Below PathIntegrator::scatterBelowSurface(const SubsurfaceSkin& skin, const SkinParams& below,
-                                                          const SkinBsdf& surface, const Vertex& v, float dryFraction,
-                                                          PixelSampler& sampler, PathCounters& counters) const {
+                                                          const SkinBsdf& surface, const WetSkinBsdf* wet,
+                                                          const Vertex& v, PixelSampler& sampler,
+                                                          PathCounters& counters) const {
   Below result;
-  result.pSurface = 1.0f - dryFraction * (1.0f - surface.specularProbability(v.woLocal));
+  const float pBelow = wet ? wet->belowProbability(v.woLocal) : 1.0f - surface.specularProbability(v.woLocal);
+  result.pSurface = 1.0f - pBelow;
   // The walk's independent stream is keyed by the dimension just past the choice's first.
   const uint32_t walkStream = sampler.dimension() + 1;
   // One stratified 4D block: the choice (and, rescaled, the probe's radius), then the probe's
@@ -568,7 +571,6 @@ PathIntegrator::Below PathIntegrator::scatterBelowSurface(const SubsurfaceSkin& 
   const std::array<float, 4> uBelow = sampler.get4D();
   const float uChoice = uBelow[0];
   result.goesBelow = uChoice >= result.pSurface;
-  if (dryFraction <= 0.0f) return result;  // all wet: nothing enters the skin (pSurface is 1)
   // The choice's number, uniform again on [0, 1) within its branch: stratified for the probe's radius.
   const float uRadius = std::min(result.goesBelow ? (uChoice - result.pSurface) / (1.0f - result.pSurface)
                                                   : uChoice / result.pSurface,
@@ -576,9 +578,11 @@ PathIntegrator::Below PathIntegrator::scatterBelowSurface(const SubsurfaceSkin& 
   const ProbeNumbers probe{uBelow[1], uRadius, uBelow[2], uBelow[3]};
   const auto exit = findSubsurfaceExit(below, v, probe, sampler.independentStream(walkStream), counters);
   if (!exit) return result;
-  // Entry pays the Fresnel transmission of the base it replaces (skin.hpp, subsurface.hpp).
-  const float entry = 1.0f - fresnelDielectric(v.woLocal.z(), surface.ior());  // against water under a drop
-  result.exitWeight = exit->weight * (dryFraction * entry);
+  // Entry pays the Fresnel transmission of the base it replaces (skin.hpp, subsurface.hpp): of the
+  // skin's surface (against water under a drop: skinAtHit), and of the film's top where wet.
+  const float entry =
+      wet ? wet->belowTransmission(v.woLocal) : 1.0f - fresnelDielectric(v.woLocal.z(), surface.ior());
+  result.exitWeight = exit->weight * entry;
   Vertex& out = result.exit.emplace(v);
   out.position = exit->position;
   out.geometricNormal = exit->geometricNormal;

@@ -16,6 +16,7 @@
 #include "lacrima/materials/bsdf.hpp"
 #include "lacrima/materials/skin.hpp"
 #include "lacrima/materials/subsurface.hpp"
+#include "lacrima/materials/wet_skin.hpp"
 #include "lacrima/renderer/cryptomatte.hpp"
 #include "lacrima/renderer/light_groups.hpp"
 #include "lacrima/renderer/light_paths.hpp"
@@ -112,12 +113,14 @@ class PathIntegrator {
   };
   struct Below;  // defined below, after Vertex
   static std::optional<SubsurfaceSkin> makeSubsurfaceSkin(const MaterialParams& params);
-  // Finds the exit below the dry fraction of the skin (a random walk or a diffusion-profile probe,
+  // Finds the exit below the skin, dry or under a film (a random walk or a diffusion-profile probe,
   // SubsurfaceParams::method) for every sample, so the light through the skin is never left to a
   // coin toss, then picks how the path goes on: v.bsdf's lobes with probability pSurface, else
-  // from the exit. below and surface: skin's own, or those of a textured hit (TexturedHit).
+  // from the exit. below and surface: skin's own, or those of a textured hit (TexturedHit); wet:
+  // the hit's wet skin (v.bsdf) under a tear film, else null.
   Below scatterBelowSurface(const SubsurfaceSkin& skin, const SkinParams& below, const SkinBsdf& surface,
-                            const Vertex& v, float dryFraction, PixelSampler& sampler, PathCounters& counters) const;
+                            const WetSkinBsdf* wet, const Vertex& v, PixelSampler& sampler,
+                            PathCounters& counters) const;
   // Where light that entered at v leaves the skin `below`, by its method: the probe with the
   // stratified numbers `probe`, the walk with as many numbers of `walkStream` (an independent
   // stream) as it takes steps.

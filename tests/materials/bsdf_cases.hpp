@@ -72,6 +72,9 @@ inline std::vector<BsdfCase> chi2Cases() {
       p.roughness2 = 0.6f;
       p.lobeMix = 0.3f;
       cases.push_back({std::string("wet_skin_") + label + "_" + incidence, p, cosO, coverage});
+      // Over subsurface skin: the coat and the skin's lobes alone (the walk serves both bases).
+      p.subsurface = SubsurfaceParams{};
+      cases.push_back({std::string("wet_skin_subsurface_") + label + "_" + incidence, p, cosO, coverage});
     }
   }
   for (const auto& [label, roughness] : {std::pair{"r02", 0.2f}, std::pair{"r05", 0.5f}, std::pair{"r09", 0.9f}}) {

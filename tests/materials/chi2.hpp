@@ -21,7 +21,7 @@
 
 namespace lacrima::test {
 
-inline constexpr int kChi2TestCount = 32;
+inline constexpr int kChi2TestCount = 36;
 
 // Regularised upper incomplete gamma Q(a, x) = Gamma(a, x) / Gamma(a)
 // (Press et al., "Numerical Recipes", 3rd ed., §6.2: series for x < a + 1, continued fraction

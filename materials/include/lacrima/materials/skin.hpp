@@ -73,6 +73,7 @@ class SkinBsdf final : public Bsdf {
   std::optional<BsdfSample> sample(const Vec3& wo, float uLobe, const Vec2& u) const override;
   Color albedo() const override { return albedo_; }  // clamped base albedo
   float ior() const { return ior_; }                  // index of the surface layer
+  bool hasDiffuseLobe() const { return hasDiffuseLobe_; }  // false with subsurface (see above)
 
   // Pores and furrows: ns tilted by the relief at the world position (skin_relief.hpp); ns when
   // poreDepth and furrowDepth are 0.

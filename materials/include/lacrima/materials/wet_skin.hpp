@@ -51,6 +51,16 @@
 // mixture density (Veach 1997 ch. 9, one-sample model), sample() returns the full f and pdf.
 // c = 0 is bitwise the skin BSDF (every call delegates).
 //
+// Subsurface skin (SkinParams::subsurface set, SkinBsdf::hasDiffuseLobe() false): the film is thin
+// (~20 um) next to the skin's mean free paths (~mm), so light that crosses its top scatters in the
+// skin as it does where the skin is dry. The wet layer is then the coat alone (f_under dropped,
+// the coat sampled with probability 1) and the renderer's walk or probe serves the base of both
+// fractions: light enters it with belowTransmission(wo) = (1 - c)(1 - F(cos_o)) + c (1 - Fw(cos_o))
+// (F the skin's Fresnel, Fw the water's; the skin-water interface under the film is nearly
+// index-matched and left out), and it continues the path below with belowProbability(wo). Without
+// this a trail on subsurface skin had a Lambertian base: a smooth, flatter band with an edge
+// against the dry skin around it. a_wet ~ a (see above), so the walk keeps the dry albedo.
+//
 // Pores (skin.hpp): the film fills them; the shading normal is the skin's pore-tilted one blended
 // towards the smooth one by c (modelling choice).
 #include "lacrima/materials/skin.hpp"
@@ -90,11 +100,19 @@ class WetSkinBsdf final : public Bsdf {
 
   float coverage() const { return coverage_; }
   const Color& wetAlbedo() const { return wetAlbedo_; }
-  // Probability of sampling the coat within the wet layer (exposed for tests).
+  // Probability of sampling the coat within the wet layer (exposed for tests); 1 on subsurface skin.
   float coatProbability(const Vec3& wo) const;
+
+  // Subsurface skin (see above): the fraction of the light arriving along wo that crosses into the
+  // skin, and the probability with which the renderer continues the path below the surface (the
+  // dry share's 1 - SkinBsdf::specularProbability, the wet share's 1 - the coat's share of the
+  // wet layer's albedo).
+  float belowTransmission(const Vec3& wo) const;
+  float belowProbability(const Vec3& wo) const;
 
  private:
   BsdfLobes wetLobes(const Vec3& wo, const Vec3& wi) const;  // the wet layer's base and coat
+  float coatShare(const Vec3& wo) const;  // the coat's share of the wet layer's albedo, clamped
   Color wetEval(const Vec3& wo, const Vec3& wi) const;
   float wetPdf(const Vec3& wo, const Vec3& wi) const;
 
@@ -103,6 +121,7 @@ class WetSkinBsdf final : public Bsdf {
   GgxDistribution coat_;
   Color wetAlbedo_;    // a_wet
   float underNorm_;    // 1 / (pi (1 - Fwbar))
+  bool hasUnder_;      // the wet layer's Lambertian base: false on subsurface skin
 };
 
 }  // namespace lacrima
