@@ -24,9 +24,11 @@ std::optional<Vec3> reflectionHalfVector(const Vec3& wo, const Vec3& wi) {
 
 float fresnelHemisphericalReflectance(float eta) {
   // A few entries per thread: a frame's skin, sclera and lash materials (and a wet film over skin)
-  // each ask for their own index on every hit; one entry would integrate again at each switch.
-  constexpr int kEntries = 4;
-  thread_local float cachedEta[kEntries] = {-1.0f, -1.0f, -1.0f, -1.0f};
+  // each ask for their own index on every hit, and skin under a drop for its index relative to the
+  // water (integrator.cpp, skinAtHit); one entry would integrate again at each switch, and with
+  // more indices than entries the round-robin eviction would integrate on nearly every hit.
+  constexpr int kEntries = 8;
+  thread_local float cachedEta[kEntries] = {-1.0f, -1.0f, -1.0f, -1.0f, -1.0f, -1.0f, -1.0f, -1.0f};
   thread_local float cachedValue[kEntries] = {};
   thread_local int nextEntry = 0;
   for (int e = 0; e < kEntries; ++e)
