@@ -126,7 +126,6 @@ TEST(WetSkinRender, SkinUnderWaterShadesWithoutItsFilm) {
 // the floor then renders as a black one does under the same water (only the water's surfaces
 // reflect); the old shading against air left its specular lobes with F(0) = 2 %.
 TEST(WetSkinRender, SkinUnderWaterOfTheWatersIndexReflectsNothing) {
-  constexpr float kWaterIor = 1.337f;
   SkinParams blackSkin;
   blackSkin.albedo = Color::Zero();
   blackSkin.ior = kWaterIor;
