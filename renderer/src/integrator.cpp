@@ -374,10 +374,10 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
   Vec3 previousPosition = cameraRay.origin;
   Ray ray = cameraRay;
   MediumStack media = cameraMedia_;  // the dielectric media the path is in (nested dielectrics only)
-  // The path refracted into a closed dielectric (a bead, a rivulet) and has not left it: skin it
-  // meets there is wetted by that water, which is its film (see underSkinFilm), and its surface
-  // meets a medium of index surroundingIor (see skinAtHit).
-  bool inDielectric = false;
+  // The index of the closed dielectric (a bead, a rivulet) the path refracted into and has not
+  // left, 1 in air (the innermost entered; nested media are not unwound here). Skin met inside is
+  // wetted by that water, which is its film (see underSkinFilm), and its surface meets a medium of
+  // that index (see skinAtHit). A dielectric of index 1 is air to the skin as well.
   float surroundingIor = 1.0f;
   BounceCounter bounces(frame_.settings.bounces);
   // A bounce limit was passed: this segment gathers the light it meets, then the path ends.
@@ -435,7 +435,7 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
     v.bsdf = withTextures(v.bsdf, textures_, material, hit, pathLength * pixelSpread_, textured);
     v.bsdf = skinAtHit(v.bsdf, material, hit.position, surroundingIor, textured);
     std::optional<WetSkinBsdf> wetSkin;  // v.bsdf may point here for this bounce
-    v.bsdf = underSkinFilm(v.bsdf, material, inDielectric ? 0.0f : hit.wetness, wetSkin);
+    v.bsdf = underSkinFilm(v.bsdf, material, surroundingIor != 1.0f ? 0.0f : hit.wetness, wetSkin);
     if (!v.bsdf->isTransmissive()) {
       // Opaque surfaces are two-sided: shade the side the ray arrives from.
       if (!frontFacing) { ng = -ng; ns = -ns; }
@@ -511,8 +511,6 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
       etaScale *= bs->eta * bs->eta;
       if (!v.thinSheet) {
         crossInterface(media, hit.materialId, frontFacing);
-        inDielectric = frontFacing;
-        // The innermost medium entered (as inDielectric, nested media are not unwound here).
         if (isDielectric(hit.materialId)) surroundingIor = frontFacing ? media_[hit.materialId]->ior : 1.0f;
       }
     }
