@@ -295,22 +295,29 @@ void applyDetails(const Shot& shot, int frameNumber, const ShutterTimes& shutter
                        });
 }
 
-// Simulates each liquid tear over the shutter and swells the lacrimal strip near its source with its
-// meniscus (at shutter open and close).
-std::vector<shotfile::LiquidTearShutter> simulateLiquidTears(const Shot& shot, const ShutterTimes& shutter,
-                                                             PosedAssets& open, std::optional<PosedAssets>& close) {
+// Simulates each liquid tear over the shutter (no posed asset needed).
+std::vector<shotfile::LiquidTearShutter> simulateLiquidTears(const Shot& shot, const ShutterTimes& shutter) {
   std::vector<shotfile::LiquidTearShutter> runs;
-  for (const ShotLiquidTear& tear : shot.liquidTears) {
-    runs.push_back(shotfile::simulateLiquidTearShutter(shot, tear, shutter.open, shutter.close, open[tear.asset]));
+  for (const ShotLiquidTear& tear : shot.liquidTears)
+    runs.push_back(shotfile::simulateLiquidTearShutter(shot, tear, shutter.open, shutter.close));
+  return runs;
+}
+
+// Lays each liquid tear's wet trail on the skin posed at open and swells the lacrimal strip near its
+// source with its meniscus (at shutter open and close).
+void wetPosedSkin(const Shot& shot, std::vector<shotfile::LiquidTearShutter>& runs, PosedAssets& open,
+                  std::optional<PosedAssets>& close) {
+  for (size_t i = 0; i < shot.liquidTears.size(); ++i) {
+    const ShotLiquidTear& tear = shot.liquidTears[i];
+    shotfile::layLiquidTearFilm(tear, open[tear.asset], runs[i]);
     if (tear.meniscusPrimitive < 0 || open[tear.asset].empty()) continue;
     if (close) {
       // A still asset is not posed again at close; its meniscus still fills, so it gets its own copy.
       if ((*close)[tear.asset].empty()) (*close)[tear.asset] = open[tear.asset];
-      shotfile::swellLiquidTearMeniscus(tear, runs.back().meniscusClose, (*close)[tear.asset]);
+      shotfile::swellLiquidTearMeniscus(tear, runs[i].meniscusClose, (*close)[tear.asset]);
     }
-    shotfile::swellLiquidTearMeniscus(tear, runs.back().meniscusOpen, open[tear.asset]);
+    shotfile::swellLiquidTearMeniscus(tear, runs[i].meniscusOpen, open[tear.asset]);
   }
-  return runs;
 }
 
 // The renderer camera at a time: keyed look-at cameras are placed again, the rest as loaded.
@@ -363,25 +370,34 @@ Frame buildFrame(const Shot& shot, int frameNumber, FrameBuildTimes* times) {
   PosedAssets open;
   std::optional<PosedAssets> close;
   std::vector<shotfile::LiquidTearShutter> liquidRuns;
-  {
-    const StageClock clock(&t.rigSeconds);
-    // At shutter close only what moves is posed again; the two poses are independent.
-    tbb::parallel_invoke([&] { open = poseAssets(shot, shutter.open, StillAssets::Posed); },
-                         [&] {
-                           if (shutter.blurred()) close = poseAssets(shot, shutter.close, StillAssets::Skipped);
-                         });
-  }
-  {
-    const StageClock clock(&t.fleshSeconds);
-    applyFleshes(shot, shutter, open, close);
-  }
-  {
-    const StageClock clock(&t.detailSeconds);
-    applyDetails(shot, frameNumber, shutter, open, close);
-  }
+  // The liquid tears' simulation needs no posed asset: it runs beside the posing, whose flesh keeps
+  // one core only partly busy (their clocks overlap; `totalSeconds` is the wall time).
+  tbb::parallel_invoke(
+      [&] {
+        {
+          const StageClock clock(&t.rigSeconds);
+          // At shutter close only what moves is posed again; the two poses are independent.
+          tbb::parallel_invoke([&] { open = poseAssets(shot, shutter.open, StillAssets::Posed); },
+                               [&] {
+                                 if (shutter.blurred()) close = poseAssets(shot, shutter.close, StillAssets::Skipped);
+                               });
+        }
+        {
+          const StageClock clock(&t.fleshSeconds);
+          applyFleshes(shot, shutter, open, close);
+        }
+        {
+          const StageClock clock(&t.detailSeconds);
+          applyDetails(shot, frameNumber, shutter, open, close);
+        }
+      },
+      [&] {
+        const StageClock clock(&t.liquidSimulationSeconds);
+        liquidRuns = simulateLiquidTears(shot, shutter);
+      });
   {
     const StageClock clock(&t.liquidSeconds);
-    liquidRuns = simulateLiquidTears(shot, shutter, open, close);
+    wetPosedSkin(shot, liquidRuns, open, close);
   }
   const PosedAssets* closePtr = close ? &*close : nullptr;
   {

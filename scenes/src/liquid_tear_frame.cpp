@@ -159,7 +159,7 @@ MeshInstance rivuletInstance(const ShotLiquidTear& tear, const RivuletView& rivu
 }  // namespace
 
 LiquidTearShutter simulateLiquidTearShutter(const Shot& shot, const ShotLiquidTear& tear, double shutterOpen,
-                                            double shutterClose, const std::vector<TriangleMesh>& openSkin) {
+                                            double shutterClose) {
   LiquidTearShutter result;
   if (tear.input.path.empty()) return result;  // not resolved (not from loadShot)
   // Continued from the run the frame before kept at its shutter open (bitwise the same state as
@@ -170,9 +170,7 @@ LiquidTearShutter simulateLiquidTearShutter(const Shot& shot, const ShotLiquidTe
   result.open = run.state(shutterOpen);
   result.openCourse = run.coursePointer();
   result.meniscusOpen = run.simulation().meniscusVolume();
-  const size_t primitive = tear.sourcePoint.primitive;
-  if (primitive < openSkin.size())
-    addLiquidTearFilm(tear, result.openCourse->path, run.simulation(), openSkin[primitive], result.film);
+  result.simulationAtOpen = std::make_shared<const TearLiquidSimulation>(run.simulation());
   result.blurred = shutterClose > shutterOpen;
   if (!result.blurred) {
     result.close = result.open;
@@ -185,6 +183,12 @@ LiquidTearShutter simulateLiquidTearShutter(const Shot& shot, const ShotLiquidTe
   result.closeCourse = run.coursePointer();
   result.meniscusClose = run.simulation().meniscusVolume();
   return result;
+}
+
+void layLiquidTearFilm(const ShotLiquidTear& tear, const std::vector<TriangleMesh>& openSkin, LiquidTearShutter& run) {
+  const size_t primitive = tear.sourcePoint.primitive;
+  if (!run.simulationAtOpen || !run.openCourse || primitive >= openSkin.size()) return;
+  addLiquidTearFilm(tear, run.openCourse->path, *run.simulationAtOpen, openSkin[primitive], run.film);
 }
 
 void swellLiquidTearMeniscus(const ShotLiquidTear& tear, double meniscusVolume, std::vector<TriangleMesh>& posed) {

@@ -27,16 +27,22 @@ struct LiquidTearShutter {
   TearLiquidState open, close;
   std::shared_ptr<const LiquidTearCourse> openCourse, closeCourse;  // the course each state lies on
   double meniscusOpen = 0.0, meniscusClose = 0.0;                    // m^3
+  // The simulation as it stood at shutter open, for the film (null when the tear is not resolved).
+  std::shared_ptr<const TearLiquidSimulation> simulationAtOpen;
   // The wet trail at shutter open (it dries over seconds: no blur) on openSkin[primitive], one value
-  // per vertex; empty when nothing is wet (liquid_tear_film.hpp).
+  // per vertex; empty when nothing is wet or before layLiquidTearFilm (liquid_tear_film.hpp).
   std::vector<float> film;
 };
 
 // Simulates the tear to the frame whose shutter opens at frame `open` and closes at `close`
-// (fractional frames; equal: no blur). openSkin: the asset's primitives posed at open (the film is
-// laid on the tear's primitive).
+// (fractional frames; equal: no blur). Needs no posed skin (the courses are the shot's), so it can
+// run while the assets are posed.
 LiquidTearShutter simulateLiquidTearShutter(const Shot& shot, const ShotLiquidTear& tear, double shutterOpen,
-                                            double shutterClose, const std::vector<TriangleMesh>& openSkin);
+                                            double shutterClose);
+
+// Lays the wet trail of `run` at shutter open on the tear's primitive of openSkin (the asset's
+// primitives posed at open, flesh and details included) into run.film.
+void layLiquidTearFilm(const ShotLiquidTear& tear, const std::vector<TriangleMesh>& openSkin, LiquidTearShutter& run);
 
 // Adds the tear's beads ("liquid bead" meshes on the posed skin `openSkin`, and on `closeSkin` at
 // shutter close when given) and its falling drops ("falling drop" spheroid meshes ringing in mode 2,

@@ -3,6 +3,7 @@
 // at the overflow and run down, frames independent of their order, the face's motion followed,
 // falling drops as ringing meshes, the volume budget, and exact messages for bad input.
 #include <gtest/gtest.h>
+#include <tbb/task_arena.h>
 
 #include <chrono>
 #include <cmath>
@@ -208,6 +209,30 @@ TEST(LiquidTearShot, AFrameAloneEqualsTheSameFrameInASequenceWhenTheFaceMoves) {
   };
   EXPECT_FALSE(wetness(alone).empty());
   EXPECT_EQ(wetness(alone), wetness(inSequence));
+}
+
+// The simulation runs beside the posing of the assets (buildFrame): on one thread, where the two
+// run one after the other, a frame of a moving face is bitwise the frame built on all cores.
+TEST(LiquidTearShot, AFrameOnOneThreadEqualsTheFrameOnAllCores) {
+  const std::string roll = R"("rig": {"preset": "ict"}, "joints": {"head.rz": {"keys": [[1, 0], [60, 6]]}})";
+  const Shot shot = loadTearShot("liquid_threads_all.json", kTear, "", roll);
+  const Frame allCores = buildFrame(shot, 45);
+  const Shot oneThreadShot = loadTearShot("liquid_threads_one.json", kTear, "", roll);
+  Frame oneThread;
+  tbb::task_arena arena(1);
+  arena.execute([&] { oneThread = buildFrame(oneThreadShot, 45); });
+  const auto a = beadsOf(allCores), b = beadsOf(oneThread);
+  ASSERT_FALSE(a.empty());
+  ASSERT_EQ(a.size(), b.size());
+  for (size_t i = 0; i < a.size(); ++i) EXPECT_EQ(a[i]->mesh.positions, b[i]->mesh.positions);
+  ASSERT_EQ(allCores.meshes.size(), oneThread.meshes.size());
+  bool wet = false;
+  for (size_t m = 0; m < allCores.meshes.size(); ++m) {
+    EXPECT_EQ(allCores.meshes[m].mesh.positions, oneThread.meshes[m].mesh.positions) << allCores.meshes[m].mesh.name;
+    EXPECT_EQ(allCores.meshes[m].wetness, oneThread.meshes[m].wetness) << allCores.meshes[m].mesh.name;
+    wet = wet || !allCores.meshes[m].wetness.empty();
+  }
+  EXPECT_TRUE(wet) << "the trail's film is part of what is compared";
 }
 
 TEST(LiquidTearShot, SimulationCostPerFrameIsSmall) {

@@ -29,6 +29,7 @@ void recordGeometry(const FrameBuildTimes& t, FrameCost& cost) {
   cost.rig = t.rigSeconds;
   cost.flesh = t.fleshSeconds;
   cost.details = t.detailSeconds;
+  cost.liquidSimulation = t.liquidSimulationSeconds;
   cost.liquid = t.liquidSeconds;
   cost.eyes = t.eyeSeconds;
   cost.otherGeometry = t.otherSeconds;
@@ -49,6 +50,7 @@ const std::vector<Column>& columns() {
       {"rig", [](const FrameCost& c) { return c.rig; }, false},
       {"flesh", [](const FrameCost& c) { return c.flesh; }, false},
       {"details", [](const FrameCost& c) { return c.details; }, false},
+      {"liquid-sim", [](const FrameCost& c) { return c.liquidSimulation; }, false},
       {"liquid", [](const FrameCost& c) { return c.liquid; }, false},
       {"eyes", [](const FrameCost& c) { return c.eyes; }, false},
       {"other", [](const FrameCost& c) { return c.otherGeometry; }, false},

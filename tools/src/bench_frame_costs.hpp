@@ -16,6 +16,7 @@ namespace lacrima::cli {
 struct FrameCost {
   int frame = 0;
   double rig = 0, flesh = 0, details = 0, liquid = 0, eyes = 0, otherGeometry = 0, geometry = 0;  // buildFrame
+  double liquidSimulation = 0;  // beside rig, flesh and details (FrameBuildTimes)
   bool refit = false;        // the scene was refitted (false: built)
   double upload = 0, bvh = 0;  // the scene update's parts (SceneUpdateProbe)
   double beforeFirstRay = 0;   // the renderer's time up to its first ray (scene update included)

@@ -12,8 +12,11 @@ struct FrameBuildTimes {
   double rigSeconds = 0.0;     // assets posed: blendshapes, skinning, normals (shutter open and close)
   double fleshSeconds = 0.0;   // simulated flesh: the simulation up to the frame, the skin moved with it
   double detailSeconds = 0.0;  // details displacing the posed skin, normals renewed around them
-  // Liquid tears: the meniscus swelling, the simulation up to the frame, beads, drops and the wet
-  // trail's film on the skin.
+  // Liquid tears' simulation up to the frame's shutter open and close. It runs beside rig, flesh and
+  // details (it needs no posed asset), so its time overlaps theirs.
+  double liquidSimulationSeconds = 0.0;
+  // Liquid tears on the posed skin: the wet trail's film, the meniscus swelling, beads and drops;
+  // SPH liquids.
   double liquidSeconds = 0.0;
   double eyeSeconds = 0.0;     // eyes (cornea, sclera, iris, pupil) and lashes
   // The posed meshes copied into the Frame (with their defect check), shapes, kinematic tears,
