@@ -72,6 +72,18 @@ float cameraDepth(const Camera& camera, const Ray& ray, float distance) {
   return distance * ray.direction.dot(forward);
 }
 
+// The camera the tiles use: with focusOnSurface, focused on the first surface its view axis meets
+// at mid-shutter (one ray from the lens centre through the image centre), else as given.
+Camera focusedCamera(const Camera& camera, const EmbreeScene& scene) {
+  Camera focused = camera;
+  if (!camera.focusOnSurface) return focused;
+  const Affine3 placement = cameraToWorldAt(camera, 0.5f);
+  const Ray axis{placement.translation(), (placement.linear() * Vec3(0.0f, 0.0f, -1.0f)).normalized(), 0.5f};
+  SurfaceHit hit;
+  if (scene.intersect(axis, hit) && hit.rayDistance > 0.0f) focused.focusDistance = hit.rayDistance;
+  return focused;
+}
+
 // Cryptomatte's layers in the film (cryptomatte.hpp): per type, its IDs by name index and the
 // film layer its ranks go to.
 struct CryptomatteLayer {
@@ -100,12 +112,14 @@ CryptomatteLayer addCryptomatteLayer(Film& film, const std::string& type, const 
 
 class TileRenderer {
  public:
-  TileRenderer(const Frame& frame, const PathIntegrator& integrator, const FilterSampler& filter, Film& film)
+  // `camera`: the frame's, focused (focusedCamera); it must outlive the tiles.
+  TileRenderer(const Frame& frame, const Camera& camera, const PathIntegrator& integrator, const FilterSampler& filter,
+               Film& film)
       : frame_(frame),
         integrator_(integrator),
         filter_(filter),
         film_(film),
-        cameraRays_(frame.camera, frame.settings.width, frame.settings.height),
+        cameraRays_(camera, frame.settings.width, frame.settings.height),
         hasMotion_(frame.hasMotion()),
         order_(frame.settings.adaptive.enabled || frame.settings.denoise ? SampleOrder::Progressive
                                                                           : SampleOrder::Shuffled) {
@@ -411,6 +425,7 @@ Film Renderer::render(const Frame& frame, RenderStats* stats, const ProgressCall
   TracingProgress tracing(start, progress, cancel);
   SceneUpdate sceneUpdate = SceneUpdate::Build;
   double sceneUpdateSeconds = 0.0, tracingSeconds = 0.0, denoiseSeconds = 0.0;
+  float focusDistance = frame.camera.focusDistance;
   uint64_t cameraPaths = 0;
 
   arena.execute([&] {
@@ -421,7 +436,9 @@ Film Renderer::render(const Frame& frame, RenderStats* stats, const ProgressCall
     const LightSampler lights(frame);
     const PathIntegrator integrator(frame, scene, lights);
     const FilterSampler filter(s.filter);
-    TileRenderer tiles(frame, integrator, filter, film);
+    const Camera camera = focusedCamera(frame.camera, scene);
+    focusDistance = camera.focusDistance;
+    TileRenderer tiles(frame, camera, integrator, filter, film);
     DenoiseInput halves;
     if (s.denoise) {
       halves.halfA.assign(size_t(s.width) * s.height * 3, 0.0f);
@@ -449,6 +466,7 @@ Film Renderer::render(const Frame& frame, RenderStats* stats, const ProgressCall
     stats->sceneUpdate = sceneUpdate;
     stats->sceneUpdateSeconds = sceneUpdateSeconds;
     stats->denoiseSeconds = denoiseSeconds;
+    stats->focusDistance = focusDistance;
   }
   return film;
 }

@@ -831,7 +831,7 @@ class ShotReader {
     ObjectReader o(
         c_, v, "/camera",
         {"position", "lookAt", "up", "gltf", "fov", "focalLength", "sensorHeight", "fStop", "focusDistance",
-         "shutter"});
+         "focus", "shutter"});
     if (!o.ok()) return false;
     ShotCamera& cam = shot_.camera;
     const GltfCamera* gltfCamera = nullptr;
@@ -905,13 +905,20 @@ class ShotReader {
       o.error("focalLength", "give either 'fov' or 'focalLength', not both", Anchor::Key);
     else if (!o.has("fov") && !o.has("focalLength") && cam.kind == ShotCamera::Kind::LookAt)
       o.missing("fov", "vertical field of view in degrees; or 'focalLength' in mm");
-    if (fStop && !o.has("focusDistance") && cam.kind == ShotCamera::Kind::Gltf)
-      o.missing("focusDistance", "metres; with 'fStop', a glTF camera needs it: it has no look-at point to focus on");
+    const auto focus = readChoice(o, "focus", {"lookAt", "surface"}, "focus");
+    const bool focusOnSurface = focus && *focus == 1;
+    if (o.has("focus") && o.has("focusDistance"))
+      o.error("focus", "give either 'focusDistance' or 'focus', not both", Anchor::Key);
+    else if (fStop && !o.has("focusDistance") && !focusOnSurface && cam.kind == ShotCamera::Kind::Gltf)
+      o.missing("focusDistance",
+                "metres; with 'fStop', a glTF camera has no look-at point to focus on: give it, or "
+                "\"focus\": \"surface\"");
     if (fov) cam.fovDegrees = float(*fov);
     if (focalLength) cam.focalLengthMm = float(*focalLength);
     if (sensorHeight) cam.sensorHeightMm = float(*sensorHeight);
     if (fStop) cam.fStop = float(*fStop);
     if (focusDistance) cam.focusDistance = float(*focusDistance);
+    cam.focusOnSurface = focusOnSurface;
     if (const Json* s = o.find("shutter")) readShutter(*s, o.at("shutter"));
 
     if (c_.errorCount() != before) return false;
@@ -941,6 +948,7 @@ class ShotReader {
     else
       out.verticalFovRadians = gltfCamera->yfovRadians;
     out.focusDistance = cam.focusDistance.value_or(viewDistance);
+    out.focusOnSurface = cam.focusOnSurface;
     out.lensRadius = 0.0f;
     if (cam.fStop) {
       const float focalLengthMm =

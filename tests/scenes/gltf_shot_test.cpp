@@ -117,8 +117,12 @@ TEST(GltfShot, FStopWithAGltfCameraNeedsAFocusDistance) {
   ASSERT_EQ(diagnostics.size(), 1u);
   EXPECT_EQ(diagnostics[0].jsonPath, "/camera");
   EXPECT_EQ(diagnostics[0].message.substr(0, diagnostics[0].message.find('\n')),
-            "missing required key 'focusDistance' (metres; with 'fStop', a glTF camera needs it: it has no look-at "
-            "point to focus on)");
+            "missing required key 'focusDistance' (metres; with 'fStop', a glTF camera has no look-at point to "
+            "focus on: give it, or \"focus\": \"surface\")");
+  const auto g = writeShot("tiny_fstop_surface.json",
+                           tinyShot("tiny_fstop_surface.gltf",
+                                    R"({"gltf": {"asset": "tiny", "camera": "closeup"}, "fStop": 2, "focus": "surface"})"));
+  EXPECT_TRUE(loadShot(g).camera.camera.focusOnSurface) << "a glTF camera may focus on the surface it looks at";
 }
 
 }  // namespace gltf_shot_test

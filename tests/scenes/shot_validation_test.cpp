@@ -174,6 +174,32 @@ TEST(ShotValidation, ThinLensFromFovAndFocusDistance) {
   EXPECT_FLOAT_EQ(shot.camera.camera.focusDistance, 2.5f);
 }
 
+// "focus": "surface" hands the renderer a camera that focuses on the first surface on its view axis
+// (the look-at distance stays as the fallback); a misspelt mode and a second way of focusing are
+// errors naming the key.
+TEST(ShotValidation, FocusOnTheSurfaceOrAtTheLookAtPoint) {
+  const auto f = writeShot(
+      "focus_surface.json",
+      shotText("", R"({"position": [0, 0, 3], "lookAt": [0, 0, 0], "fov": 30, "fStop": 2, "focus": "surface"})"));
+  const Shot shot = loadShot(f);
+  EXPECT_TRUE(shot.camera.camera.focusOnSurface);
+  EXPECT_FLOAT_EQ(shot.camera.camera.focusDistance, 3.0f);
+  const auto g = writeShot(
+      "focus_look_at.json",
+      shotText("", R"({"position": [0, 0, 3], "lookAt": [0, 0, 0], "fov": 30, "fStop": 2, "focus": "lookAt"})"));
+  EXPECT_FALSE(loadShot(g).camera.camera.focusOnSurface);
+  const auto typo = writeShot(
+      "focus_typo.json",
+      shotText("", R"({"position": [0, 0, 3], "lookAt": [0, 0, 0], "fov": 30, "fStop": 2, "focus": "surfce"})"));
+  EXPECT_EQ(firstLine(shotErrorOf(typo)),
+            typo.string() + ":6:90: /camera/focus: unknown focus 'surfce'; did you mean 'surface'?");
+  const auto both = writeShot("focus_both.json", shotText("", R"({"position": [0, 0, 3], "lookAt": [0, 0, 0], "fov": 30,
+     "fStop": 2, "focus": "surface", "focusDistance": 2})"));
+  EXPECT_NE(firstLine(shotErrorOf(both)).find("/camera/focus: give either 'focusDistance' or 'focus', not both"),
+            std::string::npos)
+      << shotErrorOf(both);
+}
+
 TEST(ShotValidation, LightPowerBecomesRadiance) {
   const auto f = writeShot("light_power.json", shotText(R"("lights": [
     {"type": "rectangle", "center": [0, 1, 0], "u": [0.5, 0, 0], "v": [0, 0, -0.2], "power": [2, 4, 6], "twoSided": true},

@@ -56,6 +56,7 @@ ExrMetadata metadataFor(const Shot& shot, const Frame& frame, const RenderStats&
   m.worldToNDC = worldToNdcMatrix(frame.camera, frame.settings.width, frame.settings.height);
   for (const auto& [name, value] : pixelSettingsMetadata(frame.settings)) m.extra[name] = value;
   m.extra["lacrima:nonFiniteSamples"] = std::to_string(stats.nonFiniteSamples);
+  if (frame.camera.lensRadius > 0.0f) m.extra["lacrima:focusDistance"] = fmt::format("{:.6g}", stats.focusDistance);
   return m;
 }
 
@@ -163,10 +164,12 @@ FrameOutcome renderOneFrame(Renderer& renderer, const RenderOptions& o, const Sh
                               ? fmt::format("{} spp max, {:.1f} mean", s.samplesPerPixel,
                                             double(stats.cameraPaths) / (double(s.width) * s.height))
                               : fmt::format("{} spp", s.samplesPerPixel);
-  const std::string denoised = s.denoise ? fmt::format(", denoised in {:.1f} s", stats.denoiseSeconds) : "";
+  // Inside the parentheses after the scene update: the denoiser's time, where the focus went.
+  std::string notes = s.denoise ? fmt::format(", denoised in {:.1f} s", stats.denoiseSeconds) : "";
+  if (frame.camera.focusOnSurface) notes += fmt::format(", focused at {:.4f} m", stats.focusDistance);
   std::fprintf(stderr, "frame %d: %dx%d, %s, %s (scene %s %.3f s%s), %srays/s, %llu NaN/Inf samples discarded -> %s%s\n",
                frameNumber, s.width, s.height, spp.c_str(), formatDuration(stats.seconds).c_str(),
-               stats.sceneUpdate == SceneUpdate::Refit ? "refit" : "build", stats.sceneUpdateSeconds, denoised.c_str(),
+               stats.sceneUpdate == SceneUpdate::Refit ? "refit" : "build", stats.sceneUpdateSeconds, notes.c_str(),
                formatRate(stats.rays / std::max(stats.seconds, 1e-9)).c_str(),
                (unsigned long long)stats.nonFiniteSamples, exrPath.string().c_str(), previewNote.c_str());
   return FrameOutcome::Written;

@@ -53,6 +53,7 @@ struct RenderStats {
   uint64_t rays = 0;          // intersect + occluded queries
   uint64_t nonFiniteSamples = 0;  // NaN/Inf path contributions discarded (never on the film)
   double denoiseSeconds = 0.0;    // the denoiser, after path tracing (part of seconds)
+  float focusDistance = 0.0f;     // metres: the camera's, or where Camera::focusOnSurface put it
 };
 
 }  // namespace lacrima

@@ -61,6 +61,9 @@ struct ShotCamera {
   // Thin lens; pinhole when fStop is absent.
   std::optional<float> fStop;
   std::optional<float> focusDistance;  // metres; default: distance to lookAt
+  // "focus": "surface": the renderer focuses each frame on the first surface on the view axis
+  // (Camera::focusOnSurface); the distance above is then where it focuses when the axis meets nothing.
+  bool focusOnSurface = false;
 
   Camera camera;  // derived at the first frame: what buildFrame hands to the renderer
   // Kind::LookAt: keyed position / look-at point (null curves when still). The up vector, field
