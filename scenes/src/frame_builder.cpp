@@ -295,6 +295,26 @@ void applyDetails(const Shot& shot, int frameNumber, const ShutterTimes& shutter
                        });
 }
 
+// The assets posed at shutter open and (when the shutter is open for a while) close, then moved by
+// their simulated flesh and displaced by the details, each stage timed.
+void poseWithFleshAndDetails(const Shot& shot, int frameNumber, const ShutterTimes& shutter, PosedAssets& open,
+                             std::optional<PosedAssets>& close, FrameBuildTimes& t) {
+  {
+    const StageClock clock(&t.rigSeconds);
+    // At shutter close only what moves is posed again; the two poses are independent.
+    tbb::parallel_invoke([&] { open = poseAssets(shot, shutter.open, StillAssets::Posed); },
+                         [&] {
+                           if (shutter.blurred()) close = poseAssets(shot, shutter.close, StillAssets::Skipped);
+                         });
+  }
+  {
+    const StageClock clock(&t.fleshSeconds);
+    applyFleshes(shot, shutter, open, close);
+  }
+  const StageClock clock(&t.detailSeconds);
+  applyDetails(shot, frameNumber, shutter, open, close);
+}
+
 // Simulates each liquid tear over the shutter (no posed asset needed).
 std::vector<shotfile::LiquidTearShutter> simulateLiquidTears(const Shot& shot, const ShutterTimes& shutter) {
   std::vector<shotfile::LiquidTearShutter> runs;
@@ -372,29 +392,11 @@ Frame buildFrame(const Shot& shot, int frameNumber, FrameBuildTimes* times) {
   std::vector<shotfile::LiquidTearShutter> liquidRuns;
   // The liquid tears' simulation needs no posed asset: it runs beside the posing, whose flesh keeps
   // one core only partly busy (their clocks overlap; `totalSeconds` is the wall time).
-  tbb::parallel_invoke(
-      [&] {
-        {
-          const StageClock clock(&t.rigSeconds);
-          // At shutter close only what moves is posed again; the two poses are independent.
-          tbb::parallel_invoke([&] { open = poseAssets(shot, shutter.open, StillAssets::Posed); },
-                               [&] {
-                                 if (shutter.blurred()) close = poseAssets(shot, shutter.close, StillAssets::Skipped);
-                               });
-        }
-        {
-          const StageClock clock(&t.fleshSeconds);
-          applyFleshes(shot, shutter, open, close);
-        }
-        {
-          const StageClock clock(&t.detailSeconds);
-          applyDetails(shot, frameNumber, shutter, open, close);
-        }
-      },
-      [&] {
-        const StageClock clock(&t.liquidSimulationSeconds);
-        liquidRuns = simulateLiquidTears(shot, shutter);
-      });
+  tbb::parallel_invoke([&] { poseWithFleshAndDetails(shot, frameNumber, shutter, open, close, t); },
+                       [&] {
+                         const StageClock clock(&t.liquidSimulationSeconds);
+                         liquidRuns = simulateLiquidTears(shot, shutter);
+                       });
   {
     const StageClock clock(&t.liquidSeconds);
     wetPosedSkin(shot, liquidRuns, open, close);
