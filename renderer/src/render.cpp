@@ -76,7 +76,7 @@ float cameraDepth(const Camera& camera, const Ray& ray, float distance) {
 // at mid-shutter (one ray from the lens centre through the image centre), else as given.
 Camera focusedCamera(const Camera& camera, const EmbreeScene& scene) {
   Camera focused = camera;
-  if (!camera.focusOnSurface) return focused;
+  if (!camera.focusOnSurface || camera.lensRadius <= 0.0f) return focused;  // a pinhole has no focus
   const Affine3 placement = cameraToWorldAt(camera, 0.5f);
   const Ray axis{placement.translation(), (placement.linear() * Vec3(0.0f, 0.0f, -1.0f)).normalized(), 0.5f};
   SurfaceHit hit;

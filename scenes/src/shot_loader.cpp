@@ -919,6 +919,10 @@ class ShotReader {
     if (fStop) cam.fStop = float(*fStop);
     if (focusDistance) cam.focusDistance = float(*focusDistance);
     cam.focusOnSurface = focusOnSurface;
+    if (focusOnSurface && !fStop)
+      shot_.warnings.push_back(c_.warning(o.at("focus"), Anchor::Value,
+                                          "'focus' has no effect without 'fStop': a pinhole camera has everything "
+                                          "in focus"));
     if (const Json* s = o.find("shutter")) readShutter(*s, o.at("shutter"));
 
     if (c_.errorCount() != before) return false;

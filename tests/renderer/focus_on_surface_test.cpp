@@ -59,6 +59,12 @@ TEST(FocusOnSurface, AMovingSurfaceIsFocusedAtMidShutter) {
   EXPECT_NEAR(focusOf(frame), 0.9f * kFloorDistance, 1e-5f);
 }
 
+TEST(FocusOnSurface, APinholeHasNoFocusToFind) {
+  Frame frame = lensOverTheFloor();
+  frame.camera.lensRadius = 0.0f;
+  EXPECT_EQ(focusOf(frame), 2.0f * kFloorDistance);
+}
+
 TEST(FocusOnSurface, AnAxisThatMeetsNothingKeepsTheGivenDistance) {
   Frame frame = lensOverTheFloor();
   frame.camera = test::lookAt(Vec3(0, 1, 2), Vec3(0, 1.5f, 3), 30.0f);  // up and away, over the light

@@ -188,6 +188,12 @@ TEST(ShotValidation, FocusOnTheSurfaceOrAtTheLookAtPoint) {
       "focus_look_at.json",
       shotText("", R"({"position": [0, 0, 3], "lookAt": [0, 0, 0], "fov": 30, "fStop": 2, "focus": "lookAt"})"));
   EXPECT_FALSE(loadShot(g).camera.camera.focusOnSurface);
+  const auto pinhole =
+      writeShot("focus_pinhole.json", shotText("", R"({"position": [0, 0, 3], "lookAt": [0, 0, 0], "fov": 30, "focus": "surface"})"));
+  const Shot pinholeShot = loadShot(pinhole);
+  ASSERT_EQ(pinholeShot.warnings.size(), 1u);
+  EXPECT_NE(pinholeShot.warnings[0].message.find("'focus' has no effect without 'fStop'"), std::string::npos)
+      << pinholeShot.warnings[0].message;
   const auto typo = writeShot(
       "focus_typo.json",
       shotText("", R"({"position": [0, 0, 3], "lookAt": [0, 0, 0], "fov": 30, "fStop": 2, "focus": "surfce"})"));

@@ -166,7 +166,8 @@ FrameOutcome renderOneFrame(Renderer& renderer, const RenderOptions& o, const Sh
                               : fmt::format("{} spp", s.samplesPerPixel);
   // Inside the parentheses after the scene update: the denoiser's time, where the focus went.
   std::string notes = s.denoise ? fmt::format(", denoised in {:.1f} s", stats.denoiseSeconds) : "";
-  if (frame.camera.focusOnSurface) notes += fmt::format(", focused at {:.4f} m", stats.focusDistance);
+  if (frame.camera.focusOnSurface && frame.camera.lensRadius > 0.0f)
+    notes += fmt::format(", focused at {:.4f} m", stats.focusDistance);
   std::fprintf(stderr, "frame %d: %dx%d, %s, %s (scene %s %.3f s%s), %srays/s, %llu NaN/Inf samples discarded -> %s%s\n",
                frameNumber, s.width, s.height, spp.c_str(), formatDuration(stats.seconds).c_str(),
                stats.sceneUpdate == SceneUpdate::Refit ? "refit" : "build", stats.sceneUpdateSeconds, notes.c_str(),

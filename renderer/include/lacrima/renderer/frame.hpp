@@ -66,7 +66,8 @@ struct Camera {
   float lensRadius = 0.0f;     // 0 = pinhole; focal length / (2 f-number) for a thin lens
   float focusDistance = 1.0f;  // metres along the view axis
   // Focus on the first surface the view axis meets at mid-shutter, as a focus puller follows the
-  // subject; the renderer resolves it once per frame (focusDistance stays when the axis meets nothing).
+  // subject; the renderer resolves it once per frame for a thin lens (focusDistance stays when the
+  // axis meets nothing).
   bool focusOnSurface = false;
   std::optional<Affine3> cameraToWorldAtClose;  // camera motion blur; none = still
 };
