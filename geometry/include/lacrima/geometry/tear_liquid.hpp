@@ -18,7 +18,10 @@
 //   dissipation, sec. IV; used for sliding drops by Kim, Lee & Kang 2002, J. Colloid Interface
 //   Sci. 247:372), so v_terminal = theta_mean (F_drive - F_retention) / (3 mu ln(L/a) w), i.e.
 //   Ca = mu v / gamma proportional to Bo sin(alpha) - Bo_c as in Podgorski, Flesselles & Limat
-//   2001 (PRL 87:036102). The speed relaxes to it with time constant speedRelaxationTime, and a
+//   2001 (PRL 87:036102). It is the kinetic friction Li et al. 2023 (Nature Commun. 14:4571) measured
+//   for drops sliding on many liquid/surface pairs, F_f = F_0 + beta w mu v with beta 20-200, here
+//   F_0 the retention force and beta = 3 ln(L/a) / theta_mean (30 at the default angles; tested).
+//   The speed relaxes to it with time constant speedRelaxationTime, and a
 //   sliding bead moves at least at minSlideSpeed (modelling choice: it stops at the critical
 //   volume in finite time instead of creeping towards it forever).
 // * Trail: a sliding bead leaves a film of thickness filmThickness across its base width w
