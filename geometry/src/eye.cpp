@@ -343,6 +343,21 @@ TriangleMesh pupilDisc(const EyeModel& m, const Affine3& motion, int segments) {
   return mesh;
 }
 
+// The iris's uvs (eye.hpp, kIrisUvPupilRadius): ring r of `rings` + 1, from the root (r = 0) to the
+// pupil margin, sits at disc radius 1 - (1 - kIrisUvPupilRadius) r / rings, at the segment's
+// angle from `right` towards `up`; v runs down the image (glTF), so the image's top is the eye's up.
+std::vector<Vec2> irisSheetUvs(int rings, int segments) {
+  std::vector<Vec2> uvs;
+  for (int r = 0; r <= rings; ++r) {
+    const float radius = 1.0f - (1.0f - kIrisUvPupilRadius) * float(r) / float(rings);
+    for (int s = 0; s < segments; ++s) {
+      const float phi = 2.0f * kPi * float(s) / float(segments);
+      uvs.emplace_back(0.5f + 0.5f * radius * std::cos(phi), 0.5f - 0.5f * radius * std::sin(phi));
+    }
+  }
+  return uvs;
+}
+
 // Closes the cap into the anterior chamber: a wall from the limbus loop straight back along the
 // axis to backHeight and a flat back (both hidden behind the iris, inside the ball).
 void closeChamber(const EyeModel& m, const Affine3& motion, const std::map<uint32_t, uint32_t>& capIndex,
@@ -387,6 +402,7 @@ EyeMeshes buildEye(const EyeModel& m, const TriangleMesh& posed) {
       ring.push_back({root.x() + t * (m.params.pupilRadius - root.x()), root.y() + t * (m.pupilHeight - root.y())});
   }
   eye.iris = revolve(m, motion, irisRings);
+  eye.iris.uvs = irisSheetUvs(m.params.irisRings, m.params.irisSegments);
   eye.pupil = pupilDisc(m, motion, m.params.irisSegments);
   return eye;
 }

@@ -41,13 +41,16 @@ UvFootprint uvFootprint(float width, const Vec3& dpdu, const Vec3& dpdv) {
 SurfaceTextures::SurfaceTextures(const std::vector<Material>& materials) {
   const bool anyMaps = std::any_of(materials.begin(), materials.end(), [](const Material& m) { return m.textures.any(); });
   if (!anyMaps) return;
-  textures_ = &processTextureSystem();
+  const bool anyFiles =
+      std::any_of(materials.begin(), materials.end(), [](const Material& m) { return m.textures.anyFile(); });
+  if (anyFiles) textures_ = &processTextureSystem();
   maps_.resize(materials.size());
   for (size_t id = 0; id < materials.size(); ++id) {
     const Material& m = materials[id];
     MaterialMaps& maps = maps_[id];
     maps.any = m.textures.any();
     if (m.textures.albedo) maps.albedo = open(m, *m.textures.albedo, "albedo", true);
+    if (m.textures.irisPattern) maps.iris.emplace(m.textures.irisPattern->seed);
     if (m.textures.roughness) maps.roughness = open(m, *m.textures.roughness, "roughness", false);
     if (m.textures.normal) maps.normal = open(m, *m.textures.normal, "normal", false);
     if (m.textures.meanFreePath) maps.meanFreePath = open(m, *m.textures.meanFreePath, "meanFreePath", false);
@@ -100,6 +103,8 @@ TextureValues SurfaceTextures::lookup(uint32_t materialId, const Vec2& uv, const
     sample(*maps.albedo, uv, footprint, rgb);
     values.albedo = Color(rgb[0], rgb[1], rgb[2]);
   }
+  // Point-sampled: the pixel's samples average the pattern (its finest fibres are ~0.1 mm apart).
+  if (maps.iris) values.albedo = maps.iris->factorAt(uv);
   if (maps.roughness) {
     sample(*maps.roughness, uv, footprint, rgb);
     values.roughness = rgb[0];

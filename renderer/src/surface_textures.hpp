@@ -1,5 +1,6 @@
 #pragma once
-// Texture maps of diffuse and skin materials (MaterialTextures in material.hpp), looked up through
+// Texture maps of diffuse and skin materials (MaterialTextures in material.hpp), and the procedural
+// iris in place of an albedo map (iris_pattern.hpp). Maps are looked up through
 // one OpenImageIO TextureSystem for the whole process (its tile and MIP cache serves every frame
 // of a sequence). The system is created only when some material has a map: frames without
 // textures pay nothing.
@@ -22,6 +23,7 @@
 #include <vector>
 
 #include "lacrima/geometry/math.hpp"
+#include "lacrima/materials/iris_pattern.hpp"
 #include "lacrima/materials/material.hpp"
 #include "lacrima/materials/texture_values.hpp"
 
@@ -64,11 +66,12 @@ class SurfaceTextures {
   struct MaterialMaps {
     bool any = false;
     std::optional<OpenMap> albedo, roughness, normal, meanFreePath;
+    std::optional<IrisPattern> iris;  // the albedo as a procedural iris (no albedo map then)
   };
   OpenMap open(const Material& material, const TextureMap& map, const char* role, bool colour);
   void sample(const OpenMap& map, const Vec2& uv, const UvFootprint& footprint, float* result) const;
 
-  OIIO::TextureSystem* textures_ = nullptr;  // the process's (surface_textures.cpp); null without maps
+  OIIO::TextureSystem* textures_ = nullptr;  // the process's (surface_textures.cpp); null without map files
   std::vector<MaterialMaps> maps_;  // per material; empty when no material has maps
 };
 

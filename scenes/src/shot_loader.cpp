@@ -518,8 +518,25 @@ class ShotReader {
                                                                        {"roughness", &textures.roughness},
                                                                        {"normal", &textures.normal},
                                                                        {"meanFreePath", &textures.meanFreePath}};
-    for (const auto& [role, slot] : slots)
-      if (const Json* map = o.find(role)) *slot = readTextureMap(*map, o.at(role), std::string(role) == "albedo");
+    for (const auto& [role, slot] : slots) {
+      const Json* map = o.find(role);
+      if (!map) continue;
+      if (std::string(role) == "albedo" && map->is_object() && map->contains("pattern"))
+        textures.irisPattern = readAlbedoPattern(*map, o.at(role));
+      else
+        *slot = readTextureMap(*map, o.at(role), std::string(role) == "albedo");
+    }
+  }
+
+  // {"pattern": "iris"[, "seed": n]}: a procedural albedo in place of a file (iris_pattern.hpp).
+  std::optional<IrisPatternParams> readAlbedoPattern(const Json& v, const std::string& pointer) {
+    ObjectReader o(c_, v, pointer, {"pattern", "seed"});
+    IrisPatternParams pattern;
+    const std::vector<std::string> patterns = {"iris"};
+    const auto kind = readChoice(o, "pattern", patterns, "albedo pattern");
+    if (auto x = o.unsignedInteger("seed")) pattern.seed = *x;
+    if (!kind || !o.ok()) return std::nullopt;
+    return pattern;
   }
 
   // A texture file as a path, or {"file": path, "colorSpace": "auto" | "srgb" | "linear"} (the

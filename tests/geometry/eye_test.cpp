@@ -119,6 +119,42 @@ TEST_F(IctEye, CorneaIsAClosedOutwardVolumeAndTheIrisLiesInsideIt) {
   EXPECT_NEAR(innermost, m.params.pupilRadius, 1e-5f);
 }
 
+// The iris's disc uvs (eye.hpp): the root on the circle of radius 0.5, the pupil margin on the
+// circle of radius 0.5 kIrisUvPupilRadius, whatever the pupil's size (the sheet stretches), and
+// the image's top towards the eye's up.
+TEST_F(IctEye, TheIrisIsMappedOntoADiscWithThePupilAtAFixedRadius) {
+  const auto radiusOf = [](const Vec2& uv) { return (uv - Vec2(0.5f, 0.5f)).norm(); };
+  for (const float pupilRadius : {1.5e-3f, 3.0e-3f}) {
+    EyeParams params;
+    params.pupilRadius = pupilRadius;
+    const EyeModel m = analyseEye(part("M_ScleraRight").mesh, params, "right eye");
+    const EyeMeshes eye = buildEye(m, part("M_ScleraRight").mesh);
+    ASSERT_EQ(eye.iris.uvs.size(), eye.iris.positions.size());
+    EXPECT_EQ(findMeshDefect(eye.iris), "");
+    float smallest = 1.0f, largest = 0.0f;
+    for (size_t i = 0; i < eye.iris.positions.size(); ++i) {
+      const Vec3 d = eye.iris.positions[i] - m.center;
+      const float radial = (d - d.dot(m.axis) * m.axis).norm();
+      const float uvRadius = radiusOf(eye.iris.uvs[i]);
+      smallest = std::min(smallest, uvRadius);
+      largest = std::max(largest, uvRadius);
+      // The pupil margin's vertices (radial = pupilRadius) all lie on the inner circle.
+      if (std::abs(radial - pupilRadius) < 1e-6f) {
+        EXPECT_NEAR(uvRadius, 0.5f * kIrisUvPupilRadius, 1e-5f);
+      }
+      // Up on the eye is up on the image (v runs down it).
+      const float up = d.dot(m.up);
+      if (up > 0.5f * radial) {
+        EXPECT_LT(eye.iris.uvs[i].y(), 0.5f);
+      } else if (up < -0.5f * radial) {
+        EXPECT_GT(eye.iris.uvs[i].y(), 0.5f);
+      }
+    }
+    EXPECT_NEAR(smallest, 0.5f * kIrisUvPupilRadius, 1e-5f);
+    EXPECT_NEAR(largest, 0.5f, 1e-5f);
+  }
+}
+
 TEST_F(IctEye, FollowsTheEyeballAsTheRigTurnsIt) {
   const FaceRig rig(*asset_, ictFaceRigConfig(*asset_));
   size_t right = 0;

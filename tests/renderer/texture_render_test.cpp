@@ -16,6 +16,8 @@
 #include "lacrima/renderer/render.hpp"
 #include "support/test_directory.hpp"
 #include "support/test_scenes.hpp"
+#include "lacrima/geometry/eye.hpp"
+#include "lacrima/materials/iris_pattern.hpp"
 #include "lacrima/materials/texture_values.hpp"
 
 namespace lacrima {
@@ -164,6 +166,40 @@ TEST(TextureRender, TexelsFinerThanAPixelAreFilteredToTheirMean) {
     for (int x = 0; x < 16; ++x) worst = std::max(worst, (pixel(film, x, y) - mean).cwiseAbs().maxCoeff());
   std::printf("[ mip ] largest pixel deviation from the checker's mean: %.5f\n", worst);
   EXPECT_LT(worst, 0.01f);
+}
+
+// The procedural iris (iris_pattern.hpp) in place of an albedo map: no file, and the quad shows the
+// albedo times the pattern at each pixel's uv (their correlation over the iris's disc; a pattern
+// looked up at the wrong uv, flipped or not at all, correlates near 0).
+TEST(TextureRender, AnIrisPatternShowsItsLayersWhereItsUvsPutThem) {
+  constexpr int kSize = 96;
+  constexpr float kAlbedo = 0.3f;
+  Frame frame = texturedQuad({});
+  frame.materials[0].params = DiffuseParams{Color::Constant(kAlbedo)};
+  frame.materials[0].textures.irisPattern = IrisPatternParams{3};
+  frame.settings = smallSettings(kSize, 16, 1);
+  const Film film = renderFrame(frame);
+  const IrisPattern pattern(3);
+  double sumR = 0, sumE = 0, sumRR = 0, sumEE = 0, sumRE = 0;
+  int count = 0;
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x) {
+      // Image x, y to the quad's uv: (0, 0) at its lower left, the view spanning [-0.9, 0.9].
+      const Vec2 uv(0.5f * (1.0f - 0.9f + 1.8f * (float(x) + 0.5f) / kSize),
+                    0.5f * (1.0f + 0.9f - 1.8f * (float(y) + 0.5f) / kSize));
+      const float radius = 2.0f * (uv - Vec2(0.5f, 0.5f)).norm();
+      if (radius < kIrisUvPupilRadius || radius > 0.9f) continue;
+      const double rendered = pixel(film, x, y).mean(), expected = kAlbedo * pattern.factorAt(uv).mean();
+      sumR += rendered, sumE += expected, sumRR += rendered * rendered, sumEE += expected * expected;
+      sumRE += rendered * expected, ++count;
+    }
+  const double meanR = sumR / count, meanE = sumE / count;
+  const double correlation = (sumRE / count - meanR * meanE) /
+                             std::sqrt((sumRR / count - meanR * meanR) * (sumEE / count - meanE * meanE));
+  std::printf("[ info     ] iris quad: mean %.4f (pattern %.4f), correlation %.3f over %d pixels\n", meanR, meanE,
+              correlation, count);
+  EXPECT_NEAR(meanR, meanE, 0.03 * meanE);
+  EXPECT_GT(correlation, 0.8);
 }
 
 TEST(TextureRender, MeshWithoutUvsShadesWithTheConstants) {

@@ -108,6 +108,37 @@ TEST(TextureShot, MisplacedMapsAndBadColourSpacesAreExactErrors) {
                           "/materials/paint/textures/roughness: unknown key 'roughness' (allowed here: albedo, normal)");
 }
 
+// The procedural iris in place of an albedo map (iris_pattern.hpp): the albedo stays the iris's
+// mean colour (not a factor of 1), no file is read, and its keys are checked.
+TEST(TextureShot, AnIrisPatternInPlaceOfAnAlbedoMap) {
+  const Shot shot = loadShot(test::writeShot(
+      "iris_pattern.json", shotWithMaterials(R"("iris": {"type": "diffuse", "albedo": [0.2, 0.11, 0.055],
+          "textures": {"albedo": {"pattern": "iris", "seed": 5}}}, "plain": {"type": "diffuse",
+          "textures": {"albedo": {"pattern": "iris"}}})")));
+  const MaterialTextures& t = shot.materials.at(0).textures;
+  ASSERT_TRUE(t.irisPattern.has_value());
+  EXPECT_EQ(t.irisPattern->seed, 5u);
+  EXPECT_FALSE(t.albedo.has_value());
+  EXPECT_TRUE(t.any());
+  EXPECT_FALSE(t.anyFile());
+  EXPECT_TRUE((std::get<DiffuseParams>(shot.materials[0].params).albedo == Color(0.2f, 0.11f, 0.055f)).all());
+  EXPECT_EQ(shot.materials.at(1).textures.irisPattern->seed, 1u);
+  EXPECT_TRUE((std::get<DiffuseParams>(shot.materials[1].params).albedo == DiffuseParams{}.albedo).all());
+
+  test::expectSingleError(
+      "iris_pattern_typo.json",
+      shotWithMaterials(R"("iris": {"type": "diffuse", "textures": {"albedo": {"pattern": "irsi"}}})"),
+      "/materials/iris/textures/albedo/pattern: unknown albedo pattern 'irsi'; did you mean 'iris'?");
+  test::expectSingleError(
+      "iris_pattern_with_file.json",
+      shotWithMaterials(R"("iris": {"type": "diffuse", "textures": {"albedo": {"pattern": "iris", "file": "a.png"}}})"),
+      "/materials/iris/textures/albedo/file: unknown key 'file' (allowed here: pattern, seed)");
+  test::expectSingleError(
+      "iris_pattern_negative_seed.json",
+      shotWithMaterials(R"("iris": {"type": "diffuse", "textures": {"albedo": {"pattern": "iris", "seed": -1}}})"),
+      "/materials/iris/textures/albedo/seed: expected an integer >= 0, found -1");
+}
+
 TEST(TextureShot, TexturedMaterialOnAShapeWithoutUvsWarns) {
   writeImage("albedo.ppm");
   const Shot shot = loadShot(test::writeShot(

@@ -56,10 +56,18 @@ struct EyeModel {
 // the iris does not fit between the cornea and the chamber's back.
 EyeModel analyseEye(const TriangleMesh& restShell, const EyeParams& params, const std::string& what);
 
+// The iris's uvs map it onto a disc as an iris is photographed or painted, front view, the eye's
+// up at the image's top: centre (0.5, 0.5), the root (under the limbus) on the circle of radius
+// 0.5, the pupil margin on the circle of radius 0.5 kIrisUvPupilRadius, whatever the pupil's
+// size. The sheet between them is stretched radially as the pupil widens or narrows, as Daugman
+// 2004's "rubber sheet" model of the iris does, so a texture keeps its pupil and its features
+// stay on the same fibres.
+inline constexpr float kIrisUvPupilRadius = 0.34f;  // ~ the default 2 mm pupil in a 5.9 mm limbus
+
 struct EyeMeshes {
   TriangleMesh cornea;  // closed, outward: cap + wall and back inside the ball
   TriangleMesh sclera;  // the shell outside the limbus (open where the cornea is)
-  TriangleMesh iris;    // annulus, front side towards the cornea
+  TriangleMesh iris;    // annulus, front side towards the cornea, with uvs (kIrisUvPupilRadius)
   TriangleMesh pupil;   // dark disc just behind the pupil opening, facing forward
 };
 

@@ -2,6 +2,7 @@
 // Material descriptions (plain data, what a shot file or glTF asset says) and the factory that
 // turns them into BSDFs. Parameters are constant per material; diffuse and skin materials may add
 // texture maps (MaterialTextures), which the renderer looks up per hit (renderer/src/surface_textures.hpp).
+#include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -89,12 +90,20 @@ struct TextureMap {
 // texture rule): albedo and roughness per channel / value, meanFreePath per channel (the map
 // holds dimensionless factors). Normal is a tangent-space map in the OpenGL convention (+Y, green,
 // points up the image). Meshes without uvs shade with the constants. See docs/shot-format.md.
+// The albedo as a procedural iris (iris_pattern.hpp) instead of a map: factors with a mean of 1
+// over the iris, so the material's albedo stays the iris's mean colour.
+struct IrisPatternParams {
+  uint64_t seed = 1;
+};
+
 struct MaterialTextures {
   std::optional<TextureMap> albedo;
+  std::optional<IrisPatternParams> irisPattern;  // never together with an albedo map
   std::optional<TextureMap> roughness;     // skin only; scales roughness and roughness2
   std::optional<TextureMap> normal;
   std::optional<TextureMap> meanFreePath;  // skin with subsurface only
-  bool any() const { return albedo || roughness || normal || meanFreePath; }
+  bool anyFile() const { return albedo || roughness || normal || meanFreePath; }
+  bool any() const { return anyFile() || irisPattern; }
 };
 
 struct Material {
