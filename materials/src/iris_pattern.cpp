@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <mutex>
 
 #include "lacrima/geometry/eye.hpp"
 #include "lacrima/geometry/sampler.hpp"
@@ -98,6 +100,15 @@ Color mix(const Color& a, const Color& b, float t) { return a + t * (b - a); }
 }  // namespace
 
 IrisPattern::IrisPattern(uint64_t seed) : seed_(seed) {
+  // Renderers build their patterns every frame: each seed's mean is computed once per process.
+  static std::mutex mutex;
+  static std::map<uint64_t, Color> normalisations;
+  const std::lock_guard<std::mutex> lock(mutex);
+  const auto known = normalisations.find(seed);
+  if (known != normalisations.end()) {
+    normalisation_ = known->second;
+    return;
+  }
   // The mean of the raw factors over the iris's area (uv area: the disc's annulus), on a polar
   // grid finer than the finest noise, weighted by radius.
   constexpr int kAcrossSteps = 32, kAroundSteps = 448;
@@ -112,6 +123,7 @@ IrisPattern::IrisPattern(uint64_t seed) : seed_(seed) {
     }
   }
   normalisation_ = weight / sum;
+  normalisations.emplace(seed, normalisation_);
 }
 
 Color IrisPattern::factorAt(const Vec2& uv) const { return rawFactorAt(uv) * normalisation_; }
