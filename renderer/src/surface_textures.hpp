@@ -2,8 +2,8 @@
 // Texture maps of diffuse and skin materials (MaterialTextures in material.hpp), and the procedural
 // iris in place of an albedo map (iris_pattern.hpp). Maps are looked up through
 // one OpenImageIO TextureSystem for the whole process (its tile and MIP cache serves every frame
-// of a sequence). The system is created only when some material has a map: frames without
-// textures pay nothing.
+// of a sequence). The system is created only when some material has a map file: frames without
+// them pay nothing.
 //
 // Lookups are trilinear MIP-map lookups (bilinear in the two levels around the footprint) with an
 // isotropic footprint: the width of the pixel's cone where the path meets the surface, in uv

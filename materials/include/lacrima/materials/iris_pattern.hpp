@@ -1,5 +1,5 @@
 #pragma once
-// A procedural iris: per-channel factors on a diffuse material's albedo over the iris's disc uvs
+// A procedural iris: per-channel factors on a material's albedo over the iris's disc uvs
 // (geometry/eye.hpp: the pupil margin on the circle of radius 0.5 kIrisUvPupilRadius about
 // (0.5, 0.5), the root on the circle of radius 0.5). It is built in layers, as an ocularist paints
 // an iris for a prosthetic eye and as Lefohn, Budge, Shirley, Caruso & Reinhard 2003 synthesise

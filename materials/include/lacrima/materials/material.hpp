@@ -85,17 +85,17 @@ struct TextureMap {
   TextureEncoding encoding = TextureEncoding::Auto;
 };
 
-// Texture maps of a diffuse or skin material, looked up at the hit's uv (glTF convention: u to
-// the right, v down the image). Each map multiplies the constant it refines (the glTF factor x
-// texture rule): albedo and roughness per channel / value, meanFreePath per channel (the map
-// holds dimensionless factors). Normal is a tangent-space map in the OpenGL convention (+Y, green,
-// points up the image). Meshes without uvs shade with the constants. See docs/shot-format.md.
 // The albedo as a procedural iris (iris_pattern.hpp) instead of a map: factors with a mean of 1
 // over the iris, so the material's albedo stays the iris's mean colour.
 struct IrisPatternParams {
   uint64_t seed = 1;
 };
 
+// Texture maps of a diffuse or skin material, looked up at the hit's uv (glTF convention: u to
+// the right, v down the image). Each map multiplies the constant it refines (the glTF factor x
+// texture rule): albedo and roughness per channel / value, meanFreePath per channel (the map
+// holds dimensionless factors). Normal is a tangent-space map in the OpenGL convention (+Y, green,
+// points up the image). Meshes without uvs shade with the constants. See docs/shot-format.md.
 struct MaterialTextures {
   std::optional<TextureMap> albedo;
   std::optional<IrisPatternParams> irisPattern;  // never together with an albedo map
