@@ -76,6 +76,10 @@ ScalarCurve::ScalarCurve(std::vector<ScalarKey> keys, Interpolation interpolatio
 }
 
 float ScalarCurve::hermite(size_t i, float t) const {
+  // A hold (equal keys, flat at both ends) is the key's value exactly: the basis below sums to it
+  // only up to rounding, and a held value that differs in its last bit between shutter open and
+  // close would motion-blur a still mesh.
+  if (keys_[i].value == keys_[i + 1].value && tangents_[i] == 0.0f && tangents_[i + 1] == 0.0f) return keys_[i].value;
   // Cubic Hermite basis on [t_i, t_{i+1}] with key slopes m_i (Fritsch & Carlson 1980; Catmull & Rom 1974 use it too).
   const float h = keys_[i + 1].time - keys_[i].time;
   const float s = (t - keys_[i].time) / h, s2 = s * s, s3 = s2 * s;

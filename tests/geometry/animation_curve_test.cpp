@@ -28,6 +28,20 @@ TEST(AnimationCurve, HoldsTheEndValuesOutsideTheKeys) {
   EXPECT_EQ(ScalarCurve({{2.0f, 7.0f}}, Interpolation::CatmullRom).evaluate(3.0f), 7.0f);  // a single key
 }
 
+// A monotone curve holds between two equal keys: every time inside the hold gives the key's value
+// exactly, so a held camera, weight or joint does not move by rounding between shutter open and
+// close (a mesh whose positions differ at all is motion-blurred).
+TEST(AnimationCurve, MonotoneCubicHoldsEqualKeysExactly) {
+  for (const float value : {0.8f, -0.104f, 0.307f, 1.0f / 3.0f}) {
+    const ScalarCurve curve({{1.0f, 0.0f}, {38.0f, value}, {47.0f, value}, {49.7f, 2.0f * value}},
+                            Interpolation::MonotoneCubic);
+    for (int i = 0; i <= 900; ++i) {
+      const float t = 38.0f + 9.0f * float(i) / 900.0f;
+      ASSERT_EQ(curve.evaluate(t), value) << "t " << t;
+    }
+  }
+}
+
 TEST(AnimationCurve, StepHoldsTheLastKeyBeforeT) {
   const ScalarCurve curve(kKeys, Interpolation::Step);
   EXPECT_EQ(curve.evaluate(0.999f), 1.0f);
