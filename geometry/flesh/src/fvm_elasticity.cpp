@@ -32,6 +32,7 @@ FvmElasticity::FvmElasticity(const TetMesh& mesh, FleshMaterial material, LamePa
       restVolume_(mesh.tets.size(), 0.0),
       linearization_(mesh.tets.size()) {
   setRestShape(mesh.nodes);
+  firstDmInverse_ = dmInverse_;
   firstRestVolume_ = restVolume_;
   incidenceOffset_.assign(nodeCount_ + 1, 0);
   for (const Tet& t : tets_)
@@ -47,8 +48,17 @@ void FvmElasticity::setRestShape(const std::vector<Vec3d>& rest) {
   forEachTet(tets_.size(), [&](size_t t) {
     const Mat3d dm = edgeMatrix(rest, tets_[t]);
     const double volume = dm.determinant() / 6.0;
-    // A flat or inverted rest tetrahedron has no inverse to measure strain by: keep the last one.
-    if (!(volume > 1e-18)) return;
+    // A flat or inverted rest tetrahedron has no inverse to measure strain by: it takes its first
+    // rest shape. (Not the last one it had: that would be history a simulation's filed state
+    // does not hold, and a frame continued from a filed state would differ from the same frame
+    // simulated in one run.) Before the first rest shape is known, it keeps the identity.
+    if (!(volume > 1e-18)) {
+      if (!firstDmInverse_.empty()) {
+        dmInverse_[t] = firstDmInverse_[t];
+        restVolume_[t] = firstRestVolume_[t];
+      }
+      return;
+    }
     dmInverse_[t] = dm.inverse();
     restVolume_[t] = volume;
   });

@@ -26,7 +26,7 @@ enum class FleshIntegrator { BackwardEuler, ImplicitMidpoint };
 // Changes whenever a change to the solver or the materials alters the states a simulation reaches:
 // states filed on disk (flesh_state_cache.hpp) are keyed by it, so a new binary does not continue
 // from an old one's states.
-constexpr int kFleshSolverRevision = 3;
+constexpr int kFleshSolverRevision = 4;
 
 struct FleshDynamicsParams {
   double density = 1100.0;         // kg/m^3 (soft tissue, ~1.05-1.1 times water)

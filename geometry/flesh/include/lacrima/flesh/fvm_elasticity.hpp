@@ -26,7 +26,8 @@ class FvmElasticity {
   FvmElasticity(const TetMesh& mesh, FleshMaterial material, LameParameters lame);
 
   // A new rest shape for every tetrahedron (node positions in the mesh's numbering). A
-  // tetrahedron the new shape makes flat or inverted keeps its previous rest shape.
+  // tetrahedron the new shape makes flat or inverted takes its first rest shape (the mesh's), so
+  // the rest shape depends on `rest` alone, never on the calls before.
   void setRestShape(const std::vector<Vec3d>& rest);
 
   double energy(const std::vector<Vec3d>& x) const;
@@ -68,6 +69,7 @@ class FvmElasticity {
   LameParameters lame_;
   std::vector<Mat3d> dmInverse_;
   std::vector<double> restVolume_, firstRestVolume_;
+  std::vector<Mat3d> firstDmInverse_;  // the mesh's own rest shape: flat or inverted rest tetrahedra fall back to it
   std::vector<StressLinearization> linearization_;
   // Node n's corners (4 * tetrahedron + corner) are incidence_[offset_[n], offset_[n + 1]).
   std::vector<int> incidenceOffset_, incidence_;
