@@ -10,6 +10,8 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <string_view>
+#include <unordered_map>
 
 #include "lacrima/geometry/shapes.hpp"
 #include "lacrima/materials/material.hpp"
@@ -67,7 +69,8 @@ void uvOfTriangle(const TriangleMesh& mesh, const uint32_t* tri, const std::arra
 
 }  // namespace
 
-EmbreeScene::EmbreeScene(const Frame& frame, int threads) : frame_(&frame), threads_(threads) {
+EmbreeScene::EmbreeScene(const Frame& frame, int threads, SceneFollowReport* report)
+    : frame_(&frame), threads_(threads) {
   const std::string config = threads > 0 ? fmt::format("threads={}", threads) : std::string();
   device_ = rtcNewDevice(config.c_str());
   if (!device_) throw std::runtime_error("could not create the Embree device");
@@ -83,31 +86,8 @@ EmbreeScene::EmbreeScene(const Frame& frame, int threads) : frame_(&frame), thre
   dielectricScene_ = rtcNewScene(device_);
   rtcSetSceneBuildQuality(dielectricScene_, RTC_BUILD_QUALITY_LOW);
   rtcSetSceneFlags(dielectricScene_, RTC_SCENE_FLAG_ROBUST);
-
-  for (uint32_t i = 0; i < frame.meshes.size(); ++i) {
-    const MeshInstance& instance = frame.meshes[i];
-    checkWetness(instance);
-    meshGeometry_.push_back(addMesh(instance.mesh, Kind::Mesh, i, instance.moves() ? &instance.positionsAtClose : nullptr));
-    attachToDielectricScene(meshGeometry_.back(), instance.materialId);
-  }
-  for (uint32_t i = 0; i < frame.spheres.size(); ++i) {
-    const Sphere& sphere = frame.spheres[i];
-    sphereGeometry_.push_back(
-        addSphere(sphere.center, sphere.radius, Kind::Sphere, i, sphere.centerAtClose ? &*sphere.centerAtClose : nullptr));
-    attachToDielectricScene(sphereGeometry_.back(), sphere.materialId);
-  }
-  lightMeshes_.resize(frame.lights.size());
-  for (uint32_t i = 0; i < frame.lights.size(); ++i) {
-    const AreaLight& light = frame.lights[i];
-    if (light.shape == AreaLight::Shape::Rectangle) {
-      lightMeshes_[i].mesh = makeRectangle(light.center, light.edgeU, light.edgeV);
-      lightGeometry_.push_back(addMesh(lightMeshes_[i].mesh, Kind::RectLight, i, nullptr));
-    } else {
-      lightGeometry_.push_back(addSphere(light.center, light.radius, Kind::SphereLight, i, nullptr));
-    }
-  }
-  rtcCommitScene(scene_);
-  rtcCommitScene(dielectricScene_);
+  const SceneFollowReport built = follow(frame);  // nothing to keep yet: every geometry is attached, in the frame's order
+  if (report) *report = built;
 }
 
 EmbreeScene::~EmbreeScene() {
@@ -146,7 +126,7 @@ unsigned EmbreeScene::addMesh(const TriangleMesh& mesh, Kind kind, uint32_t inde
   rtcCommitGeometry(geometry);
   const unsigned id = rtcAttachGeometry(scene_, geometry);
   rtcReleaseGeometry(geometry);  // the scene keeps it alive
-  recordGeometry(id, {kind, index, geometry, stepCount, mesh.vertexCount(), mesh.triangleCount()});
+  recordGeometry(id, {kind, index, geometry, stepCount, mesh.vertexCount(), mesh.triangleCount(), false, mesh.name});
   return id;
 }
 
@@ -186,26 +166,65 @@ void EmbreeScene::attachToDielectricScene(unsigned geometryId, uint32_t material
 }
 
 bool EmbreeScene::canRefitTo(const Frame& frame, int threads) const {
-  // Another thread count needs another Embree device.
-  if (threads != threads_ || frame.meshes.size() != meshGeometry_.size() ||
+  if (!canFollow(threads) || frame.meshes.size() != meshGeometry_.size() ||
       frame.spheres.size() != sphereGeometry_.size() || frame.lights.size() != lightGeometry_.size())
     return false;
-  // The dielectric scene holds the geometries of dielectric materials: those must stay so.
-  const auto keepsDielectric = [&](unsigned geometryId, uint32_t materialId) {
-    return geometryId == kNoGeometry || records_[geometryId].dielectric == isDielectric(frame, materialId);
-  };
-  for (size_t i = 0; i < frame.meshes.size(); ++i)
-    if (!meshHasLayout(frame.meshes[i], meshGeometry_[i]) || !keepsDielectric(meshGeometry_[i], frame.meshes[i].materialId))
-      return false;
-  for (size_t i = 0; i < frame.spheres.size(); ++i)
-    if (!sphereHasLayout(frame.spheres[i].centerAtClose.has_value(), sphereGeometry_[i]) ||
-        !keepsDielectric(sphereGeometry_[i], frame.spheres[i].materialId))
-      return false;
-  for (size_t i = 0; i < frame.lights.size(); ++i) {
-    const bool isRectangle = frame.lights[i].shape == AreaLight::Shape::Rectangle;
-    if (isRectangle != (records_[lightGeometry_[i]].kind == Kind::RectLight)) return false;
+  // follow() keeps a geometry only where it passes the same checks as here, so comparing what it
+  // would keep with what the scene holds, index by index, says whether it keeps everything.
+  return keptMeshGeometries(frame) == meshGeometry_ && keptSphereGeometries(frame) == sphereGeometry_ &&
+         keptLightGeometries(frame) == lightGeometry_;
+}
+
+// The dielectric scene holds the geometries of dielectric materials: a kept geometry must stay so.
+bool EmbreeScene::keepsDielectric(const Frame& frame, unsigned geometryId, uint32_t materialId) const {
+  return records_[geometryId].dielectric == isDielectric(frame, materialId);
+}
+
+std::vector<unsigned> EmbreeScene::keptMeshGeometries(const Frame& frame) const {
+  // The previous frame's mesh geometries by name, in its order: a mesh takes the first one of its
+  // name that nothing took yet and has its layout, so meshes that come and go (a bead born, a drop
+  // fallen) leave the others' geometries in place whatever their indices become.
+  std::unordered_map<std::string_view, std::vector<unsigned>> byName;
+  for (unsigned id : meshGeometry_)
+    if (id != kNoGeometry) byName[records_[id].name].push_back(id);
+  std::vector<bool> taken(records_.size(), false);
+  std::vector<unsigned> kept(frame.meshes.size(), kReplace);
+  for (size_t i = 0; i < frame.meshes.size(); ++i) {
+    const MeshInstance& instance = frame.meshes[i];
+    if (instance.mesh.triangleCount() == 0) {
+      kept[i] = kNoGeometry;
+      continue;
+    }
+    const auto candidates = byName.find(instance.mesh.name);
+    if (candidates == byName.end()) continue;
+    for (unsigned id : candidates->second)
+      if (!taken[id] && meshHasLayout(instance, id) && keepsDielectric(frame, id, instance.materialId)) {
+        kept[i] = id;
+        taken[id] = true;
+        break;
+      }
   }
-  return true;
+  return kept;
+}
+
+std::vector<unsigned> EmbreeScene::keptSphereGeometries(const Frame& frame) const {
+  std::vector<unsigned> kept(frame.spheres.size(), kReplace);
+  for (size_t i = 0; i < frame.spheres.size() && i < sphereGeometry_.size(); ++i) {
+    const Sphere& sphere = frame.spheres[i];
+    const unsigned id = sphereGeometry_[i];
+    if (sphereHasLayout(sphere.centerAtClose.has_value(), id) && keepsDielectric(frame, id, sphere.materialId))
+      kept[i] = id;
+  }
+  return kept;
+}
+
+std::vector<unsigned> EmbreeScene::keptLightGeometries(const Frame& frame) const {
+  std::vector<unsigned> kept(frame.lights.size(), kReplace);
+  for (size_t i = 0; i < frame.lights.size() && i < lightGeometry_.size(); ++i) {
+    const bool isRectangle = frame.lights[i].shape == AreaLight::Shape::Rectangle;
+    if (isRectangle == (records_[lightGeometry_[i]].kind == Kind::RectLight)) kept[i] = lightGeometry_[i];
+  }
+  return kept;
 }
 
 bool EmbreeScene::meshHasLayout(const MeshInstance& instance, unsigned geometryId) const {
@@ -238,34 +257,99 @@ bool writeVertexBuffer(RTCGeometry geometry, unsigned slot, const void* source, 
 
 }  // namespace
 
-SceneRefitTimes EmbreeScene::refitTo(const Frame& frame) {
+SceneFollowReport EmbreeScene::follow(const Frame& frame) {
   const auto start = std::chrono::steady_clock::now();
+  std::vector<unsigned> keptMeshes = keptMeshGeometries(frame), keptSpheres = keptSphereGeometries(frame),
+                        keptLights = keptLightGeometries(frame);
+  std::vector<unsigned> kept = keptMeshes;
+  kept.insert(kept.end(), keptSpheres.begin(), keptSpheres.end());
+  kept.insert(kept.end(), keptLights.begin(), keptLights.end());
+  SceneFollowReport report;
+  report.detached = detachAllBut(kept);  // first, so that their ids are free for the new ones
   frame_ = &frame;
-  for (size_t i = 0; i < frame.meshes.size(); ++i) {
-    const MeshInstance& instance = frame.meshes[i];
-    checkWetness(instance);
-    moveMesh(instance.mesh, instance.moves() ? &instance.positionsAtClose : nullptr, meshGeometry_[i]);
-  }
-  for (size_t i = 0; i < frame.spheres.size(); ++i) {
-    const Sphere& sphere = frame.spheres[i];
-    moveSphere(sphere.center, sphere.radius, sphere.centerAtClose ? &*sphere.centerAtClose : nullptr, sphereGeometry_[i]);
-  }
-  for (size_t i = 0; i < frame.lights.size(); ++i) {
-    const AreaLight& light = frame.lights[i];
-    if (light.shape == AreaLight::Shape::Rectangle) {
-      lightMeshes_[i].mesh = makeRectangle(light.center, light.edgeU, light.edgeV);
-      moveMesh(lightMeshes_[i].mesh, nullptr, lightGeometry_[i]);
-    } else {
-      moveSphere(light.center, light.radius, nullptr, lightGeometry_[i]);
-    }
-  }
+  followMeshes(frame, keptMeshes, report);
+  followSpheres(frame, keptSpheres, report);
+  followLights(frame, keptLights, report);
   const auto uploaded = std::chrono::steady_clock::now();
   commitChangedGeometries();
   rtcCommitScene(scene_);
   rtcCommitScene(dielectricScene_);
   const auto committed = std::chrono::steady_clock::now();
-  return {std::chrono::duration<double>(uploaded - start).count(),
-          std::chrono::duration<double>(committed - uploaded).count()};
+  report.uploadSeconds = std::chrono::duration<double>(uploaded - start).count();
+  report.commitSeconds = std::chrono::duration<double>(committed - uploaded).count();
+  return report;
+}
+
+size_t EmbreeScene::detachAllBut(const std::vector<unsigned>& kept) {
+  std::vector<bool> keep(records_.size(), false);
+  for (unsigned id : kept)
+    if (id < records_.size()) keep[id] = true;
+  size_t detached = 0;
+  for (unsigned id = 0; id < records_.size(); ++id) {
+    GeometryRecord& record = records_[id];
+    if (!record.geometry || keep[id]) continue;
+    if (record.dielectric) rtcDetachGeometry(dielectricScene_, id);
+    rtcDetachGeometry(scene_, id);  // the scene held the last reference: Embree frees it
+    record = GeometryRecord{};
+    ++detached;
+  }
+  return detached;
+}
+
+void EmbreeScene::followMeshes(const Frame& frame, const std::vector<unsigned>& kept, SceneFollowReport& report) {
+  meshGeometry_.assign(frame.meshes.size(), kNoGeometry);
+  for (uint32_t i = 0; i < frame.meshes.size(); ++i) {
+    const MeshInstance& instance = frame.meshes[i];
+    checkWetness(instance);
+    const std::vector<Vec3>* positionsAtClose = instance.moves() ? &instance.positionsAtClose : nullptr;
+    if (kept[i] == kReplace) {
+      meshGeometry_[i] = addMesh(instance.mesh, Kind::Mesh, i, positionsAtClose);
+      attachToDielectricScene(meshGeometry_[i], instance.materialId);
+      ++report.attached;
+      continue;
+    }
+    meshGeometry_[i] = kept[i];
+    if (kept[i] == kNoGeometry) continue;
+    records_[kept[i]].index = i;  // the frame's meshes may have moved up or down the list
+    moveMesh(instance.mesh, positionsAtClose, kept[i]);
+  }
+}
+
+void EmbreeScene::followSpheres(const Frame& frame, const std::vector<unsigned>& kept, SceneFollowReport& report) {
+  sphereGeometry_.assign(frame.spheres.size(), kNoGeometry);
+  for (uint32_t i = 0; i < frame.spheres.size(); ++i) {
+    const Sphere& sphere = frame.spheres[i];
+    const Vec3* centerAtClose = sphere.centerAtClose ? &*sphere.centerAtClose : nullptr;
+    if (kept[i] == kReplace) {
+      sphereGeometry_[i] = addSphere(sphere.center, sphere.radius, Kind::Sphere, i, centerAtClose);
+      attachToDielectricScene(sphereGeometry_[i], sphere.materialId);
+      ++report.attached;
+    } else {
+      sphereGeometry_[i] = kept[i];
+      moveSphere(sphere.center, sphere.radius, centerAtClose, kept[i]);
+    }
+  }
+}
+
+void EmbreeScene::followLights(const Frame& frame, const std::vector<unsigned>& kept, SceneFollowReport& report) {
+  lightGeometry_.assign(frame.lights.size(), kNoGeometry);
+  lightMeshes_.resize(frame.lights.size());
+  for (uint32_t i = 0; i < frame.lights.size(); ++i) {
+    const AreaLight& light = frame.lights[i];
+    const bool isRectangle = light.shape == AreaLight::Shape::Rectangle;
+    lightMeshes_[i].mesh = isRectangle ? makeRectangle(light.center, light.edgeU, light.edgeV) : TriangleMesh{};
+    if (kept[i] == kReplace) {
+      lightGeometry_[i] = isRectangle ? addMesh(lightMeshes_[i].mesh, Kind::RectLight, i, nullptr)
+                                      : addSphere(light.center, light.radius, Kind::SphereLight, i, nullptr);
+      ++report.attached;
+    } else {
+      lightGeometry_[i] = kept[i];
+      if (isRectangle)
+        moveMesh(lightMeshes_[i].mesh, nullptr, kept[i]);
+      else
+        moveSphere(light.center, light.radius, nullptr, kept[i]);
+    }
+  }
 }
 
 void EmbreeScene::commitChangedGeometries() {

@@ -5,6 +5,7 @@
 #include <embree3/rtcore.h>
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "lacrima/renderer/camera.hpp"
@@ -45,11 +46,14 @@ struct SurfaceCrossing {
   Vec2 barycentric = Vec2::Zero();
 };
 
-// What one refitTo spent: copying the changed vertices into Embree's buffers, then the commits
-// (each changed geometry's BVH, the top level).
-struct SceneRefitTimes {
+// What one follow() did and spent: copying the changed vertices (and the buffers of added
+// geometries) into Embree's buffers, then the commits (each changed geometry's BVH, the top level).
+struct SceneFollowReport {
   double uploadSeconds = 0.0;
   double commitSeconds = 0.0;
+  size_t attached = 0;  // geometries added: new meshes, spheres or lights, or ones whose layout changed
+  size_t detached = 0;  // geometries removed: gone, or replaced by an attached one
+  bool keptLayout() const { return attached == 0 && detached == 0; }
 };
 
 // One Embree device and scene that can follow the frames of a shot. The BVH is two-level
@@ -57,19 +61,26 @@ struct SceneRefitTimes {
 // Embree refit a single geometry's BVH (geometry build quality REFIT) instead of rebuilding it.
 class EmbreeScene {
  public:
-  EmbreeScene(const Frame& frame, int threads);
+  // report (optional): what building the scene for `frame` attached (every geometry).
+  EmbreeScene(const Frame& frame, int threads, SceneFollowReport* report = nullptr);
   ~EmbreeScene();
   EmbreeScene(const EmbreeScene&) = delete;
   EmbreeScene& operator=(const EmbreeScene&) = delete;
 
+  // True when follow() can take a frame rendered with `threads` threads (another thread count
+  // needs another Embree device).
+  bool canFollow(int threads) const { return threads == threads_; }
   // True when `frame` has this scene's geometry layout: the same meshes (vertex and triangle
   // counts, identical indices), spheres and lights (count and shape), the same number of time
-  // steps for each, and the same thread count. Only then can refitTo() take it.
+  // steps for each, and the same thread count. Then follow() keeps every geometry (a refit).
   bool canRefitTo(const Frame& frame, int threads) const;
-  // Moves every vertex, sphere and light to `frame` (which must pass canRefitTo) and recommits:
-  // Embree refits the BVH of each changed mesh and rebuilds only the small top level. Hit
+  // Moves the scene to `frame` (which must pass canFollow), rebuilding only what changed its
+  // topology: a mesh of the same name and layout as one of the previous frame keeps its geometry
+  // (its vertices moved, its BVH refitted), as do spheres and lights of the same shape and time
+  // steps at the same index; the others are attached anew and the geometries nothing took are
+  // detached. Embree then rebuilds only the changed geometries' BVHs and the small top level. Hit
   // lookups read `frame` from now on; it must outlive its use here.
-  SceneRefitTimes refitTo(const Frame& frame);
+  SceneFollowReport follow(const Frame& frame);
 
   bool intersect(const Ray& ray, SurfaceHit& hit) const;
   // Every crossing of a mesh or sphere of material `materialId` along the ray (tnear < t < tfar),
@@ -109,8 +120,10 @@ class EmbreeScene {
     size_t vertexCount = 0;
     size_t triangleCount = 0;
     bool dielectric = false;  // also in dielectricScene_
+    std::string name;         // a mesh's, to find it again in the next frame
   };
   static constexpr unsigned kNoGeometry = RTC_INVALID_GEOMETRY_ID;  // a mesh without triangles
+  static constexpr unsigned kReplace = RTC_INVALID_GEOMETRY_ID - 1;  // follow(): no geometry to keep
 
   // positionsAtClose / centerAtClose: null for still geometry, else the shutter-close state.
   unsigned addMesh(const TriangleMesh& mesh, Kind kind, uint32_t index, const std::vector<Vec3>* positionsAtClose);
@@ -120,6 +133,16 @@ class EmbreeScene {
   void attachToDielectricScene(unsigned geometryId, uint32_t materialId);
   bool meshHasLayout(const MeshInstance& instance, unsigned geometryId) const;
   bool sphereHasLayout(bool moves, unsigned geometryId) const;
+  bool keepsDielectric(const Frame& frame, unsigned geometryId, uint32_t materialId) const;
+  // Which geometry of the previous frame each mesh / sphere / light of `frame` keeps (kNoGeometry
+  // for an empty mesh), or kReplace: see follow().
+  std::vector<unsigned> keptMeshGeometries(const Frame& frame) const;
+  std::vector<unsigned> keptSphereGeometries(const Frame& frame) const;
+  std::vector<unsigned> keptLightGeometries(const Frame& frame) const;
+  size_t detachAllBut(const std::vector<unsigned>& kept);
+  void followMeshes(const Frame& frame, const std::vector<unsigned>& kept, SceneFollowReport& report);
+  void followSpheres(const Frame& frame, const std::vector<unsigned>& kept, SceneFollowReport& report);
+  void followLights(const Frame& frame, const std::vector<unsigned>& kept, SceneFollowReport& report);
   void moveMesh(const TriangleMesh& mesh, const std::vector<Vec3>* positionsAtClose, unsigned geometryId);
   void moveSphere(const Vec3& center, float radius, const Vec3* centerAtClose, unsigned geometryId);
   void commitChangedGeometries();

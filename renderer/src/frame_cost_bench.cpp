@@ -124,9 +124,10 @@ SceneUpdateSplit SceneUpdateProbe::update(const Frame& frame) {
   const int threads = frame.settings.threads;
   SceneUpdateSplit split;
   arenaFor(frame).execute([&] {
-    if (scene_ && scene_->canRefitTo(frame, threads)) {
-      const SceneRefitTimes times = scene_->refitTo(frame);
-      split = {true, times.uploadSeconds, times.commitSeconds};
+    if (scene_ && scene_->canFollow(threads)) {
+      const SceneFollowReport report = scene_->follow(frame);
+      split = {report.keptLayout() ? SceneUpdate::Refit : SceneUpdate::Update, report.uploadSeconds,
+               report.commitSeconds};
       return;
     }
     const auto start = Clock::now();

@@ -397,16 +397,20 @@ Renderer::Renderer() = default;
 Renderer::~Renderer() = default;
 
 // Runs inside the frame's task arena: Embree's BVH builders use the calling TBB arena.
-SceneUpdate Renderer::updateScene(const Frame& frame) {
+void Renderer::updateScene(const Frame& frame, RenderStats& stats) {
   const int threads = frame.settings.threads;
   try {
-    if (scene_ && scene_->canRefitTo(frame, threads)) {
-      scene_->refitTo(frame);
-      return SceneUpdate::Refit;
+    SceneFollowReport report;
+    if (scene_ && scene_->canFollow(threads)) {
+      report = scene_->follow(frame);
+      stats.sceneUpdate = report.keptLayout() ? SceneUpdate::Refit : SceneUpdate::Update;
+    } else {
+      scene_.reset();  // release the old device before creating the next
+      scene_ = std::make_unique<EmbreeScene>(frame, threads, &report);
+      stats.sceneUpdate = SceneUpdate::Build;
     }
-    scene_.reset();  // release the old device before creating the next
-    scene_ = std::make_unique<EmbreeScene>(frame, threads);
-    return SceneUpdate::Build;
+    stats.sceneGeometriesAttached = report.attached;
+    stats.sceneGeometriesDetached = report.detached;
   } catch (...) {
     scene_.reset();  // a half-updated scene must not serve the next frame
     throw;
@@ -423,14 +427,14 @@ Film Renderer::render(const Frame& frame, RenderStats* stats, const ProgressCall
   Film film(s.width, s.height);
   if (s.adaptive.enabled) film.sampleCount.assign(size_t(s.width) * s.height, 0.0f);
   TracingProgress tracing(start, progress, cancel);
-  SceneUpdate sceneUpdate = SceneUpdate::Build;
+  RenderStats update;  // the scene update's fields
   double sceneUpdateSeconds = 0.0, tracingSeconds = 0.0, denoiseSeconds = 0.0;
   float focusDistance = frame.camera.focusDistance;
   uint64_t cameraPaths = 0;
 
   arena.execute([&] {
     const auto updateStart = std::chrono::steady_clock::now();
-    sceneUpdate = updateScene(frame);
+    updateScene(frame, update);
     sceneUpdateSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - updateStart).count();
     const EmbreeScene& scene = *scene_;
     const LightSampler lights(frame);
@@ -463,7 +467,9 @@ Film Renderer::render(const Frame& frame, RenderStats* stats, const ProgressCall
     stats->cameraPaths = cameraPaths;
     stats->rays = tracing.rays();
     stats->nonFiniteSamples = tracing.nonFiniteSamples();
-    stats->sceneUpdate = sceneUpdate;
+    stats->sceneUpdate = update.sceneUpdate;
+    stats->sceneGeometriesAttached = update.sceneGeometriesAttached;
+    stats->sceneGeometriesDetached = update.sceneGeometriesDetached;
     stats->sceneUpdateSeconds = sceneUpdateSeconds;
     stats->denoiseSeconds = denoiseSeconds;
     stats->focusDistance = focusDistance;

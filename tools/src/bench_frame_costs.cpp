@@ -42,7 +42,7 @@ std::string ms(double seconds) { return std::isnan(seconds) ? std::string("-") :
 struct Column {
   const char* title;
   std::function<double(const FrameCost&)> value;
-  bool refitOnly;  // its median is over the refitted frames only (a build is another cost)
+  bool followedOnly;  // its median leaves out the built frames (a build from scratch is another cost)
 };
 
 const std::vector<Column>& columns() {
@@ -87,11 +87,11 @@ std::vector<FrameCost> measureFrameCosts(const Shot& shot, const std::vector<int
     recordGeometry(times, cost);
     applyBenchSettings(settings, frame.settings);
     const SceneUpdateSplit split = probe.update(frame);
-    cost.refit = split.refit;
+    cost.sceneUpdateKind = split.kind;
     cost.upload = split.uploadSeconds;
     cost.bvh = split.bvhSeconds;
     cost.beforeFirstRay = secondsBeforeFirstRay(renderer, frame);
-    if (split.refit) {
+    if (split.kind == SceneUpdate::Refit) {
       const RawRefitTimes raw = measureRawEmbreeRefit(previous, frame);
       cost.rawRefit = raw.sameTimeStepsSeconds;
       cost.rawRefitOneStep = raw.oneTimeStepSeconds;
@@ -107,7 +107,8 @@ std::string formatFrameCosts(const std::vector<FrameCost>& costs) {
   for (const Column& c : columns()) out += fmt::format(" {:>10}", c.title);
   out += "\n";
   for (const FrameCost& cost : costs) {
-    out += fmt::format("{:>8}", fmt::format("{}{}", cost.frame, cost.refit ? "" : " B"));
+    const char* marker = cost.sceneUpdateKind == SceneUpdate::Build ? " B" : cost.sceneUpdateKind == SceneUpdate::Update ? " U" : "";
+    out += fmt::format("{:>8}", fmt::format("{}{}", cost.frame, marker));
     for (const Column& c : columns()) out += fmt::format(" {:>10}", ms(c.value(cost)));
     out += "\n";
   }
@@ -115,7 +116,8 @@ std::string formatFrameCosts(const std::vector<FrameCost>& costs) {
   for (const Column& c : columns()) {
     std::vector<double> values;
     for (const FrameCost& cost : costs)
-      if ((!c.refitOnly || cost.refit) && !std::isnan(c.value(cost))) values.push_back(c.value(cost));
+      if ((!c.followedOnly || cost.sceneUpdateKind != SceneUpdate::Build) && !std::isnan(c.value(cost)))
+        values.push_back(c.value(cost));
     out += fmt::format(" {:>10}", ms(median(values)));
   }
   return out + "\n";

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "lacrima/renderer/film.hpp"
 #include "lacrima/renderer/frame.hpp"
 
 namespace lacrima {
@@ -17,10 +18,11 @@ struct FrameCost {
   int frame = 0;
   double rig = 0, flesh = 0, details = 0, liquid = 0, eyes = 0, otherGeometry = 0, geometry = 0;  // buildFrame
   double liquidSimulation = 0;  // beside rig, flesh and details (FrameBuildTimes)
-  bool refit = false;        // the scene was refitted (false: built)
+  SceneUpdate sceneUpdateKind = SceneUpdate::Build;  // how the renderer's scene followed the frame
   double upload = 0, bvh = 0;  // the scene update's parts (SceneUpdateProbe)
   double beforeFirstRay = 0;   // the renderer's time up to its first ray (scene update included)
-  // Raw Embree's refit of the same triangles from the frame before (NaN: not measured, a build).
+  // Raw Embree's refit of the same triangles from the frame before (NaN: not measured, the layout
+  // changed).
   double rawRefit = std::nan(""), rawRefitOneStep = std::nan("");
   double sceneUpdate() const { return upload + bvh; }
   double setUp() const { return beforeFirstRay - sceneUpdate(); }  // lights, integrator, checks

@@ -168,9 +168,15 @@ FrameOutcome renderOneFrame(Renderer& renderer, const RenderOptions& o, const Sh
   std::string notes = s.denoise ? fmt::format(", denoised in {:.1f} s", stats.denoiseSeconds) : "";
   if (frame.camera.focusOnSurface && frame.camera.lensRadius > 0.0f)
     notes += fmt::format(", focused at {:.4f} m", stats.focusDistance);
+  // An update names what it replaced: the geometries a bead's birth or a drop's fall changed.
+  const std::string sceneUpdate =
+      stats.sceneUpdate == SceneUpdate::Update
+          ? fmt::format("update, {} {} attached, {} detached,", stats.sceneGeometriesAttached,
+                        stats.sceneGeometriesAttached == 1 ? "geometry" : "geometries", stats.sceneGeometriesDetached)
+          : sceneUpdateName(stats.sceneUpdate);
   std::fprintf(stderr, "frame %d: %dx%d, %s, %s (scene %s %.3f s%s), %srays/s, %llu NaN/Inf samples discarded -> %s%s\n",
                frameNumber, s.width, s.height, spp.c_str(), formatDuration(stats.seconds).c_str(),
-               stats.sceneUpdate == SceneUpdate::Refit ? "refit" : "build", stats.sceneUpdateSeconds, notes.c_str(),
+               sceneUpdate.c_str(), stats.sceneUpdateSeconds, notes.c_str(),
                formatRate(stats.rays / std::max(stats.seconds, 1e-9)).c_str(),
                (unsigned long long)stats.nonFiniteSamples, exrPath.string().c_str(), previewNote.c_str());
   return FrameOutcome::Written;

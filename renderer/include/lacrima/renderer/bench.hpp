@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <memory>
 
+#include "lacrima/renderer/film.hpp"
 #include "lacrima/renderer/frame.hpp"
 
 namespace lacrima {
@@ -54,14 +55,14 @@ class Renderer;     // lacrima/renderer/render.hpp
 
 // One scene update, as Renderer makes it.
 struct SceneUpdateSplit {
-  bool refit = false;          // false: built from scratch (the first frame, or the layout changed)
-  double uploadSeconds = 0.0;  // refit: changed vertices copied into Embree's buffers (0 for a build)
-  double bvhSeconds = 0.0;     // refit: the commits that refit or rebuild the BVHs; build: all of it
+  SceneUpdate kind = SceneUpdate::Build;  // a build: the first frame (or another thread count)
+  double uploadSeconds = 0.0;  // refit or update: vertices and added geometries' buffers copied into Embree's (0 for a build)
+  double bvhSeconds = 0.0;     // refit or update: the commits that refit or rebuild the BVHs; build: all of it
   double totalSeconds() const { return uploadSeconds + bvhSeconds; }
 };
 
-// Follows the frames of a shot as Renderer does (a build on the first, a refit while the geometry
-// layout stays) with frame.settings.threads threads, timing the parts of each update. A frame
+// Follows the frames of a shot as Renderer does (a build on the first, then a refit while the
+// geometry layout stays, an update of the changed geometries when it does not) with frame.settings.threads threads, timing the parts of each update. A frame
 // must outlive the next update.
 class SceneUpdateProbe {
  public:

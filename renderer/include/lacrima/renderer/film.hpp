@@ -1,5 +1,6 @@
 #pragma once
 // The film: beauty and AOVs of one frame, float per channel, row 0 at the top.
+#include <cstddef>
 #include <cstdint>
 #include <map>
 #include <string>
@@ -36,15 +37,24 @@ struct Film {
   size_t pixelIndex(int x, int y) const { return size_t(y) * width + x; }
 };
 
-// How the Embree scene of a frame came to be: built from scratch (first frame of a Renderer,
-// or the geometry layout changed), or the previous frame's scene with its vertices moved and
-// its BVH refitted (same meshes, triangles, spheres, lights and time steps).
-enum class SceneUpdate : uint8_t { Build, Refit };
+// How the Embree scene of a frame came to be: built from scratch (the first frame of a Renderer,
+// or another thread count); the previous frame's scene with its vertices moved and its BVHs
+// refitted (same meshes, triangles, spheres, lights and time steps: Refit); or the previous
+// frame's scene with the geometries whose layout changed (a mesh added, removed or
+// re-triangulated, a sphere starting to move, a light changing shape) replaced and the rest
+// refitted (Update). Each renders the frame bitwise as a scene built for it alone.
+enum class SceneUpdate : uint8_t { Build, Refit, Update };
+inline const char* sceneUpdateName(SceneUpdate update) {
+  return update == SceneUpdate::Build ? "build" : update == SceneUpdate::Refit ? "refit" : "update";
+}
 
 // Statistics of one rendered frame.
 struct RenderStats {
   SceneUpdate sceneUpdate = SceneUpdate::Build;
   double sceneUpdateSeconds = 0.0;  // building or refitting the Embree scene (part of seconds)
+  // Embree geometries the scene update attached (given new buffers and BVHs: every one for a
+  // build) and detached (gone from the frame, or replaced because their layout changed).
+  size_t sceneGeometriesAttached = 0, sceneGeometriesDetached = 0;
   double seconds = 0.0;
   // Path tracing alone: the wall time of the tiles, after the scene update, the light sampler and
   // the integrator's set-up (part of seconds). Rays per second are measured over it.

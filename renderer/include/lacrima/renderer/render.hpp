@@ -50,7 +50,9 @@ class Renderer {
               const std::atomic<bool>* cancel = nullptr);
 
  private:
-  SceneUpdate updateScene(const Frame& frame);
+  // Builds the scene for the first frame (or another thread count), else follows the previous
+  // frame's; sets the stats' scene update fields.
+  void updateScene(const Frame& frame, RenderStats& stats);
 
   std::unique_ptr<EmbreeScene> scene_;  // null before the first frame
 };
