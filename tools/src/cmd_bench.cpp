@@ -100,7 +100,7 @@ void printFrameCosts(const BenchOptions& o, const Shot& shot) {
   settings.samplesPerPixel = o.spp;
   settings.threads = o.threads;
   std::printf("frame costs: frames %s in this order, as lacrima render prepares them (one renderer, its scene kept), "
-              "%dx%d, threads %s; ms per frame, B = scene built (medians of the scene columns over refitted frames)\n",
+              "%dx%d, threads %s; ms per frame, B = scene built, U = scene updated (geometries replaced; medians of the scene columns leave B frames out, raw columns refitted frames only)\n",
               formatFrameList(frames).c_str(), o.width, o.height, o.threads ? std::to_string(o.threads).c_str() : "all");
   std::printf("%s", formatFrameCosts(measureFrameCosts(shot, frames, settings)).c_str());
 }
