@@ -119,13 +119,6 @@ TEST_F(DefaultShotStory, BeadsStopOnTheCheekAndTakeSecondsFromTheLidToTheJawLine
   EXPECT_GE(longestStop, 0.5);  // a stop a viewer sees: 12 frames or more
 }
 
-const MeshInstance& faceSkinOf(const Frame& frame) {
-  for (const MeshInstance& m : frame.meshes)
-    if (m.mesh.name == "face/ICTFace/M_Face") return m;
-  ADD_FAILURE() << "no face mesh";
-  return frame.meshes.front();
-}
-
 TEST_F(DefaultShotStory, AFrameWhoseFleshContinuesFromAFiledStateIsTheFrameOfTheRunThatFiledIt) {
   // A farm task continues the flesh from the state filed at the whole frame before its shutter
   // opens. The rig's pose inverts a few of the flesh's tetrahedra on this shot, one of them (with
@@ -140,7 +133,10 @@ TEST_F(DefaultShotStory, AFrameWhoseFleshContinuesFromAFiledStateIsTheFrameOfThe
   const Frame inTheRun = buildFrame(*shot_, 49);
   buildFrame(*shot_, 50);
   const Frame continued = buildFrame(*shot_, 49);
-  const MeshInstance &a = faceSkinOf(inTheRun), &b = faceSkinOf(continued);
+  const MeshInstance *runSkin = test::findMesh(inTheRun, "face/ICTFace/M_Face"),
+                     *continuedSkin = test::findMesh(continued, "face/ICTFace/M_Face");
+  ASSERT_TRUE(runSkin && continuedSkin);
+  const MeshInstance &a = *runSkin, &b = *continuedSkin;
   ASSERT_TRUE(a.moves());
   EXPECT_TRUE(a.mesh.positions == b.mesh.positions);
   EXPECT_TRUE(a.positionsAtClose == b.positionsAtClose);

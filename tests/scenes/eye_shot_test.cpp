@@ -29,11 +29,7 @@ std::string eyeShot(const std::string& from = "", const std::string& to = "", co
   return test::replaced(text, R"("water": {"type": "water"})", R"("water": {"type": "water"}, )" + kMaterials);
 }
 
-const MeshInstance* findMesh(const Frame& frame, const std::string& name) {
-  for (const MeshInstance& m : frame.meshes)
-    if (m.mesh.name == name) return &m;
-  return nullptr;
-}
+using test::findMesh;
 
 TEST(EyeShot, ReplacesTheShellAndCardsWithCorneaScleraIrisPupilAndLashes) {
   const Shot shot = loadShot(writeShot("eye.json", eyeShot()));

@@ -30,11 +30,7 @@ const std::string kTear =
 
 std::string tearWith(const std::string& from, const std::string& to) { return test::replaced(kTear, from, to); }
 
-const MeshInstance* findMesh(const Frame& frame, const std::string& name) {
-  for (const MeshInstance& m : frame.meshes)
-    if (m.mesh.name == name) return &m;
-  return nullptr;
-}
+using test::findMesh;
 
 // The face primitive the tear lies on, as rendered in the frame (posed, with details).
 const MeshInstance& skinOf(const Frame& frame, const Shot& shot) {

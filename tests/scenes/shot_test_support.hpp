@@ -113,4 +113,11 @@ class ScopedCacheHome {
   std::optional<std::string> old_;
 };
 
+// The frame's mesh of that name (e.g. "face/ICTFace/M_Face"), or null.
+inline const MeshInstance* findMesh(const Frame& frame, const std::string& name) {
+  for (const MeshInstance& m : frame.meshes)
+    if (m.mesh.name == name) return &m;
+  return nullptr;
+}
+
 }  // namespace lacrima::test

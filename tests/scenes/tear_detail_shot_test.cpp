@@ -22,11 +22,7 @@ const std::string kTear =
     R"("tears": [{"type": "dripping", "asset": "face", "part": "M_Face", "start": [-0.0345, -0.0018, 0.0995],
        "startFrame": 3, "alpha": 0.0005, "beta": 0.004, "lambda": 0.1, "material": "water", "rings": 12, "segments": 16}])";
 
-const MeshInstance* findMesh(const Frame& frame, const std::string& name) {
-  for (const MeshInstance& m : frame.meshes)
-    if (m.mesh.name == name) return &m;
-  return nullptr;
-}
+using test::findMesh;
 
 const MeshInstance& faceMesh(const Frame& frame, const Shot& shot) {
   const GltfAsset& gltf = *shot.assets[0].gltf;
