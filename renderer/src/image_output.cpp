@@ -136,6 +136,17 @@ void checkFilm(const Film& film, const char* function) {
 
 constexpr int kExrChannels = 11;  // without the sample count
 
+// A region's film is the EXR's data window inside the whole frame, its display window (OpenEXR's
+// own crop window: compositors place it in the frame).
+void setWindows(OIIO::ImageSpec& spec, const Film& film) {
+  spec.x = film.originX;
+  spec.y = film.originY;
+  spec.full_x = 0;
+  spec.full_y = 0;
+  spec.full_width = std::max(film.frameWidth, film.originX + film.width);
+  spec.full_height = std::max(film.frameHeight, film.originY + film.height);
+}
+
 }  // namespace
 
 void writeExr(const fs::path& path, const Film& film, const ExrMetadata& metadata, bool floatBeauty) {
@@ -160,6 +171,7 @@ void writeExr(const fs::path& path, const Film& film, const ExrMetadata& metadat
   std::fill_n(spec.channelformats.begin(), 4, beauty);
   spec.alpha_channel = 3;
   spec.z_channel = 10;
+  setWindows(spec, film);
   spec.attribute("compression", "zip");
 
   // Attributes we own; `extra` may not override them.
@@ -237,6 +249,10 @@ Film readExrBeauty(const fs::path& path) {
   Film film;
   film.width = spec.width;
   film.height = spec.height;
+  film.originX = spec.x - spec.full_x;
+  film.originY = spec.y - spec.full_y;
+  film.frameWidth = spec.full_width;
+  film.frameHeight = spec.full_height;
   film.rgba.resize(std::size_t(spec.width) * spec.height * 4);
   for (std::size_t p = 0; p < std::size_t(spec.width) * spec.height; ++p) {
     for (int c = 0; c < 4; ++c) film.rgba[p * 4 + c] = src[c] >= 0 ? all[p * nch + src[c]] : 1.0f;

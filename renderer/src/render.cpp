@@ -39,6 +39,10 @@ void validateFrame(const Frame& frame) {
   if (s.width < 1 || s.height < 1 || s.samplesPerPixel < 1 || s.maxDepth < 0)
     throw InputError(fmt::format("cannot render {}x{} pixels at {} samples per pixel with max depth {}", s.width,
                                  s.height, s.samplesPerPixel, s.maxDepth));
+  const PixelRegion& r = s.region;
+  if (!r.empty() && (r.x < 0 || r.y < 0 || r.x + r.width > s.width || r.y + r.height > s.height))
+    throw InputError(fmt::format("the region {}x{} at ({}, {}) does not lie within the {}x{} frame", r.width, r.height,
+                                 r.x, r.y, s.width, s.height));
   for (const MeshInstance& instance : frame.meshes) {
     const std::string defect = findMeshDefect(instance.mesh);
     if (!defect.empty()) throw InputError(fmt::format("mesh '{}': {}", instance.mesh.name, defect));
@@ -148,7 +152,8 @@ class TileRenderer {
       }
   }
 
-  // The pixel's samples from sum.samples up to (not including) `end`, added to its sums.
+  // The pixel's samples from sum.samples up to (not including) `end`, added to its sums. (x, y):
+  // the film's pixel (of the region, when rendering one).
   void addSamples(int x, int y, int end, PixelSums& sum, PathCounters& counters, uint64_t& nonFinite) const {
     const RenderSettings& s = frame_.settings;
     // This sample's radiance by light group and by light path.
@@ -156,8 +161,10 @@ class TileRenderer {
     RadianceSplits into;
     if (groupCount_ > 0) into.groups = splits.data();
     if (splits.size() > groupCount_) into.paths = splits.data() + groupCount_;
+    // The pixel's place in the whole frame: a region's pixels are the frame's.
+    const int frameX = x + s.region.x, frameY = y + s.region.y;
     for (int i = sum.samples; i < end; ++i) {
-      PixelSampler sampler(s.sampler, s.seed, s.frameNumber, x, y, i, s.samplesPerPixel, order_);
+      PixelSampler sampler(s.sampler, s.seed, s.frameNumber, frameX, frameY, i, s.samplesPerPixel, order_);
       // The point in the filter's footprint and the point on the lens: one 4D block
       // (sample_dimensions::kPixelAndLens), mapped monotonically, so both stay stratified.
       const std::array<float, 4> pixelAndLens = sampler.get4D();
@@ -165,7 +172,8 @@ class TileRenderer {
       const Vec2 lens(pixelAndLens[2], pixelAndLens[3]);
       sampler.setDimension(sample_dimensions::kTime);
       const float time = hasMotion_ ? sampler.get1D() : 0.0f;
-      const Ray ray = cameraRays_.generate(float(x) + 0.5f + f.offset.x(), float(y) + 0.5f + f.offset.y(), lens, time);
+      const Ray ray =
+          cameraRays_.generate(float(frameX) + 0.5f + f.offset.x(), float(frameY) + 0.5f + f.offset.y(), lens, time);
       FirstHit first;
       std::fill(splits.begin(), splits.end(), Color::Zero());
       Color L = integrator_.radiance(ray, sampler, first, counters, into);
@@ -321,19 +329,20 @@ class TracingProgress {
 // Without adaptive sampling: every tile once, each pixel with all its samples. Returns the
 // camera samples taken.
 uint64_t renderAllSamples(const TileRenderer& tiles, const RenderSettings& s, TracingProgress& tracing) {
-  const int tileCount = tileCountOf(s.width, s.height);
-  tracing.planMore(uint64_t(s.width) * s.height * s.samplesPerPixel);
+  const int width = s.filmWidth(), height = s.filmHeight();
+  const int tileCount = tileCountOf(width, height);
+  tracing.planMore(uint64_t(width) * height * s.samplesPerPixel);
   tbb::parallel_for(tbb::blocked_range<int>(0, tileCount, 1), [&](const tbb::blocked_range<int>& range) {
     for (int t = range.begin(); t != range.end(); ++t) {
       if (tracing.cancelled()) return;  // skip what is left, cheaply
       PathCounters counters;
       uint64_t nonFinite = 0;
-      const TileRect rect = tileRect(t, s.width, s.height);
+      const TileRect rect = tileRect(t, width, height);
       tiles.renderTile(rect, counters, nonFinite);
       tracing.tileDone(counters, nonFinite, uint64_t(rect.x1 - rect.x0) * (rect.y1 - rect.y0) * s.samplesPerPixel);
     }
   });
-  return uint64_t(s.width) * s.height * s.samplesPerPixel;
+  return uint64_t(width) * height * s.samplesPerPixel;
 }
 
 // Adaptive sampling (adaptive_sampling.hpp) in rounds over the whole image: each round, every
@@ -341,19 +350,20 @@ uint64_t renderAllSamples(const TileRenderer& tiles, const RenderSettings& s, Tr
 // that go on are chosen from all the sums. The rounds and choices depend on the sums alone, so
 // the image does not depend on the thread count. Returns the camera samples taken.
 uint64_t renderAdaptively(const TileRenderer& tiles, const RenderSettings& s, TracingProgress& tracing) {
-  const size_t pixelCount = size_t(s.width) * s.height;
+  const int width = s.filmWidth(), height = s.filmHeight();
+  const size_t pixelCount = size_t(width) * height;
   std::vector<PixelSums> sums(pixelCount);
   std::vector<uint8_t> active(pixelCount, 1);
-  const int tileCount = tileCountOf(s.width, s.height);
+  const int tileCount = tileCountOf(width, height);
   for (;;) {
     std::vector<int> activeTiles;
     uint64_t planned = 0;
     for (int t = 0; t < tileCount; ++t) {
-      const TileRect rect = tileRect(t, s.width, s.height);
+      const TileRect rect = tileRect(t, width, height);
       bool any = false;
       for (int y = rect.y0; y < rect.y1; ++y)
         for (int x = rect.x0; x < rect.x1; ++x) {
-          const size_t p = size_t(y) * s.width + x;
+          const size_t p = size_t(y) * width + x;
           if (!active[p]) continue;
           any = true;
           planned += uint64_t(s.samplesPerPixel - sums[p].samples);
@@ -367,11 +377,11 @@ uint64_t renderAdaptively(const TileRenderer& tiles, const RenderSettings& s, Tr
         if (tracing.cancelled()) return;
         PathCounters counters;
         uint64_t nonFinite = 0, taken = 0;
-        const TileRect rect = tileRect(activeTiles[i], s.width, s.height);
+        const TileRect rect = tileRect(activeTiles[i], width, height);
         for (int y = rect.y0; y < rect.y1; ++y)
           for (int x = rect.x0; x < rect.x1; ++x) {
-            PixelSums& sum = sums[size_t(y) * s.width + x];
-            if (!active[size_t(y) * s.width + x]) continue;
+            PixelSums& sum = sums[size_t(y) * width + x];
+            if (!active[size_t(y) * width + x]) continue;
             const int before = sum.samples;
             tiles.addSamples(x, y, nextSampleCount(before, s.adaptive, s.samplesPerPixel), sum, counters, nonFinite);
             taken += uint64_t(sum.samples - before);
@@ -379,12 +389,12 @@ uint64_t renderAdaptively(const TileRenderer& tiles, const RenderSettings& s, Tr
         tracing.tileDone(counters, nonFinite, taken);
       }
     });
-    selectActivePixels(sums, s.width, s.height, s.adaptive, s.samplesPerPixel, active);
+    selectActivePixels(sums, width, height, s.adaptive, s.samplesPerPixel, active);
   }
   uint64_t samples = 0;
-  for (int y = 0; y < s.height; ++y)
-    for (int x = 0; x < s.width; ++x) {
-      const PixelSums& sum = sums[size_t(y) * s.width + x];
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const PixelSums& sum = sums[size_t(y) * width + x];
       tiles.store(x, y, sum);
       samples += uint64_t(sum.samples);
     }
@@ -424,8 +434,13 @@ Film Renderer::render(const Frame& frame, RenderStats* stats, const ProgressCall
   const RenderSettings& s = frame.settings;
   tbb::task_arena arena(s.threads > 0 ? s.threads : tbb::task_arena::automatic);
 
-  Film film(s.width, s.height);
-  if (s.adaptive.enabled) film.sampleCount.assign(size_t(s.width) * s.height, 0.0f);
+  Film film(s.filmWidth(), s.filmHeight());
+  film.frameWidth = s.width;
+  film.frameHeight = s.height;
+  film.originX = s.region.x;
+  film.originY = s.region.y;
+  const size_t pixelCount = size_t(film.width) * film.height;
+  if (s.adaptive.enabled) film.sampleCount.assign(pixelCount, 0.0f);
   TracingProgress tracing(start, progress, cancel);
   RenderStats update;  // the scene update's fields
   double sceneUpdateSeconds = 0.0, tracingSeconds = 0.0, denoiseSeconds = 0.0;
@@ -445,9 +460,9 @@ Film Renderer::render(const Frame& frame, RenderStats* stats, const ProgressCall
     TileRenderer tiles(frame, camera, integrator, filter, film);
     DenoiseInput halves;
     if (s.denoise) {
-      halves.halfA.assign(size_t(s.width) * s.height * 3, 0.0f);
-      halves.halfB.assign(size_t(s.width) * s.height * 3, 0.0f);
-      halves.variance.assign(size_t(s.width) * s.height * 3, 0.0f);
+      halves.halfA.assign(pixelCount * 3, 0.0f);
+      halves.halfB.assign(pixelCount * 3, 0.0f);
+      halves.variance.assign(pixelCount * 3, 0.0f);
       tiles.keepHalvesIn(&halves);
     }
     const auto tracingStart = std::chrono::steady_clock::now();

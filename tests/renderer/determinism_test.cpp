@@ -1,8 +1,10 @@
-// Renders must be bitwise identical whatever the thread count, and repeatable.
+// Renders must be bitwise identical whatever the thread count, and repeatable; a region of a frame
+// renders the frame's pixels.
 #include <gtest/gtest.h>
 
 #include <cstring>
 
+#include "lacrima/geometry/error.hpp"
 #include "lacrima/geometry/shapes.hpp"
 #include "lacrima/renderer/render.hpp"
 #include "support/test_scenes.hpp"
@@ -52,6 +54,43 @@ TEST(Determinism, RenderHasNoNonFiniteSamples) {
   renderFrame(smallMixedScene(), &stats);
   EXPECT_EQ(stats.nonFiniteSamples, 0u);
   EXPECT_GT(stats.rays, stats.cameraPaths);
+}
+
+// A render region (a crop window) renders the frame's own pixels: every pixel's samples and camera
+// ray are the whole frame's, so the region is the frame's crop bitwise, beauty and AOVs.
+TEST(RenderRegion, ARegionsPixelsAreTheWholeFramesBitwise) {
+  Frame frame = smallMixedScene();
+  const Film whole = renderFrame(frame);
+  frame.settings.region = PixelRegion{17, 12, 11, 7};  // the floor, the drop and the skin's ellipsoid
+  const Film region = renderFrame(frame);
+  ASSERT_EQ(region.width, 11);
+  ASSERT_EQ(region.height, 7);
+  EXPECT_EQ(region.originX, 17);
+  EXPECT_EQ(region.originY, 12);
+  EXPECT_EQ(region.frameWidth, frame.settings.width);
+  EXPECT_EQ(region.frameHeight, frame.settings.height);
+  const auto cropOf = [&](const std::vector<float>& plane, int channels) {
+    std::vector<float> crop;
+    for (int y = 12; y < 19; ++y)
+      for (int x = 17; x < 28; ++x)
+        for (int c = 0; c < channels; ++c) crop.push_back(plane[whole.pixelIndex(x, y) * size_t(channels) + c]);
+    return crop;
+  };
+  EXPECT_TRUE(bitwiseEqual(region.rgba, cropOf(whole.rgba, 4)));
+  EXPECT_TRUE(bitwiseEqual(region.albedo, cropOf(whole.albedo, 3)));
+  EXPECT_TRUE(bitwiseEqual(region.normal, cropOf(whole.normal, 3)));
+  EXPECT_TRUE(bitwiseEqual(region.depth, cropOf(whole.depth, 1)));
+  // Another place gives other pixels (the region is not one colour).
+  frame.settings.region = PixelRegion{18, 12, 11, 7};
+  EXPECT_FALSE(bitwiseEqual(region.rgba, renderFrame(frame).rgba));
+}
+
+TEST(RenderRegion, ARegionOutsideTheFrameIsBadInput) {
+  Frame frame = smallMixedScene();
+  frame.settings.region = PixelRegion{frame.settings.width - 4, 0, 5, 2};
+  EXPECT_THROW(renderFrame(frame), InputError);
+  frame.settings.region = PixelRegion{-1, 0, 5, 2};
+  EXPECT_THROW(renderFrame(frame), InputError);
 }
 
 }  // namespace determinism_test

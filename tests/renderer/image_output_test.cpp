@@ -174,6 +174,34 @@ TEST(ImageOutput, BeautyRoundTripsHalfAndFloat) {
   EXPECT_EQ(directoryListing(dir), (std::vector<std::string>{"float.exr", "half.exr"})) << "temporary files left";
 }
 
+// A region's film is the EXR's data window inside the whole frame (its display window), and reads
+// back in its place; a whole frame's windows are the same.
+TEST(ImageOutput, ARegionIsTheDataWindowInsideTheFrame) {
+  const fs::path dir = freshDirectory("region");
+  Film film = testFilm(7, 5);
+  film.frameWidth = 40;
+  film.frameHeight = 30;
+  film.originX = 12;
+  film.originY = 20;
+  writeExr(dir / "region.exr", film, testMetadata(), true);
+  auto in = OIIO::ImageInput::open((dir / "region.exr").string());
+  ASSERT_TRUE(in);
+  const OIIO::ImageSpec& spec = in->spec();
+  EXPECT_EQ(std::vector<int>({spec.x, spec.y, spec.width, spec.height}), std::vector<int>({12, 20, 7, 5}));
+  EXPECT_EQ(std::vector<int>({spec.full_x, spec.full_y, spec.full_width, spec.full_height}),
+            std::vector<int>({0, 0, 40, 30}));
+  in->close();
+  const Film back = readExrBeauty(dir / "region.exr");
+  EXPECT_EQ(std::vector<int>({back.originX, back.originY, back.width, back.height, back.frameWidth, back.frameHeight}),
+            std::vector<int>({12, 20, 7, 5, 40, 30}));
+  EXPECT_EQ(back.rgba, film.rgba);
+
+  writeExr(dir / "whole.exr", testFilm(7, 5), testMetadata(), true);
+  const Film whole = readExrBeauty(dir / "whole.exr");
+  EXPECT_EQ(std::vector<int>({whole.originX, whole.originY, whole.frameWidth, whole.frameHeight}),
+            std::vector<int>({0, 0, 7, 5}));
+}
+
 TEST(ImageOutput, CreatesParentDirectoriesAndReplacesAtomically) {
   const fs::path dir = freshDirectory("atomic");
   const fs::path path = dir / "a" / "b" / "frame.exr";

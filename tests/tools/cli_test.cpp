@@ -273,6 +273,21 @@ TEST_F(CliOptions, OtherNumericRanges) {
             "--max-depth: expected an integer in [0, 1000], found 1001\n" + kHint);
 }
 
+TEST_F(CliOptions, RegionMustBeFourNumbersWithinTheFrame) {
+  const std::vector<std::string> frame = {"--width", "16", "--height", "12", "--region"};
+  const auto fails = [&](const std::string& region) {
+    std::vector<std::string> options = frame;
+    options.push_back(region);
+    const std::string output = renderFails(options);
+    return output.substr(output.find("--region"));  // after the shot's own warnings, if any
+  };
+  EXPECT_EQ(fails("10,2,8,5"), "--region 10,2,8,5: the region does not lie within the 16x12 frame (it ends at pixel "
+                               "(17, 6))\n");
+  EXPECT_EQ(fails("0,0,0,4"), "--region 0,0,0,4: the region's width and height must be at least 1\n");
+  EXPECT_EQ(fails("-1,0,2,2"), "--region: expected an integer in [0, 16384], found -1\n" + kHint);
+  EXPECT_EQ(fails("1,2,3"), "--region: At least 4 required but received 3\n" + kHint);
+}
+
 TEST_F(CliOptions, MalformedFrames) {
   EXPECT_EQ(renderFails({"--frames", "3-1"}), "--frames 3-1: range '3-1' ends before it starts\n");
   EXPECT_EQ(renderFails({"--frames", "abc"}),
@@ -532,6 +547,34 @@ TEST(CliRender, OverridesReachTheExr) {
   // The defaults of what the shot leaves out: how its samples were drawn and filtered.
   EXPECT_EQ(attributeLine(info.output, "lacrima:sampler"), "  lacrima:sampler = sobol");
   EXPECT_EQ(attributeLine(info.output, "lacrima:filter"), "  lacrima:filter = blackman-harris 1.5 px");
+}
+
+// --region renders part of the frame into an EXR whose data window it is; info says so, the
+// summary line names it, and --resume renders a frame again for another region.
+TEST(CliRender, ARegionIsTheExrsDataWindowAndResumeKnowsIt) {
+  const fs::path dir = freshDir();
+  const std::string out = (dir / "r.####.exr").string();
+  const fs::path shot = test::writeSphereShot(dir, 1, "");
+  const auto render = [&](const std::string& region, bool resume) {
+    std::vector<std::string> args = {"render", shot.string(), "--spp", "2", "--out", out, "--region", region};
+    if (resume) args.push_back("--resume");
+    return lacrima(args);
+  };
+  const auto first = render("4,3,10,6", false);
+  ASSERT_EQ(first.exitStatus, 0) << first.output;
+  EXPECT_NE(first.output.find("frame 1: 10x6 at (4, 3) of 32x18, 2 spp, "), std::string::npos) << first.output;
+  const auto info = lacrima({"info", (dir / "r.0001.exr").string()});
+  EXPECT_NE(info.output.find("  10 x 6, 11 channels in 4 layers:\n  a region of the 32 x 18 frame: its pixels from "
+                             "(4, 3)\n"),
+            std::string::npos)
+      << info.output;
+  const auto same = render("4,3,10,6", true);
+  EXPECT_NE(same.output.find("1 skipped"), std::string::npos) << same.output;
+  const auto moved = render("5,3,10,6", true);
+  EXPECT_NE(moved.output.find("it holds the region 10x6 at (4, 3), this run renders 10x6 at (5, 3)"),
+            std::string::npos)
+      << moved.output;
+  EXPECT_NE(moved.output.find("1 rendered, 0 skipped"), std::string::npos) << moved.output;
 }
 
 // --denoise adds the denoised layer (and says how long it took); --no-denoise overrides a shot

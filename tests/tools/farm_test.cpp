@@ -133,7 +133,8 @@ TEST(FarmStatus, TheJobHasQueuedTasksUntilItsOwnTasksLeaveTheQueue) {
 TEST(FarmCommand, DryRunWritesTheJobAndSubmitsNothing) {
   const fs::path dir = test::testDirectory("farm", /*fresh=*/true);
   const fs::path shot = writeSphereShot(dir, 5);
-  const auto run = lacrima({"farm", "submit", shot.string(), "--chunk", "2", "--spp", "3", "--aov", "lightGroups", "--dry-run"});
+  const auto run = lacrima({"farm", "submit", shot.string(), "--chunk", "2", "--spp", "3", "--aov", "lightGroups",
+                            "--region", "2,1,20,9", "--dry-run"});
   ASSERT_EQ(run.exitStatus, 0) << run.output;
   EXPECT_TRUE(contains(run.output, "--dry-run: 3 task(s) for frames 1-5 (0 complete frames skipped), not submitted"))
       << run.output;
@@ -145,6 +146,8 @@ TEST(FarmCommand, DryRunWritesTheJobAndSubmitsNothing) {
   EXPECT_EQ(job.render.spp, 3);
   EXPECT_EQ(job.render.aovs, (std::vector<std::string>{"lightGroups"})) << "each task renders with the --aov";
   EXPECT_TRUE(contains(readText(jobDir / "job-1.sh"), "'--aov' 'lightGroups'")) << readText(jobDir / "job-1.sh");
+  EXPECT_EQ(job.render.region, (std::vector<int>{2, 1, 20, 9})) << "each task renders the --region";
+  EXPECT_TRUE(contains(readText(jobDir / "job-1.sh"), "'--region' '2,1,20,9'")) << readText(jobDir / "job-1.sh");
   EXPECT_EQ(job.render.outputPattern, (dir / "out" / "spheres.####.exr").string());
   ASSERT_EQ(job.submissions.size(), 1u);
   EXPECT_EQ(job.submissions[0].jobId, "");

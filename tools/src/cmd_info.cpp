@@ -74,6 +74,10 @@ int describeImage(const std::string& path) {
   const std::vector<ChannelLayer> layers = channelLayers(spec);
   std::printf("%s\n  %d x %d, %d channels in %zu layers:\n", path.c_str(), spec.width, spec.height, spec.nchannels,
               layers.size());
+  if (spec.x != spec.full_x || spec.y != spec.full_y || spec.width != spec.full_width ||
+      spec.height != spec.full_height)
+    std::printf("  a region of the %d x %d frame: its pixels from (%d, %d)\n", spec.full_width, spec.full_height,
+                spec.x - spec.full_x, spec.y - spec.full_y);
   int nameWidth = 20;  // the longest layer name's, so the channels line up
   for (const ChannelLayer& layer : layers) nameWidth = std::max(nameWidth, int(layer.name.size()));
   for (const ChannelLayer& layer : layers) {

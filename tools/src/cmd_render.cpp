@@ -162,7 +162,7 @@ FrameOutcome renderOneFrame(Renderer& renderer, const RenderOptions& o, const Sh
   // Under adaptive sampling spp is each pixel's maximum: the mean says what the frame took.
   const std::string spp = s.adaptive.enabled
                               ? fmt::format("{} spp max, {:.1f} mean", s.samplesPerPixel,
-                                            double(stats.cameraPaths) / (double(s.width) * s.height))
+                                            double(stats.cameraPaths) / (double(s.filmWidth()) * s.filmHeight()))
                               : fmt::format("{} spp", s.samplesPerPixel);
   // Inside the parentheses after the scene update: the denoiser's time, where the focus went.
   std::string notes = s.denoise ? fmt::format(", denoised in {:.1f} s", stats.denoiseSeconds) : "";
@@ -174,8 +174,11 @@ FrameOutcome renderOneFrame(Renderer& renderer, const RenderOptions& o, const Sh
           ? fmt::format("update, {} {} attached, {} detached,", stats.sceneGeometriesAttached,
                         stats.sceneGeometriesAttached == 1 ? "geometry" : "geometries", stats.sceneGeometriesDetached)
           : sceneUpdateName(stats.sceneUpdate);
-  std::fprintf(stderr, "frame %d: %dx%d, %s, %s (scene %s %.3f s%s), %srays/s, %llu NaN/Inf samples discarded -> %s%s\n",
-               frameNumber, s.width, s.height, spp.c_str(), formatDuration(stats.seconds).c_str(),
+  const std::string size = s.region.empty() ? fmt::format("{}x{}", s.width, s.height)
+                                            : fmt::format("{}x{} at ({}, {}) of {}x{}", s.region.width,
+                                                          s.region.height, s.region.x, s.region.y, s.width, s.height);
+  std::fprintf(stderr, "frame %d: %s, %s, %s (scene %s %.3f s%s), %srays/s, %llu NaN/Inf samples discarded -> %s%s\n",
+               frameNumber, size.c_str(), spp.c_str(), formatDuration(stats.seconds).c_str(),
                sceneUpdate.c_str(), stats.sceneUpdateSeconds, notes.c_str(),
                formatRate(stats.rays / std::max(stats.seconds, 1e-9)).c_str(),
                (unsigned long long)stats.nonFiniteSamples, exrPath.string().c_str(), previewNote.c_str());

@@ -24,6 +24,7 @@ struct RenderOptions {
   std::optional<uint64_t> seed;
   std::optional<bool> denoise;  // --denoise / --no-denoise; none: the shot's render.denoise
   std::vector<std::string> aovs;  // --aov: further layers, beside the shot's render.aovs
+  std::vector<int> region;        // --region X,Y,W,H: the part of the frame rendered; empty: all of it
   std::string outputPattern;  // empty: the shot's
   bool preview = false;
   bool floatOutput = false;

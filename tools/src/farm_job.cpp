@@ -1,6 +1,7 @@
 #include "farm_job.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <cctype>
 #include <fstream>
@@ -42,6 +43,7 @@ std::vector<std::string> renderArguments(const RenderOptions& r) {
   if (r.floatOutput) args.push_back("--float");
   if (r.denoise) args.push_back(*r.denoise ? "--denoise" : "--no-denoise");
   for (const std::string& aov : r.aovs) args.insert(args.end(), {"--aov", aov});
+  if (!r.region.empty()) args.insert(args.end(), {"--region", fmt::format("{}", fmt::join(r.region, ","))});
   return args;
 }
 
@@ -116,6 +118,7 @@ json renderToJson(const RenderOptions& r) {
   j["float"] = r.floatOutput;
   if (r.denoise) j["denoise"] = *r.denoise;
   if (!r.aovs.empty()) j["aovs"] = r.aovs;
+  if (!r.region.empty()) j["region"] = r.region;
   return j;
 }
 
@@ -132,6 +135,7 @@ RenderOptions renderFromJson(const json& j, const fs::path& shot) {
   r.floatOutput = j.at("float").get<bool>();
   if (j.contains("denoise")) r.denoise = j["denoise"].get<bool>();
   if (j.contains("aovs")) r.aovs = j["aovs"].get<std::vector<std::string>>();
+  if (j.contains("region")) r.region = j["region"].get<std::vector<int>>();
   return r;
 }
 

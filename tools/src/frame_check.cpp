@@ -49,6 +49,15 @@ std::string checkMetadata(const OIIO::ImageSpec& spec, const RenderSettings& s) 
   return "";
 }
 
+// The data window inside the frame: the region rendered (the whole frame without one).
+std::string checkRegion(const OIIO::ImageSpec& spec, const RenderSettings& s) {
+  const PixelRegion r = s.region.empty() ? PixelRegion{0, 0, s.width, s.height} : s.region;
+  const int x = spec.x - spec.full_x, y = spec.y - spec.full_y;
+  if (x == r.x && y == r.y && spec.width == r.width && spec.height == r.height) return "";
+  return fmt::format("it holds the region {}x{} at ({}, {}), this run renders {}x{} at ({}, {})", spec.width,
+                     spec.height, x, y, r.width, r.height, r.x, r.y);
+}
+
 const char* causticsName(Caustics c) {
   switch (c) {
     case Caustics::Off: return "off";
@@ -81,9 +90,10 @@ std::string whyFrameMustBeRendered(const std::filesystem::path& exr, const Rende
   auto in = OIIO::ImageInput::open(exr.string());
   if (!in) return fmt::format("it cannot be opened as an image: {}", OIIO::geterror());
   const OIIO::ImageSpec spec = in->spec();
-  if (spec.deep || spec.width != expected.width || spec.height != expected.height)
-    return fmt::format("it is {}x{}, this run renders {}x{}", spec.width, spec.height, expected.width,
+  if (spec.deep || spec.full_width != expected.width || spec.full_height != expected.height)
+    return fmt::format("it is {}x{}, this run renders {}x{}", spec.full_width, spec.full_height, expected.width,
                        expected.height);
+  if (std::string why = checkRegion(spec, expected); !why.empty()) return why;
   if (std::string why = checkChannels(spec, expected); !why.empty()) return why;
   if (std::string why = checkMetadata(spec, expected); !why.empty()) return why;
   // A truncated or damaged file often has an intact header: only reading every pixel tells.

@@ -121,6 +121,14 @@ void addShotAndOverrides(CLI::App& command, RenderOptions& o) {
                      "specular and transmission direct/indirect, subsurface, emission, environment: adding up to the "
                      "beauty) or one of those passes by its layer name (diffuse_direct, ...); docs/compositing.md")
       ->check(CLI::IsMember(lacrima::aovNames()));
+  command
+      .add_option("--region", o.region,
+                  "X,Y,W,H: render only the W x H pixels whose top left is pixel (X, Y) of the frame (a crop "
+                  "window): the same pixels as in the whole frame, in an EXR whose data window they are (1:1 "
+                  "looks at the tear in a fraction of the time)")
+      ->delimiter(',')
+      ->expected(4)
+      ->check(integerIn(0, 16384));
 }
 
 void addRender(CLI::App& app, RenderOptions& o) {

@@ -16,7 +16,7 @@ namespace lacrima::cli {
 namespace fs = std::filesystem;
 
 uint64_t estimatedFrameBytes(const RenderSettings& s, bool preview) {
-  const uint64_t pixels = uint64_t(s.width) * uint64_t(s.height);
+  const uint64_t pixels = uint64_t(s.filmWidth()) * uint64_t(s.filmHeight());
   const uint64_t channels = 11 + (s.adaptive.enabled ? 1 : 0) + (s.denoise ? 3 : 0);
   // Further float layers: each Cryptomatte's ranks (2 channels a rank), light groups (3 a group,
   // about four groups a shot), light paths (3 each).

@@ -4,10 +4,29 @@
 
 #include "frame_check.hpp"
 #include "frame_selection.hpp"
+#include "lacrima/geometry/error.hpp"
 #include "lacrima/renderer/image_output.hpp"
 #include "lacrima/scenes/shot.hpp"
 
 namespace lacrima::cli {
+
+namespace {
+
+// --region X,Y,W,H (four integers >= 0, the command line's checks) as a region of the frame.
+PixelRegion regionWithinFrame(const std::vector<int>& xywh, int frameWidth, int frameHeight) {
+  const PixelRegion r{xywh.at(0), xywh.at(1), xywh.at(2), xywh.at(3)};
+  if (r.empty())
+    throw InputError(fmt::format("--region {},{},{},{}: the region's width and height must be at least 1", r.x, r.y,
+                                 r.width, r.height));
+  if (r.x + r.width > frameWidth || r.y + r.height > frameHeight)
+    throw InputError(fmt::format("--region {},{},{},{}: the region does not lie within the {}x{} frame (it ends at "
+                                 "pixel ({}, {}))",
+                                 r.x, r.y, r.width, r.height, frameWidth, frameHeight, r.x + r.width - 1,
+                                 r.y + r.height - 1));
+  return r;
+}
+
+}  // namespace
 
 void applyOverrides(const RenderOptions& o, RenderSettings& s) {
   if (o.spp) s.samplesPerPixel = *o.spp;
@@ -19,6 +38,7 @@ void applyOverrides(const RenderOptions& o, RenderSettings& s) {
   if (o.floatOutput) s.floatOutput = true;
   if (o.denoise) s.denoise = *o.denoise;
   for (const std::string& aov : o.aovs) enableAov(s, aov);  // names checked by the command line
+  if (!o.region.empty()) s.region = regionWithinFrame(o.region, s.width, s.height);
 }
 
 RenderSettings settingsFor(const RenderOptions& o, const Shot& shot, int frameNumber) {

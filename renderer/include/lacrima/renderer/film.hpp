@@ -18,6 +18,10 @@ struct FilmLayer {
 
 struct Film {
   int width = 0, height = 0;
+  // The whole frame the film is part of, and the film's place in it (a render region; the EXR's
+  // display and data windows): the film's pixel (x, y) is the frame's (originX + x, originY + y).
+  int frameWidth = 0, frameHeight = 0;
+  int originX = 0, originY = 0;
   std::vector<float> rgba;    // 4 per pixel, radiance average (alpha = coverage)
   std::vector<float> albedo;  // 3 per pixel, first-hit albedo average
   std::vector<float> normal;  // 3 per pixel, first-hit world shading normal average
@@ -32,7 +36,7 @@ struct Film {
 
   Film() = default;
   Film(int w, int h)
-      : width(w), height(h), rgba(size_t(w) * h * 4, 0.0f), albedo(size_t(w) * h * 3, 0.0f),
+      : width(w), height(h), frameWidth(w), frameHeight(h), rgba(size_t(w) * h * 4, 0.0f), albedo(size_t(w) * h * 3, 0.0f),
         normal(size_t(w) * h * 3, 0.0f), depth(size_t(w) * h, 0.0f) {}
   size_t pixelIndex(int x, int y) const { return size_t(y) * width + x; }
 };

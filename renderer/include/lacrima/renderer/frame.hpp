@@ -128,9 +128,25 @@ struct CryptomatteSettings {
   bool operator==(const CryptomatteSettings&) const = default;
 };
 
+// A rectangle of a frame's pixels (x right, y down, row 0 at the top), in the pixels of the
+// whole frame.
+struct PixelRegion {
+  int x = 0, y = 0, width = 0, height = 0;
+  bool empty() const { return width <= 0 || height <= 0; }
+  bool operator==(const PixelRegion&) const = default;
+};
+
 struct RenderSettings {
-  int width = 640;
+  int width = 640;   // the whole frame's, whatever `region` renders of it
   int height = 360;
+  // The pixels rendered (a crop window, as film renderers call it): the camera and every pixel's
+  // samples are those of the whole width x height frame, so a region's pixels are the frame's
+  // bitwise (adaptive sampling and the denoiser see the region's pixels only, so near its edges
+  // theirs differ). Empty: the whole frame.
+  PixelRegion region;
+  // The film's size: the region's, or the whole frame's.
+  int filmWidth() const { return region.empty() ? width : region.width; }
+  int filmHeight() const { return region.empty() ? height : region.height; }
   int samplesPerPixel = 16;  // the most a pixel takes (all of them without adaptive sampling)
   AdaptiveSampling adaptive;
   // Denoise the frame after path tracing (denoiser.hpp): the film gets a denoised layer beside
