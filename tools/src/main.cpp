@@ -84,6 +84,8 @@ const char* kRenderExamples =
     "      every 2nd frame of 1-48 at a quick preview quality\n"
     "  lacrima render shot.json --frames 12 --out /tmp/look.####.exr --seed 3\n"
     "      one frame to another place, with another seed\n"
+    "  lacrima render scenes/shots/tear_closeup.json --frames 46 --region 780,400,480,500 --preview\n"
+    "      the tear at 1:1 and full quality: a 480x500 crop window of the 1080p frame, its pixels the frame's\n"
     "  lacrima render scenes/shots/tear_closeup.json --performance face=track/performance.csv --out /tmp/t.####.exr\n"
     "      the crying shot played by a tracked performance (lacrima track) instead of its keyed one\n"
     "\n"
