@@ -80,14 +80,20 @@ float neighbourhoodUpperQuartile(const std::vector<float>& meanBrightness, int w
 // is only an outlier when it is also more than twice as bright as the same pixel of the other
 // half, so a catchlight both halves see (a glint on a tear, one pixel wide) stays. An outlier is
 // scaled down to that bound (hue kept); the energy above it is lost, as in Cycles.
-void suppressFireflies(int width, int height, std::vector<float>& halfA, std::vector<float>& halfB) {
+// `partA`, `partB` (may be null): a part of each half (its subsurface light), scaled alike, so an
+// outlier is judged on the whole pixel and the part's spiky but genuine samples are kept.
+void suppressFireflies(int width, int height, std::vector<float>& halfA, std::vector<float>& halfB,
+                       std::vector<float>* partA, std::vector<float>* partB) {
   const size_t n = size_t(width) * height;
   std::vector<float> meanBrightness(n);
   for (size_t p = 0; p < n; ++p) meanBrightness[p] = 0.5f * (brightness(&halfA[3 * p]) + brightness(&halfB[3 * p]));
-  const auto scaleDown = [](float* rgb, float value, float limit) {
-    if (value > limit)
-      for (int c = 0; c < 3; ++c) rgb[c] *= limit / value;
+  const auto scaleDown = [](float* rgb, float* part, float value, float limit) {
+    if (!(value > limit)) return;
+    for (int c = 0; c < 3; ++c) rgb[c] *= limit / value;
+    if (part)
+      for (int c = 0; c < 3; ++c) part[c] *= limit / value;
   };
+  const auto partOf = [](std::vector<float>* part, size_t p) { return part ? &(*part)[3 * p] : nullptr; };
   for (size_t p = 0; p < n; ++p) {
     const float a = brightness(&halfA[3 * p]), b = brightness(&halfB[3 * p]);
     // Only a pixel more than twice the other half's can be an outlier: the neighbourhood's
@@ -95,8 +101,8 @@ void suppressFireflies(int width, int height, std::vector<float>& halfA, std::ve
     if (!(a > 2.0f * b) && !(b > 2.0f * a)) continue;
     const int x = int(p % size_t(width)), y = int(p / size_t(width));
     const float bound = 2.0f * neighbourhoodUpperQuartile(meanBrightness, width, height, x, y);
-    if (a > 2.0f * b) scaleDown(&halfA[3 * p], a, std::max(bound, 2.0f * b));
-    else scaleDown(&halfB[3 * p], b, std::max(bound, 2.0f * a));
+    if (a > 2.0f * b) scaleDown(&halfA[3 * p], partOf(partA, p), a, std::max(bound, 2.0f * b));
+    else scaleDown(&halfB[3 * p], partOf(partB, p), b, std::max(bound, 2.0f * a));
   }
 }
 
@@ -108,15 +114,15 @@ void suppressFireflies(int width, int height, std::vector<float>& halfA, std::ve
 // difference onto its neighbours, though, which would then average the catchlight in: where the
 // samples' variance (given per pixel) is lower, it is taken instead.
 std::vector<float> halfBufferVariance(const DenoiseInput& in, const std::vector<float>& halfA,
-                                      const std::vector<float>& halfB) {
+                                      const std::vector<float>& halfB, const std::vector<float>& samplesVariance) {
   std::vector<float> variance(halfA.size());
   for (size_t i = 0; i < variance.size(); ++i) {
     const float d = halfA[i] - halfB[i];
     variance[i] = 0.5f * d * d;
   }
   variance = boxMean(variance, in.width, in.height, 3, 2);
-  if (!in.variance.empty())
-    for (size_t i = 0; i < variance.size(); ++i) variance[i] = std::min(variance[i], in.variance[i]);
+  if (!samplesVariance.empty())
+    for (size_t i = 0; i < variance.size(); ++i) variance[i] = std::min(variance[i], samplesVariance[i]);
   return variance;
 }
 
@@ -165,8 +171,10 @@ class HalfFilter {
     const float k2 = s_.bandwidth * s_.bandwidth;
     std::vector<NormalEquations> sums(size_t(y1 - y0) * w);
     std::vector<float> term(size_t(bottom - top) * w);
-    for (int dy = -r; dy <= r; ++dy)
-      for (int dx = -r; dx <= r; ++dx) {
+    // Offsets that are multiples of the step, so the pixel itself (0, 0) is always among them.
+    const int step = std::max(1, s_.windowStep), first = -(r / step) * step;
+    for (int dy = first; dy <= r; dy += step)
+      for (int dx = first; dx <= r; dx += step) {
         distanceTerms(top, bottom, dx, dy, term);
         const std::vector<float> distance = boxMean(term, w, bottom - top, 1, f);
         for (int y = y0; y < y1; ++y)
@@ -255,18 +263,17 @@ void checkInput(const DenoiseInput& in) {
   const size_t n = size_t(std::max(in.width, 0)) * size_t(std::max(in.height, 0));
   if (in.width < 1 || in.height < 1 || in.halfA.size() != 3 * n || in.halfB.size() != 3 * n ||
       !(in.variance.empty() || in.variance.size() == 3 * n) ||
+      !(in.subsurfaceA.empty() || (in.subsurfaceA.size() == 3 * n && in.subsurfaceB.size() == 3 * n &&
+                                   in.subsurfaceVariance.size() == 3 * n)) ||
       in.albedo.size() != 3 * n || in.normal.size() != 3 * n || in.depth.size() != n)
     throw std::invalid_argument("denoise: the half buffers and features do not match the image size");
 }
 
-}  // namespace
-
-std::vector<float> denoise(const DenoiseInput& in, const DenoiseSettings& settings) {
-  checkInput(in);
-  std::vector<float> halfA = in.halfA, halfB = in.halfB;
-  suppressFireflies(in.width, in.height, halfA, halfB);
-  const std::vector<float> variance = halfBufferVariance(in, halfA, halfB);
-  const std::vector<float> features = regressionFeatures(in);
+// Both halves filtered, each with the other's weights (cross-filtering), and averaged.
+std::vector<float> filterHalves(const DenoiseInput& in, const std::vector<float>& halfA, const std::vector<float>& halfB,
+                                const std::vector<float>& samplesVariance, const std::vector<float>& features,
+                                const DenoiseSettings& settings) {
+  const std::vector<float> variance = halfBufferVariance(in, halfA, halfB, samplesVariance);
   // A with B's weights, B with A's; the same variance serves both (it is symmetric in a and b).
   const HalfFilter filterA(in, halfA, halfB, variance, features, settings);
   const HalfFilter filterB(in, halfB, halfA, variance, features, settings);
@@ -282,6 +289,28 @@ std::vector<float> denoise(const DenoiseInput& in, const DenoiseSettings& settin
   });
   for (size_t i = 0; i < a.size(); ++i) a[i] = 0.5f * (a[i] + b[i]);
   return a;
+}
+
+}  // namespace
+
+std::vector<float> denoise(const DenoiseInput& in, const DenoiseSettings& settings) {
+  checkInput(in);
+  std::vector<float> halfA = in.halfA, halfB = in.halfB;
+  const bool split = !in.subsurfaceA.empty();
+  std::vector<float> subsurfaceA = in.subsurfaceA, subsurfaceB = in.subsurfaceB;
+  suppressFireflies(in.width, in.height, halfA, halfB, split ? &subsurfaceA : nullptr, split ? &subsurfaceB : nullptr);
+  const std::vector<float> features = regressionFeatures(in);
+  if (!split) return filterHalves(in, halfA, halfB, in.variance, features, settings);
+  // The rest (specular light, water, eyes) as the whole image would be; its samples' variance is
+  // not kept, the whole pixel's bounds it instead.
+  for (size_t i = 0; i < halfA.size(); ++i) halfA[i] -= subsurfaceA[i], halfB[i] -= subsurfaceB[i];
+  std::vector<float> out = filterHalves(in, halfA, halfB, in.variance, features, settings);
+  DenoiseSettings wide = settings;
+  wide.windowRadius = settings.subsurfaceWindowRadius;
+  wide.windowStep = settings.subsurfaceWindowStep;
+  const std::vector<float> subsurface = filterHalves(in, subsurfaceA, subsurfaceB, in.subsurfaceVariance, features, wide);
+  for (size_t i = 0; i < out.size(); ++i) out[i] += subsurface[i];
+  return out;
 }
 
 }  // namespace lacrima

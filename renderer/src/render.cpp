@@ -14,6 +14,7 @@
 #include <atomic>
 #include <chrono>
 #include <mutex>
+#include <variant>
 
 #include "embree_scene.hpp"
 #include "lacrima/renderer/adaptive_sampling.hpp"
@@ -131,6 +132,10 @@ class TileRenderer {
     film.layers.reserve(integrator.lightGroups().size() + kLightPathCount + 2);
     if (frame.settings.lightGroups) addLightGroupLayers(film, integrator.lightGroups());
     if (frame.settings.lightPaths.any()) addLightPathLayers(film, frame.settings.lightPaths);
+    // The denoiser filters the subsurface light apart: the integrator splits it off like a
+    // light-path pass, written or not.
+    splitSubsurface_ = frame.settings.denoise && hasSubsurface(frame.materials);
+    if (splitSubsurface_ && !frame.settings.lightPaths.any()) splitLayers_.resize(groupCount_ + kLightPathCount, nullptr);
     const CryptomatteSettings& crypto = frame.settings.cryptomatte;
     if (!crypto.any()) return;
     const CryptomatteNames names = cryptomatteNames(frame);
@@ -139,8 +144,10 @@ class TileRenderer {
       materials_ = addCryptomatteLayer(film, "CryptoMaterial", names.materials, names.materialManifest, crypto.ranks);
   }
 
-  // Where store() also writes each pixel's two half buffers (null: nowhere).
+  // Where store() also writes each pixel's two half buffers (null: nowhere), and those of its
+  // subsurface light when the denoiser filters that apart (splitsSubsurface()).
   void keepHalvesIn(DenoiseInput* halves) { halves_ = halves; }
+  bool splitsSubsurface() const { return splitSubsurface_; }
 
   // Every pixel of the tile with all its samples (no adaptive sampling).
   void renderTile(const TileRect& rect, PathCounters& counters, uint64_t& nonFinite) const {
@@ -186,6 +193,7 @@ class TileRenderer {
       sum.weightedRadiance += f.weight * L;
       sum.weight += f.weight;
       addRadiance(sum, L);
+      if (splitSubsurface_) addSubsurface(sum, splits[groupCount_ + size_t(LightPath::Subsurface)]);
       if (first.valid) {
         if (objects_.layer && first.ids.object >= 0) sum.objectIds.add(objects_.ids[size_t(first.ids.object)], f.weight);
         if (materials_.layer && first.ids.material >= 0)
@@ -226,6 +234,7 @@ class TileRenderer {
         halves_->halfB[3 * p + c] = h.rest[c];
         halves_->variance[3 * p + c] = variance[c];
       }
+      if (splitSubsurface_) storeSubsurfaceHalves(p, sum);
     }
   }
 
@@ -247,6 +256,23 @@ class TileRenderer {
   void addLightPathLayers(Film& film, const LightPathSet& passes) {
     for (const LightPath pass : allLightPaths())
       splitLayers_.push_back(passes.has(pass) ? addRgbLayer(film, lightPathName(pass)) : nullptr);
+  }
+
+  void storeSubsurfaceHalves(size_t p, const PixelSums& sum) const {
+    const PixelHalves h = subsurfaceHalves(sum);
+    const Color variance = subsurfaceHalfMeanVariance(sum);
+    for (int c = 0; c < 3; ++c) {
+      halves_->subsurfaceA[3 * p + c] = h.first[c];
+      halves_->subsurfaceB[3 * p + c] = h.rest[c];
+      halves_->subsurfaceVariance[3 * p + c] = variance[c];
+    }
+  }
+
+  static bool hasSubsurface(const std::vector<Material>& materials) {
+    return std::any_of(materials.begin(), materials.end(), [](const Material& m) {
+      const auto* skin = std::get_if<SkinParams>(&m.params);
+      return skin && skin->subsurface.has_value();
+    });
   }
 
   static void addSplits(PixelSums& sum, const std::vector<Color>& splits, float weight) {
@@ -276,6 +302,7 @@ class TileRenderer {
   // (the half buffers are then stratified on their own).
   SampleOrder order_;
   DenoiseInput* halves_ = nullptr;
+  bool splitSubsurface_ = false;
   CryptomatteLayer objects_, materials_;  // no layer: not written
   // Per split of the radiance: the light groups (groupCount_ of them), then the light paths; null
   // for a light path not written.
@@ -463,6 +490,11 @@ Film Renderer::render(const Frame& frame, RenderStats* stats, const ProgressCall
       halves.halfA.assign(pixelCount * 3, 0.0f);
       halves.halfB.assign(pixelCount * 3, 0.0f);
       halves.variance.assign(pixelCount * 3, 0.0f);
+      if (tiles.splitsSubsurface()) {
+        halves.subsurfaceA.assign(pixelCount * 3, 0.0f);
+        halves.subsurfaceB.assign(pixelCount * 3, 0.0f);
+        halves.subsurfaceVariance.assign(pixelCount * 3, 0.0f);
+      }
       tiles.keepHalvesIn(&halves);
     }
     const auto tracingStart = std::chrono::steady_clock::now();

@@ -41,6 +41,12 @@ struct DenoiseInput {
   std::vector<float> albedo;  // 3 a pixel
   std::vector<float> normal;  // 3 a pixel (zero where nothing was hit)
   std::vector<float> depth;   // 1 a pixel (infinite where nothing was hit)
+  // Optional (empty: none): the subsurface light's part of halfA and halfB, and the variance of
+  // its own half estimates. Given, it is filtered apart from the rest over the wider
+  // DenoiseSettings::subsurfaceWindowRadius, and the two added: the diffusion profile makes that
+  // light smooth over many more pixels than the rest (a 1.3 mm mean free path spans ~30 pixels of
+  // the default shot's 1080p close-up; docs/denoising.md).
+  std::vector<float> subsurfaceA, subsurfaceB, subsurfaceVariance;
 };
 
 struct DenoiseSettings {
@@ -49,6 +55,14 @@ struct DenoiseSettings {
   // 0.0479, 13 x 13 0.0773 / 0.0470, 17 x 17 0.0788 / 0.0480 (docs/denoising.md). It costs 1.6x
   // the denoising time of 9 x 9.
   int windowRadius = 6;
+  // The subsurface light's window (DenoiseInput::subsurfaceA): 31 x 31. On the tear's 1:1 crop
+  // at 8 spp (FLIP crop / trail / skin): 13 x 13 0.0795 / 0.0859 / 0.0529, 21 x 21 0.0643 / 0.0692
+  // / 0.0461, 31 x 31 0.0557 / 0.0602 / 0.0424 (docs/denoising.md); it costs ~5x the 13 x 13 pass.
+  int subsurfaceWindowRadius = 15;
+  // Neighbours every this many pixels across the window (1: all of them); the subsurface light's
+  // wide window takes every second, a quarter of the work.
+  int windowStep = 1;
+  int subsurfaceWindowStep = 2;
   int patchRadius = 3;   // 7 x 7 patches for the colour distance
   // Non-local means' bandwidth k (Rousselle et al. 2012): distances are in units of k^2 times
   // the variance; smaller keeps more detail and removes less noise.

@@ -8,6 +8,15 @@
 
 namespace lacrima {
 
+// One part of a pixel's radiance (its subsurface light, for the denoiser) summed as the beauty's
+// plain sums are: sum, squares, and the sums over the first 2^k and 2^(k-1) samples.
+struct PartSums {
+  Color sum = Color::Zero();
+  Color squared = Color::Zero();
+  Color prefix = Color::Zero();
+  Color previousPrefix = Color::Zero();
+};
+
 // Beauty and alpha are filter-weighted; the AOVs (albedo, normal, depth) are plain averages over
 // the samples that hit something. The radiance summed over the first 2^k samples is kept for the
 // two largest powers of two taken so far: adaptive sampling compares the whole estimate with the
@@ -31,16 +40,31 @@ struct PixelSums {
   // Light groups and light paths (only when the render writes them): per split of the radiance,
   // sum of w L_s and of L_s.
   std::vector<Color> splitWeighted, splitPlain;
+  // The subsurface light's plain sums (only when the denoiser filters it apart).
+  PartSums subsurface;
 };
+
+inline bool isPowerOfTwo(int n) { return n > 0 && (n & (n - 1)) == 0; }
 
 // Adds one sample's radiance to the plain sums (the filter-weighted ones are the caller's).
 inline void addRadiance(PixelSums& sum, const Color& L) {
   sum.radiance += L;
   sum.radianceSquared += L * L;
   ++sum.samples;
-  if ((sum.samples & (sum.samples - 1)) == 0) {  // a power of two: a new prefix
+  if (isPowerOfTwo(sum.samples)) {  // a new prefix
     sum.previousPrefixRadiance = sum.prefixRadiance;
     sum.prefixRadiance = sum.radiance;
+  }
+}
+
+// Adds one sample's subsurface light, after addRadiance added the sample's whole radiance.
+inline void addSubsurface(PixelSums& sum, const Color& L) {
+  PartSums& part = sum.subsurface;
+  part.sum += L;
+  part.squared += L * L;
+  if (isPowerOfTwo(sum.samples)) {
+    part.previousPrefix = part.prefix;
+    part.prefix = part.sum;
   }
 }
 
@@ -53,23 +77,39 @@ struct PixelHalves {
   int firstSamples = 0;  // p
 };
 
-inline PixelHalves pixelHalves(const PixelSums& sum) {
-  const int n = sum.samples;
-  if (n < 2) return {sum.radiance, sum.radiance, n};
+// The halves of n samples whose sum is `total`, with the sums over their first 2^k and 2^(k-1).
+inline PixelHalves halvesOf(const Color& total, const Color& prefixSum, const Color& previousPrefixSum, int n) {
+  if (n < 2) return {total, total, n};
   int prefix = 1;
   while (prefix * 2 < n) prefix *= 2;
-  const Color& prefixSum = prefix * 2 == n ? sum.previousPrefixRadiance : sum.prefixRadiance;
-  return {prefixSum / float(prefix), (sum.radiance - prefixSum) / float(n - prefix), prefix};
+  const Color& first = prefix * 2 == n ? previousPrefixSum : prefixSum;
+  return {first / float(prefix), (total - first) / float(n - prefix), prefix};
 }
 
-// The variance of the mean of half the pixel's samples, per channel: the samples' variance over
-// n / 2 (0 under 2 samples, where there is nothing to estimate it from).
-inline Color halfMeanVariance(const PixelSums& sum) {
-  const int n = sum.samples;
+inline PixelHalves pixelHalves(const PixelSums& sum) {
+  return halvesOf(sum.radiance, sum.prefixRadiance, sum.previousPrefixRadiance, sum.samples);
+}
+
+inline PixelHalves subsurfaceHalves(const PixelSums& sum) {
+  const PartSums& part = sum.subsurface;
+  return halvesOf(part.sum, part.prefix, part.previousPrefix, sum.samples);
+}
+
+// The variance of the mean of half of n samples, per channel, from their sum and sum of squares:
+// the samples' variance over n / 2 (0 under 2 samples, where there is nothing to estimate it from).
+inline Color halfMeanVarianceOf(const Color& total, const Color& squared, int n) {
   if (n < 2) return Color::Zero();
-  const Color mean = sum.radiance / float(n);
-  const Color sampleVariance = ((sum.radianceSquared - float(n) * mean * mean) / float(n - 1)).max(0.0f);
+  const Color mean = total / float(n);
+  const Color sampleVariance = ((squared - float(n) * mean * mean) / float(n - 1)).max(0.0f);
   return sampleVariance / (0.5f * float(n));
+}
+
+inline Color halfMeanVariance(const PixelSums& sum) {
+  return halfMeanVarianceOf(sum.radiance, sum.radianceSquared, sum.samples);
+}
+
+inline Color subsurfaceHalfMeanVariance(const PixelSums& sum) {
+  return halfMeanVarianceOf(sum.subsurface.sum, sum.subsurface.squared, sum.samples);
 }
 
 struct PixelValue {
