@@ -227,14 +227,10 @@ class TileRenderer {
     storeRanks(objects_, sum.objectIds, p, sum.weight);
     storeRanks(materials_, sum.materialIds, p, sum.weight);
     if (halves_) {
-      const PixelHalves h = pixelHalves(sum);
-      const Color variance = halfMeanVariance(sum);
-      for (int c = 0; c < 3; ++c) {
-        halves_->halfA[3 * p + c] = h.first[c];
-        halves_->halfB[3 * p + c] = h.rest[c];
-        halves_->variance[3 * p + c] = variance[c];
-      }
-      if (splitSubsurface_) storeSubsurfaceHalves(p, sum);
+      storeHalves(p, pixelHalves(sum), halfMeanVariance(sum), halves_->halfA, halves_->halfB, halves_->variance);
+      if (splitSubsurface_)
+        storeHalves(p, subsurfaceHalves(sum), subsurfaceHalfMeanVariance(sum), halves_->subsurfaceA,
+                    halves_->subsurfaceB, halves_->subsurfaceVariance);
     }
   }
 
@@ -258,13 +254,12 @@ class TileRenderer {
       splitLayers_.push_back(passes.has(pass) ? addRgbLayer(film, lightPathName(pass)) : nullptr);
   }
 
-  void storeSubsurfaceHalves(size_t p, const PixelSums& sum) const {
-    const PixelHalves h = subsurfaceHalves(sum);
-    const Color variance = subsurfaceHalfMeanVariance(sum);
+  static void storeHalves(size_t p, const PixelHalves& h, const Color& variance, std::vector<float>& a,
+                          std::vector<float>& b, std::vector<float>& v) {
     for (int c = 0; c < 3; ++c) {
-      halves_->subsurfaceA[3 * p + c] = h.first[c];
-      halves_->subsurfaceB[3 * p + c] = h.rest[c];
-      halves_->subsurfaceVariance[3 * p + c] = variance[c];
+      a[3 * p + c] = h.first[c];
+      b[3 * p + c] = h.rest[c];
+      v[3 * p + c] = variance[c];
     }
   }
 
