@@ -146,7 +146,7 @@ unsigned EmbreeScene::addSphere(const Vec3& center, float radius, Kind kind, uin
   rtcCommitGeometry(geometry);
   const unsigned id = rtcAttachGeometry(scene_, geometry);
   rtcReleaseGeometry(geometry);  // the scene keeps it alive
-  recordGeometry(id, {kind, index, geometry, stepCount, 1, 0});
+  recordGeometry(id, {kind, index, geometry, stepCount, 1, 0, false, ""});  // spheres and lights have no name
   return id;
 }
 
