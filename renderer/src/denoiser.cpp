@@ -301,8 +301,8 @@ std::vector<float> denoise(const DenoiseInput& in, const DenoiseSettings& settin
   suppressFireflies(in.width, in.height, halfA, halfB, split ? &subsurfaceA : nullptr, split ? &subsurfaceB : nullptr);
   const std::vector<float> features = regressionFeatures(in);
   if (!split) return filterHalves(in, halfA, halfB, in.variance, features, settings);
-  // The rest (specular light, water, eyes) as the whole image would be; its samples' variance is
-  // not kept, the whole pixel's bounds it instead.
+  // The rest (specular light, water, the iris) as the whole image would be; its samples' variance
+  // is not kept, the whole pixel's bounds it instead.
   for (size_t i = 0; i < halfA.size(); ++i) halfA[i] -= subsurfaceA[i], halfB[i] -= subsurfaceB[i];
   std::vector<float> out = filterHalves(in, halfA, halfB, in.variance, features, settings);
   DenoiseSettings wide = settings;

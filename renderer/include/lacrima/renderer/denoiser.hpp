@@ -55,12 +55,14 @@ struct DenoiseSettings {
   // 0.0479, 13 x 13 0.0773 / 0.0470, 17 x 17 0.0788 / 0.0480 (docs/denoising.md). It costs 1.6x
   // the denoising time of 9 x 9.
   int windowRadius = 6;
-  // The subsurface light's window (DenoiseInput::subsurfaceA): 31 x 31. On the tear's 1:1 crop
-  // at 8 spp (FLIP crop / trail / skin): 13 x 13 0.0795 / 0.0859 / 0.0529, 21 x 21 0.0643 / 0.0692
-  // / 0.0461, 31 x 31 0.0557 / 0.0602 / 0.0424 (docs/denoising.md); it costs ~5x the 13 x 13 pass.
+  // The subsurface light's window (DenoiseInput::subsurfaceA). On the tear's 1:1 crop at 8 spp
+  // (FLIP crop / trail / skin; a measuring build, docs/denoising.md): 13 x 13 0.0795 / 0.0859 /
+  // 0.0529, 21 x 21 0.0643 / 0.0692 / 0.0461, 31 x 31 0.0557 / 0.0602 / 0.0424; a full 31 x 31
+  // costs ~5x the 13 x 13 pass.
   int subsurfaceWindowRadius = 15;
-  // Neighbours every this many pixels across the window (1: all of them); the subsurface light's
-  // wide window takes every second, a quarter of the work.
+  // Neighbours every this many pixels across the window, at multiples of it (1: all of them). The
+  // subsurface light's takes every second: offsets -14 ... 14, a 29 x 29 window of 225 neighbours,
+  // a quarter of the full 31 x 31's work for nearly its error (0.0543 against 0.0521 on the crop).
   int windowStep = 1;
   int subsurfaceWindowStep = 2;
   int patchRadius = 3;   // 7 x 7 patches for the colour distance
