@@ -139,7 +139,7 @@ PathIntegrator::PathIntegrator(const Frame& frame, const EmbreeScene& scene, con
   bsdfs_.reserve(frame.materials.size());
   for (const Material& material : frame.materials) bsdfs_.push_back(makeBsdf(material.params));
   subsurface_.resize(frame.materials.size());
-  for (size_t id = 0; id < frame.materials.size(); ++id) subsurface_[id] = makeSubsurfaceSkin(frame.materials[id].params);
+  for (size_t id = 0; id < frame.materials.size(); ++id) subsurface_[id] = makeSubsurfaceSkin(frame.materials[id]);
   media_.reserve(frame.materials.size());
   for (const Material& material : frame.materials) {
     media_.push_back(dielectricMedium(material.params));
@@ -382,6 +382,8 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
   BounceCounter bounces(frame_.settings.bounces);
   // A bounce limit was passed: this segment gathers the light it meets, then the path ends.
   bool lastSegment = false;
+  // The path has scattered diffusely (a Lambertian lobe or a subsurface exit's) at least once.
+  bool diffuseAncestor = false;
 
   for (int depth = 0;; ++depth) {
     SurfaceHit hit;
@@ -413,7 +415,14 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
       break;
     }
 
-    const Material& material = frame_.materials[hit.materialId];
+    // Subsurface skin met after a diffuse bounce shades with its Lambertian base instead (as
+    // Cycles does, svm_closure.h: "can't see it well then and adds considerably noise"): light
+    // that has scattered diffusely once no longer shows the skin's blur of a millimetre, and each
+    // probe there costs a ray query, a second light sample and the noise of its weight.
+    const SubsurfaceSkin* subsurface = subsurface_[hit.materialId] ? &*subsurface_[hit.materialId] : nullptr;
+    const bool skinAsDiffuse = subsurface && diffuseAncestor;
+    if (skinAsDiffuse) subsurface = nullptr;
+    const Material& material = skinAsDiffuse ? subsurface_[hit.materialId]->asDiffuse : frame_.materials[hit.materialId];
     pathLength += hit.distance - ray.tnear;
     Vertex v;
     v.position = hit.position;
@@ -426,7 +435,7 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
     const bool frontFacing = v.wo.dot(ng) > 0.0f;
     v.entering = frontFacing;
     v.thinSheet = isThinSheet(hit);
-    v.bsdf = bsdfs_[hit.materialId].get();
+    v.bsdf = skinAsDiffuse ? subsurface_[hit.materialId]->asDiffuseBsdf.get() : bsdfs_[hit.materialId].get();
     if (v.thinSheet)
       v.bsdf = thinSheetBsdfs_[hit.materialId].get();
     else if (nested_ && isDielectric(hit.materialId))
@@ -466,8 +475,8 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
       paths.afterFirstBounce(throughput * direct.radiance, false);
     else if (paths.active() && (direct.radiance != 0.0f).any())  // lobes only where light arrived
       paths.firstVertexDirect(throughput * direct.radiance, v.bsdf->evalLobes(v.woLocal, direct.wiLocal));
-    if (subsurface_[hit.materialId]) {  // skin with subsurface: v.bsdf's lobes or a random walk
-      const SubsurfaceSkin& skin = *subsurface_[hit.materialId];
+    if (subsurface) {  // skin with subsurface: v.bsdf's lobes or a random walk
+      const SubsurfaceSkin& skin = *subsurface;
       // A textured skin scatters below with its textured albedo and mean free path.
       const SkinParams& beneath = textured.skin ? *textured.skin : skin.params;
       const SkinBsdf& surface = textured.skin ? std::get<SkinBsdf>(textured.bsdf) : *skin.bsdf;
@@ -522,6 +531,7 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
     } else {
       chainAfterNonSpecular = false;  // a mirror bounce: shadow rays never follow it
     }
+    if (!bs->specular && !bs->glossy && !bs->transmitted) diffuseAncestor = true;
     previousSpecular = bs->specular;
     previousBsdfPdf = bs->pdf;
     previousPosition = hit.position;
@@ -548,11 +558,14 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
 // (wet), else the exit, weighted 1 / (1 - pB). Each branch divides by its probability, so the sum
 // is unbiased, and the light found by the continuation pairs with the NEE of its own vertex by MIS
 // as before.
-std::optional<PathIntegrator::SubsurfaceSkin> PathIntegrator::makeSubsurfaceSkin(const MaterialParams& params) {
-  const auto* skin = std::get_if<SkinParams>(&params);
+std::optional<PathIntegrator::SubsurfaceSkin> PathIntegrator::makeSubsurfaceSkin(const Material& material) {
+  const auto* skin = std::get_if<SkinParams>(&material.params);
   if (!skin || !skin->subsurface) return std::nullopt;
-  return SubsurfaceSkin{*skin, std::make_shared<SkinBsdf>(*skin),
-                        std::make_shared<SubsurfaceExitBsdf>(skin->ior), skin->ior};
+  Material asDiffuse = material;
+  std::get<SkinParams>(asDiffuse.params).subsurface.reset();
+  std::shared_ptr<const Bsdf> asDiffuseBsdf = makeBsdf(asDiffuse.params);
+  return SubsurfaceSkin{*skin,        std::make_shared<SkinBsdf>(*skin), std::make_shared<SubsurfaceExitBsdf>(skin->ior),
+                        skin->ior,    std::move(asDiffuse),              std::move(asDiffuseBsdf)};
 }
 
 PathIntegrator::Below PathIntegrator::scatterBelowSurface(const SubsurfaceSkin& skin, const SkinParams& below,

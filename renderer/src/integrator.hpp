@@ -110,9 +110,13 @@ class PathIntegrator {
     std::shared_ptr<const SkinBsdf> bsdf;  // for the specular/walk split
     std::shared_ptr<const Bsdf> exitBsdf;
     float ior;
+    // The same skin with its Lambertian base instead of subsurface, and its BSDF: what a path
+    // sees after a diffuse bounce (PathIntegrator::radiance says why).
+    Material asDiffuse;
+    std::shared_ptr<const Bsdf> asDiffuseBsdf;
   };
   struct Below;  // defined below, after Vertex
-  static std::optional<SubsurfaceSkin> makeSubsurfaceSkin(const MaterialParams& params);
+  static std::optional<SubsurfaceSkin> makeSubsurfaceSkin(const Material& material);
   // Finds the exit below the skin, dry or under a film (a random walk or a diffusion-profile probe,
   // SubsurfaceParams::method) for every sample, so the light through the skin is never left to a
   // coin toss, then picks how the path goes on: v.bsdf's lobes with probability pSurface, else

@@ -348,5 +348,40 @@ TEST(SubsurfaceDiffusion, OneAndTwoThreadsGiveBitwiseEqualFilms) {
   test::expectThreadCountIndependent(litSubsurfaceSphere(SubsurfaceMethod::Diffusion));
 }
 
+// A white diffuse sphere on a floor of subsurface skin, under a uniform sky, with the camera close
+// enough that every pixel sees the sphere: the skin is met only after a diffuse bounce, where it
+// shades with its Lambertian base (integrator.cpp, PathIntegrator::radiance). The film is then the
+// one rendered with the same skin without subsurface, bitwise (both draw the same numbers), and not
+// the one without a floor (the floor's light is in it). Seen directly, the subsurface skin differs.
+Frame sphereOnSkinFloor(const SkinParams& skin, bool floor) {
+  Frame frame;
+  frame.materials.push_back(Material{"white", DiffuseParams{Color::Constant(0.8f)}, Color::Zero()});
+  frame.materials.push_back(Material{"skin", skin, Color::Zero()});
+  frame.spheres.push_back(Sphere{Vec3(0, 0.5f, 0), 0.5f, 0});
+  if (floor) addBox(frame, 5.0f, 1.0f, 1);
+  frame.uniformBackground = Color::Ones();
+  frame.camera = lookAt(Vec3(0, 0.5f, 3), Vec3(0, 0.5f, 0), 8.0f);
+  frame.settings = smallSettings(12, 8, 6);
+  return frame;
+}
+
+TEST(SubsurfaceDiffusion, SkinMetAfterADiffuseBounceShadesWithItsLambertianBase) {
+  SkinParams subsurface = withDiffusion(indexMatchedSubsurfaceSkin(Color(0.56f, 0.37f, 0.29f), Color(0.02f, 0.01f, 0.005f)));
+  subsurface.ior = 1.4f;
+  SkinParams lambertian = subsurface;
+  lambertian.subsurface.reset();
+  const Film withSubsurface = renderFrame(sphereOnSkinFloor(subsurface, true));
+  const Film withLambertian = renderFrame(sphereOnSkinFloor(lambertian, true));
+  const Film withoutFloor = renderFrame(sphereOnSkinFloor(lambertian, false));
+  EXPECT_EQ(withSubsurface.rgba, withLambertian.rgba);
+  EXPECT_NE(withLambertian.rgba, withoutFloor.rgba) << "the floor's light must be in the film";
+  // Seen directly (the camera looks down at the floor beside the sphere), the skin scatters below.
+  Frame direct = sphereOnSkinFloor(subsurface, true);
+  direct.camera = lookAt(Vec3(2, 2, 2), Vec3(2, 0, 1), 20.0f);
+  Frame directLambertian = direct;
+  directLambertian.materials[1].params = lambertian;
+  EXPECT_NE(renderFrame(direct).rgba, renderFrame(directLambertian).rgba);
+}
+
 }  // namespace subsurface_test
 }  // namespace lacrima
