@@ -12,6 +12,10 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <utility>
+#include <vector>
+
+#include "lacrima/geometry/sampler.hpp"
 
 namespace lacrima {
 
@@ -158,6 +162,29 @@ struct NormalEquations {
 
 constexpr float kRangeWeight = 0.05f;
 
+// The neighbours' offsets in a window of `radius` taking one of every step x step pixels: one
+// offset in each step x step cell of a lattice centred on the pixel (the centre cell's is (0, 0):
+// the pixel itself is always among them), at a fixed pseudo-random place in its cell (a jittered
+// grid). On a plain lattice (every step-th pixel) the pixels of one residue class modulo the step
+// average the same neighbours' noise, which showed as a faint grid of period `step` in the
+// denoised skin at 1:1; the jitter leaves no period.
+std::vector<std::pair<int, int>> windowOffsets(int radius, int step) {
+  std::vector<std::pair<int, int>> offsets;
+  const int cells = radius / step;  // cells each side of the centre one
+  const auto jitter = [&](int i, int j, int axis) {
+    if (i == 0 && j == 0) return 0;
+    const uint64_t h = hashCombine(hashCombine(uint64_t(i + 1024), uint64_t(j + 1024)), uint64_t(axis));
+    return int(mix64(h) % uint64_t(step)) - step / 2;
+  };
+  for (int j = -cells; j <= cells; ++j)
+    for (int i = -cells; i <= cells; ++i) {
+      const int dx = std::clamp(i * step + jitter(i, j, 0), -radius, radius);
+      const int dy = std::clamp(j * step + jitter(i, j, 1), -radius, radius);
+      offsets.emplace_back(dx, dy);
+    }
+  return offsets;
+}
+
 class HalfFilter {
  public:
   HalfFilter(const DenoiseInput& in, const std::vector<float>& values, const std::vector<float>& guide,
@@ -171,20 +198,17 @@ class HalfFilter {
     const float k2 = s_.bandwidth * s_.bandwidth;
     std::vector<NormalEquations> sums(size_t(y1 - y0) * w);
     std::vector<float> term(size_t(bottom - top) * w);
-    // Offsets that are multiples of the step, so the pixel itself (0, 0) is always among them.
-    const int step = std::max(1, s_.windowStep), first = -(r / step) * step;
-    for (int dy = first; dy <= r; dy += step)
-      for (int dx = first; dx <= r; dx += step) {
-        distanceTerms(top, bottom, dx, dy, term);
-        const std::vector<float> distance = boxMean(term, w, bottom - top, 1, f);
-        for (int y = y0; y < y1; ++y)
-          for (int x = 0; x < w; ++x) {
-            const int qx = x + dx, qy = y + dy;
-            if (qx < 0 || qy < 0 || qx >= w || qy >= in_.height) continue;
-            const float weight = std::exp(-std::max(0.0f, distance[size_t(y - top) * w + x]) / k2);
-            if (weight >= 1e-6f) accumulate(sums[size_t(y - y0) * w + x], x, y, qx, qy, weight);
-          }
-      }
+    for (const auto& [dx, dy] : windowOffsets(r, std::max(1, s_.windowStep))) {
+      distanceTerms(top, bottom, dx, dy, term);
+      const std::vector<float> distance = boxMean(term, w, bottom - top, 1, f);
+      for (int y = y0; y < y1; ++y)
+        for (int x = 0; x < w; ++x) {
+          const int qx = x + dx, qy = y + dy;
+          if (qx < 0 || qy < 0 || qx >= w || qy >= in_.height) continue;
+          const float weight = std::exp(-std::max(0.0f, distance[size_t(y - top) * w + x]) / k2);
+          if (weight >= 1e-6f) accumulate(sums[size_t(y - y0) * w + x], x, y, qx, qy, weight);
+        }
+    }
     for (int y = y0; y < y1; ++y)
       for (int x = 0; x < w; ++x) solve(sums[size_t(y - y0) * w + x], &out[3 * (size_t(y) * w + x)]);
   }
