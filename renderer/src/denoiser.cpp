@@ -165,9 +165,9 @@ constexpr float kRangeWeight = 0.05f;
 // The neighbours' offsets in a window of `radius` taking one of every step x step pixels: one
 // offset in each step x step cell of a lattice centred on the pixel (the centre cell's is (0, 0):
 // the pixel itself is always among them), at a fixed pseudo-random place in its cell (a jittered
-// grid). On a plain lattice (every step-th pixel) the pixels of one residue class modulo the step
-// average the same neighbours' noise, which showed as a faint grid of period `step` in the
-// denoised skin at 1:1; the jitter leaves no period.
+// grid, Cook 1986). On a plain lattice (every step-th pixel) the pixels of one residue class
+// modulo the step average the same neighbours' noise, which showed as a faint grid of period
+// `step` in the denoised skin at 1:1; the jitter leaves no period.
 std::vector<std::pair<int, int>> windowOffsets(int radius, int step) {
   std::vector<std::pair<int, int>> offsets;
   const int cells = radius / step;  // cells each side of the centre one
