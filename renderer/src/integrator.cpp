@@ -285,8 +285,11 @@ PathIntegrator::DirectLight PathIntegrator::sampleDirectLight(const Vertex& v, c
               : Color::Ones();
   if ((transmittance <= 0.0f).all()) return {};
   // Through a dielectric, only this strategy counts the path (the BSDF strategy drops it, see
-  // radiance()), so it takes the full weight.
-  const float weight = crossedDielectric ? 1.0f : powerHeuristic(light.pdf, v.bsdf->pdf(v.woLocal, wiLocal));
+  // radiance()), so it takes the full weight. The BSDF strategy's density counts how likely the
+  // path is to sample v.bsdf at all (Vertex::bsdfSamplingProbability).
+  const float weight =
+      crossedDielectric ? 1.0f
+                        : powerHeuristic(light.pdf, v.bsdfSamplingProbability * v.bsdf->pdf(v.woLocal, wiLocal));
   direct.radiance = f * light.radiance * transmittance * (weight / light.pdf);
   return direct;
 }
@@ -467,6 +470,18 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
     }
     if (depth >= maxDepth_ || lastSegment) break;
 
+    // Subsurface skin: the path goes on by v.bsdf's lobes with probability pSurface, else from the
+    // exit below (scatterBelowSurface); the light samples' MIS weights count that probability in
+    // the BSDF technique's density (Vertex::bsdfSamplingProbability). Without it, light that the
+    // specular lobes find by sampling counted 1 / pSurface times (~10x) where it was found: the
+    // skin's specular sheen had 2.8x the noise of the Lambertian skin's, at the same mean.
+    const SkinParams* beneath = nullptr;  // the skin below: its own, or a textured hit's (TexturedHit)
+    const SkinBsdf* surface = nullptr;
+    if (subsurface) {
+      beneath = textured.skin ? &*textured.skin : &subsurface->params;
+      surface = textured.skin ? &std::get<SkinBsdf>(textured.bsdf) : subsurface->bsdf.get();
+      v.bsdfSamplingProbability = surfaceProbability(*surface, wetSkin ? &*wetSkin : nullptr, v);
+    }
     const uint32_t dimensions = sample_dimensions::bounceBase(depth);
     sampler.setDimension(dimensions + sample_dimensions::kLight);
     const DirectLight direct = sampleDirectLight(v, media, sampler, counters);
@@ -476,13 +491,9 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
     else if (paths.active() && (direct.radiance != 0.0f).any())  // lobes only where light arrived
       paths.firstVertexDirect(throughput * direct.radiance, v.bsdf->evalLobes(v.woLocal, direct.wiLocal));
     if (subsurface) {  // skin with subsurface: v.bsdf's lobes or a random walk
-      const SubsurfaceSkin& skin = *subsurface;
-      // A textured skin scatters below with its textured albedo and mean free path.
-      const SkinParams& beneath = textured.skin ? *textured.skin : skin.params;
-      const SkinBsdf& surface = textured.skin ? std::get<SkinBsdf>(textured.bsdf) : *skin.bsdf;
       sampler.setDimension(dimensions + sample_dimensions::kSubsurfaceChoice);
-      const Below below =
-          scatterBelowSurface(skin, beneath, surface, wetSkin ? &*wetSkin : nullptr, v, sampler, counters);
+      const Below below = scatterBelowSurface(*subsurface, *beneath, *surface, wetSkin ? &*wetSkin : nullptr, v,
+                                              v.bsdfSamplingProbability, sampler, counters);
       if (below.exit) {  // the light that leaves at the exit, whichever way the path goes on
         sampler.setDimension(dimensions + sample_dimensions::kExitLight);
         const DirectLight exitDirect = sampleDirectLight(*below.exit, media, sampler, counters);
@@ -533,7 +544,7 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
     }
     if (!bs->specular && !bs->glossy && !bs->transmitted) diffuseAncestor = true;
     previousSpecular = bs->specular;
-    previousBsdfPdf = bs->pdf;
+    previousBsdfPdf = bs->pdf * v.bsdfSamplingProbability;
     previousPosition = hit.position;
     ray = v.thinSheet && bs->transmitted ? pastThinSheet(ray, hit.rayDistance) : Ray{offsetOrigin(hit.position, ng, wi), wi, ray.time};
 
@@ -568,13 +579,17 @@ std::optional<PathIntegrator::SubsurfaceSkin> PathIntegrator::makeSubsurfaceSkin
                         skin->ior,    std::move(asDiffuse),              std::move(asDiffuseBsdf)};
 }
 
+float PathIntegrator::surfaceProbability(const SkinBsdf& surface, const WetSkinBsdf* wet, const Vertex& v) {
+  const float pBelow = wet ? wet->belowProbability(v.woLocal) : 1.0f - surface.specularProbability(v.woLocal);
+  return 1.0f - pBelow;
+}
+
 PathIntegrator::Below PathIntegrator::scatterBelowSurface(const SubsurfaceSkin& skin, const SkinParams& below,
                                                           const SkinBsdf& surface, const WetSkinBsdf* wet,
-                                                          const Vertex& v, PixelSampler& sampler,
+                                                          const Vertex& v, float pSurface, PixelSampler& sampler,
                                                           PathCounters& counters) const {
   Below result;
-  const float pBelow = wet ? wet->belowProbability(v.woLocal) : 1.0f - surface.specularProbability(v.woLocal);
-  result.pSurface = 1.0f - pBelow;
+  result.pSurface = pSurface;
   // The walk's independent stream is keyed by the dimension just past the choice's first.
   const uint32_t walkStream = sampler.dimension() + 1;
   // One stratified 4D block: the choice (and, rescaled, the probe's radius), then the probe's
@@ -602,6 +617,7 @@ PathIntegrator::Below PathIntegrator::scatterBelowSurface(const SubsurfaceSkin& 
   out.woLocal = Vec3(0.0f, 0.0f, 1.0f);
   out.bsdf = skin.exitBsdf.get();
   out.entering = true;
+  out.bsdfSamplingProbability = 1.0f - pSurface;  // the path goes on from the exit otherwise
   return result;
 }
 

@@ -123,8 +123,11 @@ class PathIntegrator {
   // from the exit. below and surface: skin's own, or those of a textured hit (TexturedHit); wet:
   // the hit's wet skin (v.bsdf) under a tear film, else null.
   Below scatterBelowSurface(const SubsurfaceSkin& skin, const SkinParams& below, const SkinBsdf& surface,
-                            const WetSkinBsdf* wet, const Vertex& v, PixelSampler& sampler,
+                            const WetSkinBsdf* wet, const Vertex& v, float pSurface, PixelSampler& sampler,
                             PathCounters& counters) const;
+  // The probability that the path goes on by the skin's own lobes (v.bsdf) rather than from the
+  // exit below: the specular lobes' share at wo (dry), or the film's and the skin's (wet).
+  static float surfaceProbability(const SkinBsdf& surface, const WetSkinBsdf* wet, const Vertex& v);
   // Where light that entered at v leaves the skin `below`, by its method: the probe with the
   // stratified numbers `probe`, the walk with as many numbers of `walkStream` (an independent
   // stream) as it takes steps.
@@ -166,6 +169,10 @@ struct PathIntegrator::Vertex {
   Vec3 woLocal;
   const Bsdf* bsdf;
   float time;            // shutter time of the path
+  // The probability that the path goes on by sampling bsdf here: 1, but on subsurface skin the
+  // specular lobes' share at the entry and the rest at the exit (PathIntegrator::Below). The BSDF
+  // technique's density is this times the BSDF's pdf, and MIS weighs the light samples with it.
+  float bsdfSamplingProbability = 1.0f;
 };
 
 // What happened below the skin at one hit: where the light that entered there leaves (none when
