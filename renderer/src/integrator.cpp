@@ -472,7 +472,8 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
 
     // Subsurface skin: the path goes on by v.bsdf's lobes with probability pSurface, else from the
     // exit below (scatterBelowSurface); the light samples' MIS weights count that probability in
-    // the BSDF technique's density (Vertex::bsdfSamplingProbability). Without it, light that the
+    // the BSDF technique's density (Vertex::bsdfSamplingProbability; Veach 1997, section 9.2: a
+    // technique's density is that of the samples it actually draws). Without it, light that the
     // specular lobes find by sampling counted 1 / pSurface times (~10x) where it was found: the
     // skin's specular sheen had 2.8x the noise of the Lambertian skin's, at the same mean.
     const SkinParams* beneath = nullptr;  // the skin below: its own, or a textured hit's (TexturedHit)
