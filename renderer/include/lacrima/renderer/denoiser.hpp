@@ -60,13 +60,15 @@ struct DenoiseSettings {
   // 0.0529, 21 x 21 0.0643 / 0.0692 / 0.0461, 31 x 31 0.0557 / 0.0602 / 0.0424; a full 31 x 31
   // costs ~5x the 13 x 13 pass.
   int subsurfaceWindowRadius = 28;
-  // Neighbours every this many pixels across the window, at multiples of it (1: all of them). The
-  // subsurface light's takes every fourth: offsets -28 ... 28, a 57 x 57 window of 225 neighbours.
-  // Same work, wider or denser, on the crop at 8 / 16 spp (FLIP crop, skin): 29 x 29 every 2nd
-  // 0.0541, 0.0286 / 0.0438, 0.0211; 43 x 43 every 3rd 0.0498, 0.0261 / 0.0413, 0.0201; 57 x 57
-  // every 4th 0.0488, 0.0252 / 0.0413, 0.0200; 71 x 71 every 5th 0.0492, 0.0251 / 0.0422, 0.0199;
-  // 85 x 85 every 6th 0.0503, 0.0247 / 0.0434, 0.0203. (61 x 61 every 3rd, twice the work: 0.0469,
-  // 0.0241 / 0.0405, 0.0196.)
+  // One neighbour in each step x step cell of the window, at a fixed jittered place in the cell
+  // (the pixel's own cell takes the pixel; 1: every neighbour). The subsurface light's: 4, over
+  // 57 x 57, 225 neighbours. Same work, wider or denser, as lattices (every step-th pixel), on the
+  // crop at 8 / 16 spp (FLIP crop, skin): 29 x 29 every 2nd 0.0541, 0.0286 / 0.0438, 0.0211;
+  // 43 x 43 every 3rd 0.0498, 0.0261 / 0.0413, 0.0201; 57 x 57 every 4th 0.0488, 0.0252 / 0.0413,
+  // 0.0200; 71 x 71 every 5th 0.0492, 0.0251 / 0.0422, 0.0199; 85 x 85 every 6th 0.0503, 0.0247 /
+  // 0.0434, 0.0203 (61 x 61 every 3rd, twice the work: 0.0469, 0.0241 / 0.0405, 0.0196). A lattice
+  // leaves a grid of its period in the denoised image; jittered, 57 x 57: 0.0500, 0.0255 / 0.0421,
+  // 0.0200, no grid (docs/denoising.md, "A wider window, jittered").
   int windowStep = 1;
   int subsurfaceWindowStep = 4;
   int patchRadius = 3;   // 7 x 7 patches for the colour distance
