@@ -189,16 +189,22 @@ class HalfFilter {
  public:
   HalfFilter(const DenoiseInput& in, const std::vector<float>& values, const std::vector<float>& guide,
              const std::vector<float>& variance, const std::vector<float>& features, const DenoiseSettings& s)
-      : in_(in), values_(values), guide_(guide), variance_(variance), features_(features), s_(s) {}
+      : in_(in),
+        values_(values),
+        guide_(guide),
+        variance_(variance),
+        features_(features),
+        s_(s),
+        offsets_(windowOffsets(s.windowRadius, std::max(1, s.windowStep))) {}
 
   // The filtered rows [y0, y1) into out (3 floats a pixel, whole image).
   void filterBand(int y0, int y1, std::vector<float>& out) const {
-    const int w = in_.width, r = s_.windowRadius, f = s_.patchRadius;
+    const int w = in_.width, f = s_.patchRadius;
     const int top = std::max(0, y0 - f), bottom = std::min(in_.height, y1 + f);  // rows with patch halo
     const float k2 = s_.bandwidth * s_.bandwidth;
     std::vector<NormalEquations> sums(size_t(y1 - y0) * w);
     std::vector<float> term(size_t(bottom - top) * w);
-    for (const auto& [dx, dy] : windowOffsets(r, std::max(1, s_.windowStep))) {
+    for (const auto& [dx, dy] : offsets_) {
       distanceTerms(top, bottom, dx, dy, term);
       const std::vector<float> distance = boxMean(term, w, bottom - top, 1, f);
       for (int y = y0; y < y1; ++y)
@@ -281,6 +287,7 @@ class HalfFilter {
   const std::vector<float>& variance_;
   const std::vector<float>& features_;
   const DenoiseSettings& s_;
+  const std::vector<std::pair<int, int>> offsets_;  // the window's neighbours (windowOffsets), once for every band
 };
 
 void checkInput(const DenoiseInput& in) {

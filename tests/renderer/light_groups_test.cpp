@@ -38,17 +38,10 @@ Frame keyAndFill(float keyRadiance = 5.0f) {
 }
 
 const FilmLayer& layerNamed(const Film& film, const std::string& group) {
-  for (const FilmLayer& layer : film.layers)
-    if (layer.channels.front() == lightGroupLayer(group) + ".R") return layer;
-  ADD_FAILURE() << "no layer of group " << group;
-  return film.layers.front();
+  return test::rgbLayer(film, lightGroupLayer(group));
 }
 
-double layerMean(const FilmLayer& layer, int channel) {
-  double sum = 0.0;
-  for (size_t i = size_t(channel); i < layer.data.size(); i += 3) sum += layer.data[i];
-  return sum / double(layer.data.size() / 3);
-}
+double layerMean(const FilmLayer& layer, int channel) { return test::rgbLayerMean(layer, channel); }
 
 TEST(LightGroups, EachGroupHasALayerAndTheyAddUpToTheBeauty) {
   const Frame frame = keyAndFill();

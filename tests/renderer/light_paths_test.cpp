@@ -54,18 +54,9 @@ Frame everyKindOfLight() {
   return frame;
 }
 
-const FilmLayer& passLayer(const Film& film, LightPath pass) {
-  for (const FilmLayer& layer : film.layers)
-    if (layer.channels.front() == lightPathName(pass) + ".R") return layer;
-  ADD_FAILURE() << "no layer " << lightPathName(pass);
-  return film.layers.front();
-}
+const FilmLayer& passLayer(const Film& film, LightPath pass) { return test::rgbLayer(film, lightPathName(pass)); }
 
-double layerMean(const FilmLayer& layer, int channel) {
-  double sum = 0.0;
-  for (size_t i = size_t(channel); i < layer.data.size(); i += 3) sum += layer.data[i];
-  return sum / double(layer.data.size() / 3);
-}
+double layerMean(const FilmLayer& layer, int channel) { return test::rgbLayerMean(layer, channel); }
 
 // A film whose beauty is one pass's layer (for the statistical mean checks).
 Film filmOfPass(const Film& film, LightPath pass) {

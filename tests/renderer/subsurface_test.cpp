@@ -403,13 +403,6 @@ Frame skinUnderItsReflectedLight(const SkinParams& skin, uint64_t seed) {
   return frame;
 }
 
-const FilmLayer& specularDirectLayer(const Film& film) {
-  for (const FilmLayer& layer : film.layers)
-    if (layer.channels.front() == lightPathName(LightPath::SpecularDirect) + ".R") return layer;
-  ADD_FAILURE() << "no specular_direct layer";
-  return film.layers.front();
-}
-
 // The mean of the specular_direct pass over two renders (seeds 1 and 2), and its per-render noise:
 // the RMS of their difference over sqrt(2).
 struct PassEstimate {
@@ -417,8 +410,8 @@ struct PassEstimate {
 };
 PassEstimate specularDirectOf(const SkinParams& skin) {
   const Film a = renderFrame(skinUnderItsReflectedLight(skin, 1)), b = renderFrame(skinUnderItsReflectedLight(skin, 2));
-  const std::vector<float>& x = specularDirectLayer(a).data;
-  const std::vector<float>& y = specularDirectLayer(b).data;
+  const std::vector<float>& x = test::rgbLayer(a, lightPathName(LightPath::SpecularDirect)).data;
+  const std::vector<float>& y = test::rgbLayer(b, lightPathName(LightPath::SpecularDirect)).data;
   double sum = 0.0, squares = 0.0;
   for (size_t i = 0; i < x.size(); ++i) sum += 0.5 * (x[i] + y[i]), squares += (x[i] - y[i]) * double(x[i] - y[i]);
   return {sum / double(x.size()), std::sqrt(squares / double(x.size()) / 2.0)};

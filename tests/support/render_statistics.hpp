@@ -1,11 +1,29 @@
 #pragma once
 // Helpers for statistical render tests: mean and standard error of pixel values.
+#include <gtest/gtest.h>
+
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "lacrima/renderer/film.hpp"
 
 namespace lacrima::test {
+
+// The film's RGB layer whose channels are "<name>.R/G/B" (a light path's, a light group's layer).
+inline const FilmLayer& rgbLayer(const Film& film, const std::string& name) {
+  for (const FilmLayer& layer : film.layers)
+    if (layer.channels.front() == name + ".R") return layer;
+  ADD_FAILURE() << "no layer " << name;
+  return film.layers.front();
+}
+
+// Mean of one channel of an RGB layer over its pixels.
+inline double rgbLayerMean(const FilmLayer& layer, int channel) {
+  double sum = 0.0;
+  for (size_t i = size_t(channel); i < layer.data.size(); i += 3) sum += layer.data[i];
+  return sum / double(layer.data.size() / 3);
+}
 
 struct MeanEstimate {
   double mean = 0.0;
