@@ -110,24 +110,37 @@ void suppressFireflies(int width, int height, std::vector<float>& halfA, std::ve
   }
 }
 
-// The variance of one half buffer's estimate, per channel. Two independent estimates a and b of
-// the same mean have sample variance (a - b)^2 / 2: one degree of freedom, so averaged over a 5 x 5
+// The variance of each half buffer's estimate, per channel. Two independent estimates a and b of
+// the same mean, over shares f and 1 - f of n samples, differ by (a - b)^2 = D on average, D =
+// sigma^2 / n (1 / f + 1 / (1 - f)) = sigma^2 / (n f (1 - f)): so a's variance is D (1 - f) and b's
+// D f (D / 2 each for equal halves). One degree of freedom a pixel, so D is averaged over a 5 x 5
 // box. Under stratified sampling it is the right measure (each half is stratified), where the
 // samples' own variance over their count overestimates the error many times and would let the
 // filter blur what it takes for noise. The box spreads a catchlight's or a firefly's large
 // difference onto its neighbours, though, which would then average the catchlight in: where the
-// samples' variance (given per pixel) is lower, it is taken instead.
-std::vector<float> halfBufferVariance(const DenoiseInput& in, const std::vector<float>& halfA,
-                                      const std::vector<float>& halfB, const std::vector<float>& samplesVariance) {
-  std::vector<float> variance(halfA.size());
-  for (size_t i = 0; i < variance.size(); ++i) {
+// samples' variance (given per pixel, for halves of n / 2) is lower, it is taken instead.
+struct HalfVariances {
+  std::vector<float> a, b;
+};
+
+HalfVariances halfBufferVariances(const DenoiseInput& in, const std::vector<float>& halfA,
+                                  const std::vector<float>& halfB, const std::vector<float>& samplesVariance) {
+  std::vector<float> difference(halfA.size());
+  for (size_t i = 0; i < difference.size(); ++i) {
     const float d = halfA[i] - halfB[i];
-    variance[i] = 0.5f * d * d;
+    difference[i] = d * d;
   }
-  variance = boxMean(variance, in.width, in.height, 3, 2);
-  if (!samplesVariance.empty())
-    for (size_t i = 0; i < variance.size(); ++i) variance[i] = std::min(variance[i], samplesVariance[i]);
-  return variance;
+  difference = boxMean(difference, in.width, in.height, 3, 2);
+  HalfVariances v{std::vector<float>(halfA.size()), std::vector<float>(halfA.size())};
+  for (size_t i = 0; i < difference.size(); ++i) {
+    const float share = in.firstHalfShare.empty() ? 0.5f : in.firstHalfShare[i / 3];
+    v.a[i] = difference[i] * (1.0f - share);
+    v.b[i] = difference[i] * share;
+    if (samplesVariance.empty()) continue;
+    v.a[i] = std::min(v.a[i], samplesVariance[i] * (0.5f / share));
+    v.b[i] = std::min(v.b[i], samplesVariance[i] * (0.5f / (1.0f - share)));
+  }
+  return v;
 }
 
 // The regression's features a pixel: albedo, normal, and inverse depth over its mean (0 where
@@ -296,18 +309,23 @@ void checkInput(const DenoiseInput& in) {
       !(in.variance.empty() || in.variance.size() == 3 * n) ||
       !(in.subsurfaceA.empty() || (in.subsurfaceA.size() == 3 * n && in.subsurfaceB.size() == 3 * n &&
                                    in.subsurfaceVariance.size() == 3 * n)) ||
-      in.albedo.size() != 3 * n || in.normal.size() != 3 * n || in.depth.size() != n)
+      !(in.firstHalfShare.empty() || in.firstHalfShare.size() == n) || in.albedo.size() != 3 * n ||
+      in.normal.size() != 3 * n || in.depth.size() != n)
     throw std::invalid_argument("denoise: the half buffers and features do not match the image size");
+  for (const float share : in.firstHalfShare)
+    if (!(share > 0.0f && share < 1.0f))
+      throw std::invalid_argument("denoise: a half buffer's share of the samples must lie strictly between 0 and 1");
 }
 
-// Both halves filtered, each with the other's weights (cross-filtering), and averaged.
+// Both halves filtered, each with the other's weights (cross-filtering), and averaged, each in
+// proportion to its share of the samples (the inverse of its variance).
 std::vector<float> filterHalves(const DenoiseInput& in, const std::vector<float>& halfA, const std::vector<float>& halfB,
                                 const std::vector<float>& samplesVariance, const std::vector<float>& features,
                                 const DenoiseSettings& settings) {
-  const std::vector<float> variance = halfBufferVariance(in, halfA, halfB, samplesVariance);
-  // A with B's weights, B with A's; the same variance serves both (it is symmetric in a and b).
-  const HalfFilter filterA(in, halfA, halfB, variance, features, settings);
-  const HalfFilter filterB(in, halfB, halfA, variance, features, settings);
+  const HalfVariances variance = halfBufferVariances(in, halfA, halfB, samplesVariance);
+  // A with B's weights, B with A's: the weights' distances are the guide's, so its variance.
+  const HalfFilter filterA(in, halfA, halfB, variance.b, features, settings);
+  const HalfFilter filterB(in, halfB, halfA, variance.a, features, settings);
   std::vector<float> a(halfA.size()), b(halfB.size());
   const int bands = (in.height + kBandRows - 1) / kBandRows;
   tbb::parallel_for(tbb::blocked_range<int>(0, 2 * bands, 1), [&](const tbb::blocked_range<int>& range) {
@@ -318,7 +336,10 @@ std::vector<float> filterHalves(const DenoiseInput& in, const std::vector<float>
       else filterB.filterBand(y0, y1, b);
     }
   });
-  for (size_t i = 0; i < a.size(); ++i) a[i] = 0.5f * (a[i] + b[i]);
+  for (size_t i = 0; i < a.size(); ++i) {
+    const float share = in.firstHalfShare.empty() ? 0.5f : in.firstHalfShare[i / 3];
+    a[i] = share * a[i] + (1.0f - share) * b[i];
+  }
   return a;
 }
 

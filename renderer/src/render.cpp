@@ -227,7 +227,10 @@ class TileRenderer {
     storeRanks(objects_, sum.objectIds, p, sum.weight);
     storeRanks(materials_, sum.materialIds, p, sum.weight);
     if (halves_) {
-      storeHalves(p, pixelHalves(sum), halfMeanVariance(sum), halves_->halfA, halves_->halfB, halves_->variance);
+      const PixelHalves halves = pixelHalves(sum);
+      // Under 2 samples both halves are the one sample: any share will do.
+      halves_->firstHalfShare[p] = sum.samples >= 2 ? float(halves.firstSamples) / float(sum.samples) : 0.5f;
+      storeHalves(p, halves, halfMeanVariance(sum), halves_->halfA, halves_->halfB, halves_->variance);
       if (splitSubsurface_)
         storeHalves(p, subsurfaceHalves(sum), subsurfaceHalfMeanVariance(sum), halves_->subsurfaceA,
                     halves_->subsurfaceB, halves_->subsurfaceVariance);
@@ -485,6 +488,7 @@ Film Renderer::render(const Frame& frame, RenderStats* stats, const ProgressCall
       halves.halfA.assign(pixelCount * 3, 0.0f);
       halves.halfB.assign(pixelCount * 3, 0.0f);
       halves.variance.assign(pixelCount * 3, 0.0f);
+      halves.firstHalfShare.assign(pixelCount, 0.5f);
       if (tiles.splitsSubsurface()) {
         halves.subsurfaceA.assign(pixelCount * 3, 0.0f);
         halves.subsurfaceB.assign(pixelCount * 3, 0.0f);

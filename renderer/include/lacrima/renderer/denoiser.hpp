@@ -35,6 +35,11 @@ struct DenoiseInput {
   // Two independent estimates of each pixel's colour (RGB, 3 floats a pixel), e.g. the means of
   // the first and second halves of its samples.
   std::vector<float> halfA, halfB;
+  // The share of the pixel's samples in halfA (1 a pixel; optional, empty: 1/2 everywhere). The
+  // halves need not be equal: the renderer's first half is the largest power of two below the
+  // sample count, so 12 samples split 8 + 4. Each half's variance and its weight in the result
+  // follow its share.
+  std::vector<float> firstHalfShare;
   // The variance of one half's estimate (3 a pixel) from the samples, their variance over half
   // their count: optional, it bounds the estimate from the halves' difference (denoiser.cpp).
   std::vector<float> variance;
