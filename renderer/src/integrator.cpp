@@ -125,7 +125,7 @@ constexpr int kMaxProbeSurfaces = 256;
 }  // namespace
 
 bool PathIntegrator::countedByTransparentShadows(bool chainAfterNonSpecular, int crossings) const {
-  return frame_.settings.causticsMode() != Caustics::Off && chainAfterNonSpecular && crossings > 0;
+  return frame_.settings.caustics != Caustics::Off && chainAfterNonSpecular && crossings > 0;
 }
 
 PathIntegrator::PathIntegrator(const Frame& frame, const EmbreeScene& scene, const LightSampler& lights)
@@ -274,7 +274,7 @@ PathIntegrator::DirectLight PathIntegrator::sampleDirectLight(const Vertex& v, c
   }
   // MNEE seeds its chain with this straight shadow ray (so a sample whose straight direction
   // is below the surface, f = 0 above, finds no caustic either).
-  if (blocked && frame_.settings.causticsMode() == Caustics::Mnee)
+  if (blocked && frame_.settings.caustics == Caustics::Mnee)
     if (const std::optional<Color> caustic = manifoldDirectLight(v, light, shadowMedia, counters, direct.wiLocal)) {
       direct.radiance = *caustic;
       return direct;
@@ -307,7 +307,7 @@ PathIntegrator::DirectLight PathIntegrator::sampleDirectLight(const Vertex& v, c
 Color PathIntegrator::shadowTransmittance(const Ray& shadowRay, float maxDistance, MediumStack media,
                                           bool& crossedDielectric, PathCounters& counters) const {
   const Vec3& direction = shadowRay.direction;
-  if (frame_.settings.causticsMode() == Caustics::Off) return Color::Zero();
+  if (frame_.settings.caustics == Caustics::Off) return Color::Zero();
   Color transmittance = Color::Ones();
   Vec3 position = shadowRay.origin;
   float remaining = maxDistance;

@@ -317,7 +317,12 @@ class ShotReader {
     if (auto x = o.unsignedInteger("seed")) s.seed = *x;
     if (auto x = o.integer("threads", Range::atLeast(0))) s.threads = int(*x);
     if (auto x = o.boolean("floatOutput")) s.floatOutput = *x;
-    if (auto x = o.boolean("transparentShadows")) s.transparentShadows = *x;
+    // Retired: it only switched the caustics off, which "caustics": "off" says. Named, so an older
+    // shot learns what replaces it rather than that the key is unknown.
+    if (o.has("transparentShadows"))
+      o.error("transparentShadows", "is no longer read: give \"caustics\" instead (\"off\" for false; true was the "
+                                    "default, \"mnee\")",
+              Anchor::Key);
     if (auto x = o.boolean("denoise")) s.denoise = *x;
     readCaustics(o, s);
     readSampler(o, s);
@@ -412,17 +417,11 @@ class ShotReader {
     s.filter = filter;
   }
 
-  // "caustics": "mnee" | "straight" | "off" (docs/shot-format.md, "Caustics"). The older
-  // "transparentShadows": false means "off"; with another explicit mode it is a contradiction.
+  // "caustics": "mnee" | "straight" | "off" (docs/shot-format.md, "Caustics").
   void readCaustics(ObjectReader& o, RenderSettings& s) {
     static constexpr Caustics modes[] = {Caustics::Mnee, Caustics::Straight, Caustics::Off};
     const auto i = readChoice(o, "caustics", kCausticsModes, "caustics mode");
-    if (!i) return;
-    s.caustics = modes[*i];
-    if (!s.transparentShadows && s.caustics != Caustics::Off)
-      o.error("caustics", fmt::format("'{}' contradicts \"transparentShadows\": false (which means \"off\"); give "
-                                      "only \"caustics\"",
-                                      kCausticsModes[*i]));
+    if (i) s.caustics = modes[*i];
   }
 
   // ---- materials ---------------------------------------------------------------------------

@@ -26,8 +26,8 @@ Frame floorUnderWaterBall(bool transparentShadows, int maxDepth) {
   // The camera ray passes 0.89 from the ball's centre (radius 0.5): it sees the floor directly.
   frame.camera = test::lookAt(Vec3(2, 1, 0), Vec3::Zero(), 0.5f);
   frame.settings = test::smallSettings(12, 64, maxDepth);
-  frame.settings.transparentShadows = transparentShadows;
-  frame.settings.caustics = Caustics::Straight;  // the straight shadow this file tests (caustics_test.cpp: MNEE)
+  // The straight shadow this file tests (caustics_test.cpp: MNEE), or none.
+  frame.settings.caustics = transparentShadows ? Caustics::Straight : Caustics::Off;
   return frame;
 }
 

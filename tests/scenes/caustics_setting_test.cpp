@@ -1,5 +1,5 @@
-// The `render.caustics` key (docs/shot-format.md, "Caustics") and its relation to the older
-// `render.transparentShadows`.
+// The `render.caustics` key (docs/shot-format.md, "Caustics"), and the retired
+// `render.transparentShadows`, which a shot is told to replace.
 #include <gtest/gtest.h>
 
 #include "lacrima/scenes/shot.hpp"
@@ -13,7 +13,7 @@ using test::shotWithRender;
 using test::writeShot;
 
 Caustics modeOf(const std::string& name, const std::string& renderExtra) {
-  return loadShot(writeShot(name, shotWithRender(renderExtra))).render.causticsMode();
+  return loadShot(writeShot(name, shotWithRender(renderExtra))).render.caustics;
 }
 
 TEST(CausticsSetting, DefaultsToMneeAndReadsEachMode) {
@@ -23,11 +23,13 @@ TEST(CausticsSetting, DefaultsToMneeAndReadsEachMode) {
   EXPECT_EQ(modeOf("caustics_off.json", R"(, "caustics": "off")"), Caustics::Off);
 }
 
-TEST(CausticsSetting, TransparentShadowsFalseStillMeansOff) {
-  EXPECT_EQ(modeOf("caustics_ts_false.json", R"(, "transparentShadows": false)"), Caustics::Off);
-  EXPECT_EQ(modeOf("caustics_ts_false_off.json", R"(, "transparentShadows": false, "caustics": "off")"), Caustics::Off);
-  EXPECT_EQ(modeOf("caustics_ts_true.json", R"(, "transparentShadows": true, "caustics": "straight")"),
-            Caustics::Straight);
+TEST(CausticsSetting, TheRetiredTransparentShadowsKeyNamesWhatReplacesIt) {
+  const std::string message =
+      "/render/transparentShadows: is no longer read: give \"caustics\" instead (\"off\" for false; true was the "
+      "default, \"mnee\")";
+  expectSingleError("caustics_ts_false.json", shotWithRender(R"(, "transparentShadows": false)"), message);
+  expectSingleError("caustics_ts_true.json", shotWithRender(R"(, "transparentShadows": true, "caustics": "straight")"),
+                    message);
 }
 
 TEST(CausticsSetting, BadValuesAreReportedAtTheirPath) {
@@ -37,9 +39,6 @@ TEST(CausticsSetting, BadValuesAreReportedAtTheirPath) {
                     "/render/caustics: unknown caustics mode 'photons' (expected one of 'mnee', 'straight', 'off')");
   expectSingleError("caustics_type.json", shotWithRender(R"(, "caustics": true)"),
                     "/render/caustics: expected a non-empty string, found true");
-  expectSingleError("caustics_contradiction.json", shotWithRender(R"(, "transparentShadows": false, "caustics": "mnee")"),
-                    "/render/caustics: 'mnee' contradicts \"transparentShadows\": false (which means \"off\"); give only "
-                    "\"caustics\"");
 }
 
 }  // namespace caustics_setting_test

@@ -76,7 +76,7 @@ std::map<std::string, std::string> pixelSettingsMetadata(const RenderSettings& s
       {"lacrima:sampler", s.sampler == SamplerKind::Sobol ? "sobol" : "independent"},
       {"lacrima:filter", fmt::format("{} {} px", filterTypeName(s.filter.type), s.filter.width)},
       {"lacrima:bounces", fmt::format("diffuse {} glossy {} transmission {}", b.diffuse, b.glossy, b.transmission)},
-      {"lacrima:caustics", causticsName(s.causticsMode())},
+      {"lacrima:caustics", causticsName(s.caustics)},
       {"lacrima:denoise", s.denoise ? "on" : "off"},
       {"lacrima:adaptive", s.adaptive.enabled ? fmt::format("threshold {} min {} spp", s.adaptive.threshold,
                                                              s.adaptive.minSamples)

@@ -160,9 +160,6 @@ struct RenderSettings {
   int frameNumber = 1;     // part of the random key
   bool floatOutput = false;  // EXR beauty as float instead of half
   Caustics caustics = Caustics::Mnee;
-  // The older switch: false means Caustics::Off whatever `caustics` says; true leaves `caustics`.
-  bool transparentShadows = true;
-  Caustics causticsMode() const { return transparentShadows ? caustics : Caustics::Off; }
   // Pixel reconstruction filter, importance-sampled per camera sample (pixel_filter.hpp).
   PixelFilter filter;
   CryptomatteSettings cryptomatte;
