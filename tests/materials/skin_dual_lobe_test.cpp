@@ -1,4 +1,4 @@
-// The skin's second specular lobe: absent by default (skin v1 bitwise), a convex mix of two GGX
+// The skin's second specular lobe: absent by default (the single-lobe skin, bitwise), a convex mix of two GGX
 // lobes when lobeMix > 0, and the BSDF's pore hook.
 #include <gtest/gtest.h>
 
@@ -12,9 +12,9 @@
 namespace lacrima {
 namespace skin_dual_lobe_test {
 
-// Skin v1's f, written out in the order skin v1 evaluated it (Walter 2007 eq. 20 plus the
+// The single-lobe skin's f, written out in the order it was evaluated before the second lobe (Walter 2007 eq. 20 plus the
 // Fresnel-weighted base of skin.hpp), to compare bitwise.
-Color skinV1Eval(const SkinParams& p, const Vec3& wo, const Vec3& wi) {
+Color singleLobeSkinEval(const SkinParams& p, const Vec3& wo, const Vec3& wi) {
   if (wo.z() <= 0.0f || wi.z() <= 0.0f) return Color::Zero();
   const Color albedo = p.albedo.max(0.0f).min(kMaxSkinAlbedo);
   const float diffuseNorm = kInvPi / (1.0f - fresnelHemisphericalReflectance(p.ior));
@@ -29,12 +29,12 @@ Color skinV1Eval(const SkinParams& p, const Vec3& wo, const Vec3& wi) {
 
 bool bitwiseEqual(const Color& a, const Color& b) { return (a == b).all(); }
 
-TEST(SkinDualLobe, ZeroMixIsSkinV1Bitwise) {
-  SkinParams v1;
-  v1.roughness = 0.3f;
-  SkinParams other = v1;
+TEST(SkinDualLobe, ZeroMixIsTheSingleLobeSkinBitwise) {
+  SkinParams singleLobe;
+  singleLobe.roughness = 0.3f;
+  SkinParams other = singleLobe;
   other.roughness2 = 0.9f;  // ignored while lobeMix is 0
-  const SkinBsdf a(v1), b(other);
+  const SkinBsdf a(singleLobe), b(other);
   test::TestRng rng(31);
   int nonzero = 0;
   for (int k = 0; k < 20000; ++k) {
@@ -42,7 +42,7 @@ TEST(SkinDualLobe, ZeroMixIsSkinV1Bitwise) {
     wo.z() = std::abs(wo.z());
     const Vec3 wi = rng.sphere();
     const Color f = a.eval(wo, wi);
-    ASSERT_TRUE(bitwiseEqual(f, skinV1Eval(v1, wo, wi))) << k;
+    ASSERT_TRUE(bitwiseEqual(f, singleLobeSkinEval(singleLobe, wo, wi))) << k;
     ASSERT_TRUE(bitwiseEqual(f, b.eval(wo, wi))) << k;
     ASSERT_EQ(a.pdf(wo, wi), b.pdf(wo, wi)) << k;
     const float uLobe = rng.uniform();

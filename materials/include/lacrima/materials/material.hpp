@@ -42,13 +42,13 @@ struct SubsurfaceParams {
 // Skin: Lambertian base under one or two GGX specular lobes whose strength follows dielectric
 // Fresnel, optionally with procedural pores and furrows that tilt the shading normal and darken
 // the albedo in their hollows (see skin.hpp, skin_relief.hpp). The defaults (lobeMix 0, poreDepth 0,
-// furrowDepth 0, cavity 0) are skin v1: one lobe, a smooth surface.
+// furrowDepth 0, cavity 0) give the plainest skin: one lobe, a smooth surface.
 struct SkinParams {
   Color albedo = Color(0.62f, 0.43f, 0.35f);
   float roughness = 0.35f;   // sharper lobe, GGX alpha = roughness^2
   float ior = 1.4f;          // skin surface lipids, drives the specular Fresnel
   float roughness2 = 0.6f;   // broader second lobe, GGX alpha = roughness2^2
-  float lobeMix = 0.0f;      // weight of the second lobe in [0, 1]; 0 = single lobe (skin v1)
+  float lobeMix = 0.0f;      // weight of the second lobe in [0, 1]; 0 = single lobe
   float poreScale = 3e-4f;   // metres between neighbouring pores (cell size of the pore lattice)
   float poreDepth = 0.0f;    // metres deep; 0 = no pores
   float furrowScale = 6e-4f;  // metres across a plateau of the furrow network (furrows.hpp)

@@ -6,9 +6,9 @@
 //   albedo     - reflectance of the base before the Fresnel loss, clamped to [0, 0.99] (see Energy);
 //   roughness  - sharper lobe, GGX alpha1 = roughness^2, clamped to alpha >= 1e-3;
 //   roughness2 - broader lobe, GGX alpha2 = roughness2^2 (used only when lobeMix > 0);
-//   lobeMix    - weight w of the broader lobe in [0, 1]; 0 is skin v1 (one lobe, bitwise);
+//   lobeMix    - weight w of the broader lobe in [0, 1]; 0 is the single-lobe skin (bitwise);
 //   ior        - refractive index of the surface layer; drives the specular Fresnel F;
-//   poreScale, poreDepth - the pore field of pores.hpp (poreDepth 0: no pores, skin v1);
+//   poreScale, poreDepth - the pore field of pores.hpp (poreDepth 0: no pores);
 //   furrowScale, furrowDepth - the furrow network of furrows.hpp (furrowDepth 0: none);
 //   cavity     - how far the relief's hollows darken the albedo; applied by the renderer per hit,
 //                which builds the BSDF with the darkened albedo (skin_relief.hpp).
@@ -91,7 +91,7 @@ class SkinBsdf final : public Bsdf {
   float ior_;
   GgxDistribution sharp_;  // alpha = roughness^2
   GgxDistribution broad_;  // alpha = roughness2^2, weight lobeMix_
-  float lobeMix_;          // in [0, 1]; 0 skips the broad lobe everywhere (skin v1, bitwise)
+  float lobeMix_;          // in [0, 1]; 0 skips the broad lobe everywhere (the single-lobe skin, bitwise)
   float diffuseNorm_;      // 1 / (pi (1 - Fbar))
   ReliefFields relief_;  // pores and furrows; depths 0 where their scale or depth is not positive
   std::optional<Vec3> reliefGradientHere_;
