@@ -12,6 +12,8 @@ set(_cluster "^FarmCluster\\.")
 set(_slow "^(DefaultShotStory|CryingRivuletStory|FarmCluster|RenderMemory)\\.|^LiquidTearCourse\\.OnTheDefaultShot|^SequenceInterrupt\\.Killed")
 set(_statistical
     "^(AllBsdfs/BsdfChi2|BsdfEnergy|VndfChi2|Chi2SelfTest|Chi2Family|SubsurfaceAlbedo|DiffusionProfile|SubsurfaceDiffusion|AnalyticScenes|BounceLimits|Caustics|SamplerConvergence|WaterAnalytic)\\.")
+# The sampler's own tests live beside the renderer (it is the renderer's type) but render nothing.
+set(_unit_in_renderer "^(PixelSampler|PixelSamplerSobol|Sobol)\\.")
 set(_render_in_tools "^(Shots/ImageRegression|Shots/LayerRecombination|TestSuiteCli|CliRender|BenchQuality)\\.")
 
 foreach(_executable geometry flesh sph crowd tracking materials renderer scenes tools fuzz)
@@ -26,7 +28,7 @@ foreach(_executable geometry flesh sph crowd tracking materials renderer scenes 
     if(_test MATCHES "${_statistical}")
       list(APPEND _labels statistical)
     endif()
-    if(_executable STREQUAL "renderer" OR _test MATCHES "${_render_in_tools}")
+    if((_executable STREQUAL "renderer" AND NOT _test MATCHES "${_unit_in_renderer}") OR _test MATCHES "${_render_in_tools}")
       list(APPEND _labels render)
     endif()
     if(NOT _labels)

@@ -5,7 +5,7 @@
 #include <array>
 #include <cmath>
 
-#include "lacrima/geometry/sampler.hpp"
+#include "lacrima/base/hash.hpp"
 #include "lattice_cell.hpp"
 
 namespace lacrima {

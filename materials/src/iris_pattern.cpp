@@ -6,8 +6,8 @@
 #include <map>
 #include <mutex>
 
-#include "lacrima/geometry/eye.hpp"
-#include "lacrima/geometry/sampler.hpp"
+#include "lacrima/face/eye.hpp"
+#include "lacrima/base/hash.hpp"
 
 namespace lacrima {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdint>
 
-#include "lacrima/geometry/math.hpp"
+#include "lacrima/base/math.hpp"
 
 namespace lacrima {
 

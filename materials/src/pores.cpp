@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "lacrima/geometry/sampler.hpp"
+#include "lacrima/base/hash.hpp"
 #include "lattice_cell.hpp"
 
 namespace lacrima {

@@ -1,6 +1,6 @@
 #pragma once
 // Directions in a BSDF's local shading frame (z along the normal).
-#include "lacrima/geometry/math.hpp"
+#include "lacrima/base/math.hpp"
 
 namespace lacrima {
 

@@ -9,8 +9,8 @@
 #include <limits>
 
 #include "embree_scene.hpp"
-#include "lacrima/geometry/error.hpp"
-#include "lacrima/geometry/sampler.hpp"
+#include "lacrima/base/error.hpp"
+#include "lacrima/renderer/sampler.hpp"
 #include "lacrima/materials/sampling.hpp"
 #include "lacrima/renderer/camera.hpp"
 

@@ -15,7 +15,7 @@
 #include <utility>
 #include <vector>
 
-#include "lacrima/geometry/sampler.hpp"
+#include "lacrima/base/hash.hpp"
 
 namespace lacrima {
 

@@ -13,7 +13,7 @@
 #include <string_view>
 #include <unordered_map>
 
-#include "lacrima/geometry/shapes.hpp"
+#include "lacrima/mesh/shapes.hpp"
 #include "lacrima/materials/material.hpp"
 
 namespace lacrima {

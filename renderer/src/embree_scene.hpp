@@ -10,7 +10,7 @@
 
 #include "lacrima/renderer/camera.hpp"
 #include "lacrima/renderer/frame.hpp"
-#include "lacrima/renderer/specular_manifold.hpp"
+#include "specular_manifold.hpp"
 
 namespace lacrima {
 

@@ -62,7 +62,7 @@
 #include <system_error>
 
 #include "distribution.hpp"
-#include "lacrima/geometry/error.hpp"
+#include "lacrima/base/error.hpp"
 
 namespace lacrima {
 

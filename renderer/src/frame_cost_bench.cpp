@@ -10,7 +10,7 @@
 #include <stdexcept>
 
 #include "embree_scene.hpp"
-#include "lacrima/geometry/error.hpp"
+#include "lacrima/base/error.hpp"
 #include "lacrima/renderer/bench.hpp"
 #include "lacrima/renderer/render.hpp"
 

@@ -40,7 +40,7 @@
 #include <system_error>
 #include <vector>
 
-#include "lacrima/geometry/error.hpp"
+#include "lacrima/base/error.hpp"
 
 #ifndef LACRIMA_VERSION
 #define LACRIMA_VERSION "unknown"

@@ -12,7 +12,7 @@
 #include "surface_textures.hpp"
 #include "subsurface_probe.hpp"
 #include "subsurface_walk.hpp"
-#include "lacrima/geometry/sampler.hpp"
+#include "lacrima/renderer/sampler.hpp"
 #include "lacrima/materials/bsdf.hpp"
 #include "lacrima/materials/skin.hpp"
 #include "lacrima/materials/subsurface.hpp"
@@ -20,8 +20,8 @@
 #include "lacrima/renderer/cryptomatte.hpp"
 #include "lacrima/renderer/light_groups.hpp"
 #include "lacrima/renderer/light_paths.hpp"
-#include "lacrima/renderer/medium_stack.hpp"
-#include "lacrima/renderer/specular_manifold.hpp"
+#include "medium_stack.hpp"
+#include "specular_manifold.hpp"
 
 namespace lacrima {
 

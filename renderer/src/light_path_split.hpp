@@ -1,7 +1,7 @@
 #pragma once
 // One camera path's contributions sorted into the light-path AOVs (light_paths.hpp), for the
 // integrator. Does nothing when it has nowhere to write (no pass is rendered).
-#include "lacrima/geometry/math.hpp"
+#include "lacrima/base/math.hpp"
 #include "lacrima/materials/bsdf.hpp"
 #include "lacrima/renderer/light_paths.hpp"
 

@@ -1,7 +1,7 @@
 #pragma once
 #include <algorithm>
 
-#include "lacrima/geometry/math.hpp"
+#include "lacrima/base/math.hpp"
 
 namespace lacrima {
 

@@ -23,7 +23,7 @@
 #include "lacrima/renderer/light_paths.hpp"
 #include "lacrima/renderer/pixel_sums.hpp"
 #include "integrator.hpp"
-#include "lacrima/geometry/error.hpp"
+#include "lacrima/base/error.hpp"
 #include "lacrima/renderer/camera.hpp"
 #include "lacrima/renderer/pixel_filter.hpp"
 #include "light_sampler.hpp"

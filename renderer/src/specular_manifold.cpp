@@ -1,5 +1,5 @@
 // Specular manifold solver of MNEE; see lacrima/renderer/specular_manifold.hpp.
-#include "lacrima/renderer/specular_manifold.hpp"
+#include "specular_manifold.hpp"
 
 #include <unsupported/Eigen/AutoDiff>
 

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "embree_scene.hpp"
-#include "lacrima/geometry/sampler.hpp"
+#include "lacrima/renderer/sampler.hpp"
 #include "lacrima/materials/subsurface.hpp"
 
 namespace lacrima {

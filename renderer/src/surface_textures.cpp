@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "lacrima/geometry/error.hpp"
+#include "lacrima/base/error.hpp"
 
 namespace lacrima {
 

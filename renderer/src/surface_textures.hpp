@@ -22,7 +22,7 @@
 #include <optional>
 #include <vector>
 
-#include "lacrima/geometry/math.hpp"
+#include "lacrima/base/math.hpp"
 #include "lacrima/materials/iris_pattern.hpp"
 #include "lacrima/materials/material.hpp"
 #include "lacrima/materials/texture_values.hpp"

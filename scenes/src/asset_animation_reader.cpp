@@ -6,7 +6,7 @@
 #include <algorithm>
 
 #include "animation_reader.hpp"
-#include "lacrima/geometry/performance_track.hpp"
+#include "lacrima/io/performance_track.hpp"
 #include "suggest.hpp"
 
 namespace lacrima::shotfile {

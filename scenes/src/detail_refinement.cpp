@@ -4,8 +4,8 @@
 #include <limits>
 #include <optional>
 
-#include "lacrima/geometry/region_refinement.hpp"
-#include "lacrima/geometry/surface_point.hpp"
+#include "lacrima/rig/region_refinement.hpp"
+#include "lacrima/mesh/surface_point.hpp"
 #include "surface_attachment.hpp"
 
 namespace lacrima::shotfile {

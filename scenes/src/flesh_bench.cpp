@@ -6,7 +6,7 @@
 
 #include "flesh_frame.hpp"
 #include "lacrima/flesh/flesh_volume_cache.hpp"
-#include "lacrima/geometry/error.hpp"
+#include "lacrima/base/error.hpp"
 
 namespace lacrima {
 

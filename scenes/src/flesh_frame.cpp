@@ -10,8 +10,8 @@
 #include "lacrima/flesh/flesh_state_cache.hpp"
 #include "lacrima/flesh/flesh_volume_cache.hpp"
 #include "lacrima/flesh/fnv1a.hpp"
-#include "lacrima/geometry/region_refinement.hpp"
-#include "lacrima/geometry/user_cache.hpp"
+#include "lacrima/rig/region_refinement.hpp"
+#include "lacrima/base/user_cache.hpp"
 #include "surface_anchor.hpp"
 
 namespace lacrima::shotfile {

@@ -6,8 +6,8 @@
 #include <cmath>
 
 #include "json_source.hpp"
-#include "lacrima/geometry/error.hpp"
-#include "lacrima/geometry/gltf_asset.hpp"
+#include "lacrima/base/error.hpp"
+#include "lacrima/io/gltf_asset.hpp"
 #include "lacrima/scenes/shot.hpp"
 #include "shot_checker.hpp"
 #include "text_file.hpp"

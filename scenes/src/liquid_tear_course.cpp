@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "lacrima/geometry/error.hpp"
+#include "lacrima/base/error.hpp"
 #include "lacrima/scenes/liquid_tear.hpp"
 #include "liquid_tear_resolve.hpp"  // flowPathOnSkin
 
@@ -16,8 +16,8 @@ bool carriesLiquid(const LiquidTearCourse& course) {
   return course.path.points.size() >= 2 && course.path.length() >= kMinLiquidCourseLength;
 }
 
-TearLiquidInput inputOn(const ShotLiquidTear& tear, const LiquidTearCourse& course) {
-  TearLiquidInput input = tear.input;
+LiquidTearInput inputOn(const ShotLiquidTear& tear, const LiquidTearCourse& course) {
+  LiquidTearInput input = tear.input;
   input.path = course.samples;
   return input;
 }
@@ -137,7 +137,7 @@ LiquidTearRun::LiquidTearRun(const Shot& shot, const ShotLiquidTear& tear, const
       reroutes_(kept.reroutes_) {}
 
 bool LiquidTearRun::hasPassed(double frame) const {
-  return tearLiquidStepsTo(liquidTearSeconds(shot_, tear_, frame), tear_.input.params.timeStep) < simulation_.steps();
+  return liquidTearStepsTo(liquidTearSeconds(shot_, tear_, frame), tear_.input.params.timeStep) < simulation_.steps();
 }
 
 void LiquidTearRun::followCourse(int frame) {
@@ -156,7 +156,7 @@ void LiquidTearRun::followCourse(int frame) {
 void LiquidTearRun::advanceTo(double frame) {
   const double t = liquidTearSeconds(shot_, tear_, frame);
   const double dt = tear_.input.params.timeStep;
-  const long long target = tearLiquidStepsTo(t, dt);
+  const long long target = liquidTearStepsTo(t, dt);
   if (target < simulation_.steps()) simulation_.advanceTo(t);  // refuses to go back, with its message
   // Each step runs on the course of its start time's nearest frame; the state reached is left on
   // the course of the next step, so a run stopped here and continued equals one that did not stop.
@@ -167,7 +167,7 @@ void LiquidTearRun::advanceTo(double frame) {
   followCourse(liquidTearCourseFrame(shot_, tear_, double(simulation_.steps()) * dt));
 }
 
-TearLiquidState LiquidTearRun::state(double frame) const { return simulation_.state(liquidTearSeconds(shot_, tear_, frame)); }
+LiquidTearState LiquidTearRun::state(double frame) const { return simulation_.state(liquidTearSeconds(shot_, tear_, frame)); }
 
 LiquidTearRun LiquidTearRunKeeper::runFor(const Shot& shot, const ShotLiquidTear& tear, double frame) const {
   std::lock_guard<std::mutex> lock(mutex_);
@@ -184,7 +184,7 @@ void LiquidTearRunKeeper::keep(const ShotLiquidTear& tear, const LiquidTearRun& 
 
 // ---- Queries --------------------------------------------------------------------------------------
 
-TearLiquidState liquidTearStateAt(const Shot& shot, const ShotLiquidTear& tear, double frame) {
+LiquidTearState liquidTearStateAt(const Shot& shot, const ShotLiquidTear& tear, double frame) {
   LiquidTearRun run(shot, tear);
   run.advanceTo(frame);
   return run.state(frame);
@@ -192,7 +192,7 @@ TearLiquidState liquidTearStateAt(const Shot& shot, const ShotLiquidTear& tear, 
 
 std::shared_ptr<const LiquidTearCourse> liquidTearCourseAt(const Shot& shot, const ShotLiquidTear& tear, double frame) {
   const double dt = tear.input.params.timeStep;
-  const long long steps = tearLiquidStepsTo(liquidTearSeconds(shot, tear, frame), dt);
+  const long long steps = liquidTearStepsTo(liquidTearSeconds(shot, tear, frame), dt);
   return coursesOf(tear).at(liquidTearCourseFrame(shot, tear, double(steps) * dt));
 }
 

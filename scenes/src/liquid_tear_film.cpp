@@ -10,9 +10,9 @@
 #include <numeric>
 #include <span>
 
-#include "lacrima/geometry/bucket_lists.hpp"
-#include "lacrima/geometry/gradient_noise.hpp"
-#include "lacrima/geometry/surface_point.hpp"
+#include "lacrima/base/bucket_lists.hpp"
+#include "lacrima/base/gradient_noise.hpp"
+#include "lacrima/mesh/surface_point.hpp"
 
 namespace lacrima::shotfile {
 
@@ -31,7 +31,7 @@ struct WetPiece {
 
 // The pieces of the path that carry film, each with its reach; empty when the trail is dry.
 std::vector<WetPiece> wetPieces(const ShotLiquidTear& tear, const FlowPath& path,
-                                const TearLiquidSimulation& simulation, const TriangleMesh& skin) {
+                                const LiquidTearSimulation& simulation, const TriangleMesh& skin) {
   // Cells are trailCellLength long: probing every half cell meets each cell a piece crosses.
   const double probe = 0.5 * tear.input.params.trailCellLength;
   std::vector<WetPiece> pieces;
@@ -67,7 +67,7 @@ float edgeFalloff(float r, float halfWidth) {
 // The film's cells as this frame's simulation holds them, tabulated once: a frame asks for them
 // tens of millions of times, and each answer from the simulation costs three divisions.
 struct FilmCells {
-  explicit FilmCells(const TearLiquidSimulation& simulation) {
+  explicit FilmCells(const LiquidTearSimulation& simulation) {
     for (size_t c = 0; c < simulation.filmCellCount(); ++c) {
       thickness.push_back(simulation.filmThicknessOfCell(c));
       halfWidth.push_back(float(0.5 * simulation.filmWidthOfCell(c)));
@@ -80,7 +80,7 @@ struct FilmCells {
 // The film a piece lays at distance r from it, its closest point a fraction f along it: the
 // thickness at that arc length times the falloff at the half width there scaled by the point's edge
 // factor (1 + kFilmEdgeWander v); 0 from the piece's reach on.
-float filmAtClosestPoint(const WetPiece& piece, const FilmCells& cells, const TearLiquidSimulation& simulation,
+float filmAtClosestPoint(const WetPiece& piece, const FilmCells& cells, const LiquidTearSimulation& simulation,
                          float f, float r, float edgeFactor) {
   if (r >= piece.reach) return 0.0f;
   const long cell = simulation.filmCellAt(piece.s0 + double(f) * (piece.s1 - piece.s0));
@@ -178,7 +178,7 @@ struct FilmInputs {
   const std::vector<WetPiece>& pieces;
   const std::vector<Eigen::AlignedBox3f>& pieceBoxes;
   const FilmCells& cells;
-  const TearLiquidSimulation& simulation;
+  const LiquidTearSimulation& simulation;
 };
 
 // Per-thread scratch of a cell's evaluation, one value per vertex of the cell.
@@ -294,7 +294,7 @@ std::vector<float> filmEdgeVariation(const TriangleMesh& skinAtFirstFrame) {
 }
 
 void addLiquidTearFilmOverEveryPiece(const ShotLiquidTear& tear, const FlowPath& course,
-                                     const TearLiquidSimulation& simulation, const TriangleMesh& skin,
+                                     const LiquidTearSimulation& simulation, const TriangleMesh& skin,
                                      std::vector<float>& wetness) {
   const std::vector<WetPiece> pieces = wetPieces(tear, course, simulation, skin);
   const FilmCells cells(simulation);
@@ -314,7 +314,7 @@ void addLiquidTearFilmOverEveryPiece(const ShotLiquidTear& tear, const FlowPath&
   raiseWetness(films, wetness);
 }
 
-void addLiquidTearFilm(const ShotLiquidTear& tear, const FlowPath& course, const TearLiquidSimulation& simulation,
+void addLiquidTearFilm(const ShotLiquidTear& tear, const FlowPath& course, const LiquidTearSimulation& simulation,
                        const TriangleMesh& skin, std::vector<float>& wetness) {
   const std::vector<WetPiece> pieces = wetPieces(tear, course, simulation, skin);
   if (pieces.empty()) return;

@@ -3,7 +3,7 @@
 // (MeshInstance::wetness; the renderer shades it as wet skin, materials/wet_skin.hpp).
 #include <vector>
 
-#include "lacrima/geometry/tear_liquid.hpp"
+#include "lacrima/liquid/liquid_tear.hpp"
 #include "lacrima/scenes/shot.hpp"
 
 namespace lacrima::shotfile {
@@ -41,14 +41,14 @@ std::vector<float> filmEdgeVariation(const TriangleMesh& skinAtFirstFrame);
 // there (scaled by the vertex's 1 + kFilmEdgeWander v, when tear.filmEdgeVariation has one value
 // per vertex) and a smooth falloff beyond; the largest value over the pieces and over earlier
 // tears is kept. Only vertices within reach of a wet piece are visited.
-void addLiquidTearFilm(const ShotLiquidTear& tear, const FlowPath& course, const TearLiquidSimulation& simulation,
+void addLiquidTearFilm(const ShotLiquidTear& tear, const FlowPath& course, const LiquidTearSimulation& simulation,
                        const TriangleMesh& skin, std::vector<float>& wetness);
 
 // The same film by its definition, evaluated directly: every vertex against every wet piece, no
 // grid, no early stop (slow: tens of seconds on the default shot). addLiquidTearFilm must write
 // bitwise the same; the tests hold it to that (tests/scenes/liquid_tear_film_test.cpp).
 void addLiquidTearFilmOverEveryPiece(const ShotLiquidTear& tear, const FlowPath& course,
-                                     const TearLiquidSimulation& simulation, const TriangleMesh& skin,
+                                     const LiquidTearSimulation& simulation, const TriangleMesh& skin,
                                      std::vector<float>& wetness);
 
 }  // namespace lacrima::shotfile

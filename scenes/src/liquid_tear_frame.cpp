@@ -9,10 +9,10 @@
 #include <functional>
 #include <optional>
 
-#include "lacrima/geometry/drop_oscillation.hpp"
-#include "lacrima/geometry/liquid_bead_mesh.hpp"
-#include "lacrima/geometry/liquid_rivulet_mesh.hpp"
-#include "lacrima/geometry/meniscus_swelling.hpp"
+#include "lacrima/liquid/drop_oscillation.hpp"
+#include "lacrima/liquid/liquid_bead_mesh.hpp"
+#include "lacrima/liquid/liquid_rivulet_mesh.hpp"
+#include "lacrima/liquid/meniscus_swelling.hpp"
 #include "lacrima/scenes/liquid_tear.hpp"
 #include "liquid_tear_film.hpp"
 
@@ -170,7 +170,7 @@ LiquidTearShutter simulateLiquidTearShutter(const Shot& shot, const ShotLiquidTe
   result.open = run.state(shutterOpen);
   result.openCourse = run.coursePointer();
   result.meniscusOpen = run.simulation().meniscusVolume();
-  result.simulationAtOpen = std::make_shared<const TearLiquidSimulation>(run.simulation());
+  result.simulationAtOpen = std::make_shared<const LiquidTearSimulation>(run.simulation());
   result.blurred = shutterClose > shutterOpen;
   if (!result.blurred) {
     result.close = result.open;
@@ -207,8 +207,8 @@ void addLiquidTear(const ShotLiquidTear& tear, const LiquidTearShutter& run, con
     for (size_t v = 0; v < wetness.size(); ++v) wetness[v] = std::max(wetness[v], run.film[v]);
   }
   const bool blurred = run.blurred;
-  const TearLiquidState& open = run.open;
-  const TearLiquidState& close = run.close;
+  const LiquidTearState& open = run.open;
+  const LiquidTearState& close = run.close;
   const LiquidTearCourse* openCourse = run.openCourse.get();
   const LiquidTearCourse* closeCourse = run.closeCourse.get();
   const size_t primitive = tear.sourcePoint.primitive;

@@ -24,11 +24,11 @@ inline constexpr double kVisibleDropAmplitude = 0.01;
 // at each moment.
 struct LiquidTearShutter {
   bool blurred = false;  // the shutter closes after it opens; otherwise close is a copy of open
-  TearLiquidState open, close;
+  LiquidTearState open, close;
   std::shared_ptr<const LiquidTearCourse> openCourse, closeCourse;  // the course each state lies on
   double meniscusOpen = 0.0, meniscusClose = 0.0;                    // m^3
   // The simulation as it stood at shutter open, for the film (null when the tear is not resolved).
-  std::shared_ptr<const TearLiquidSimulation> simulationAtOpen;
+  std::shared_ptr<const LiquidTearSimulation> simulationAtOpen;
   // The wet trail at shutter open (it dries over seconds: no blur) on openSkin[primitive], one value
   // per vertex; empty when nothing is wet or before layLiquidTearFilm (liquid_tear_film.hpp).
   std::vector<float> film;

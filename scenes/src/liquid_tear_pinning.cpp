@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstdint>
 
-#include "lacrima/geometry/gradient_noise.hpp"
+#include "lacrima/base/gradient_noise.hpp"
 
 namespace lacrima::shotfile {
 

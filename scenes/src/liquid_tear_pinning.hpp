@@ -3,7 +3,7 @@
 // "pinning"; LiquidPathSample::pinning in the simulation).
 #include <vector>
 
-#include "lacrima/geometry/mesh.hpp"
+#include "lacrima/mesh/mesh.hpp"
 
 namespace lacrima::shotfile {
 

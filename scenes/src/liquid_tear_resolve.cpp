@@ -8,11 +8,11 @@
 #include "asset_pose.hpp"
 #include "lacrima/scenes/liquid_tear.hpp"
 #include "json_source.hpp"  // childPointer
-#include "lacrima/geometry/error.hpp"
-#include "lacrima/geometry/meniscus_swelling.hpp"
+#include "lacrima/base/error.hpp"
+#include "lacrima/liquid/meniscus_swelling.hpp"
 #include "liquid_tear_film.hpp"
 #include "liquid_tear_pinning.hpp"
-#include "lacrima/geometry/surface_point.hpp"
+#include "lacrima/mesh/surface_point.hpp"
 #include "surface_anchor.hpp"
 
 namespace lacrima::shotfile {
@@ -180,7 +180,7 @@ void resolveTear(const Shot& shot, ShotLiquidTear& tear, std::vector<LiquidTearP
   tear.input.gravityDirection = tear.gravity.cast<double>();
   tear.input.params = tear.params;
   try {
-    TearLiquidSimulation check(tear.input);
+    LiquidTearSimulation check(tear.input);
   } catch (const InputError& e) {
     problems.push_back({tear.pointer, e.what()});
   }

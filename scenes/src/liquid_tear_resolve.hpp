@@ -4,7 +4,7 @@
 // ShotLiquidTear).
 #include <vector>
 
-#include "lacrima/geometry/mesh_smoothing.hpp"
+#include "lacrima/mesh/mesh_smoothing.hpp"
 #include "lacrima/scenes/liquid_tear.hpp"  // kMinLiquidCourseLength
 #include "lacrima/scenes/shot_model.hpp"
 #include "shedding_tear_resolve.hpp"  // SheddingTearProblem: a problem at a JSON pointer

@@ -6,8 +6,8 @@
 #include <memory>
 
 #include "asset_pose.hpp"
-#include "lacrima/geometry/region_refinement.hpp"
-#include "lacrima/geometry/surface_point.hpp"
+#include "lacrima/rig/region_refinement.hpp"
+#include "lacrima/mesh/surface_point.hpp"
 #include "liquid_tear_resolve.hpp"
 #include "surface_anchor.hpp"
 

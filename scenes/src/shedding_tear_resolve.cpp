@@ -7,8 +7,8 @@
 
 #include "asset_pose.hpp"
 #include "json_source.hpp"  // childPointer
-#include "lacrima/geometry/closest_point_grid.hpp"
-#include "lacrima/geometry/error.hpp"
+#include "lacrima/mesh/closest_point_grid.hpp"
+#include "lacrima/base/error.hpp"
 
 namespace lacrima::shotfile {
 

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "json_source.hpp"
-#include "lacrima/geometry/math.hpp"
+#include "lacrima/base/math.hpp"
 #include "lacrima/scenes/shot.hpp"
 
 namespace lacrima::shotfile {

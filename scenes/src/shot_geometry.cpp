@@ -1,6 +1,6 @@
 #include "shot_geometry.hpp"
 
-#include "lacrima/geometry/shapes.hpp"
+#include "lacrima/mesh/shapes.hpp"
 
 namespace lacrima::shotfile {
 

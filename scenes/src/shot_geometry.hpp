@@ -2,8 +2,8 @@
 // Small geometric constructions of the shot format: rotations, look-at frames, rectangles.
 #include <optional>
 
-#include "lacrima/geometry/math.hpp"
-#include "lacrima/geometry/mesh.hpp"
+#include "lacrima/base/math.hpp"
+#include "lacrima/mesh/mesh.hpp"
 #include "lacrima/scenes/shot_model.hpp"
 
 namespace lacrima::shotfile {

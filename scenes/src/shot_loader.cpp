@@ -1316,7 +1316,7 @@ class ShotReader {
       else
         tear.gravity = *x;
     }
-    TearLiquidParams& p = tear.params;
+    LiquidTearParams& p = tear.params;
     WellingSource& source = p.source;
     if (auto x = o.number("maxLength", Range::above(0))) tear.maxLength = float(*x);
     readWellingTimes(o, tear);
@@ -1338,7 +1338,7 @@ class ShotReader {
     if (auto x = o.number("airTemperature", Range::closed(-20, 50))) p.air.airTemperature = *x;
     if (auto x = o.number("humidity", Range::closed(0, 1))) p.air.relativeHumidity = *x;
     if (auto x = o.number("hangingContactRadius", Range::atLeast(0))) p.hangingContactRadius = *x;
-    // A drip site: the skin's normal within this angle of gravity (degrees; TearLiquidParams::overhangCosine).
+    // A drip site: the skin's normal within this angle of gravity (degrees; LiquidTearParams::overhangCosine).
     if (auto x = o.number("overhangAngle", Range::open(0, 180))) p.overhangCosine = std::cos(*x * std::numbers::pi / 180.0);
     if (auto x = o.number("viscosity", Range::above(0))) p.viscosity = *x;
     if (auto x = o.integer("trailRefinement", Range::closed(0, 3))) tear.trailRefinementLevels = int(*x);
@@ -1403,8 +1403,8 @@ class ShotReader {
   }
 
   // "rivulet": {"formFlowRate": uL/s > 0, "breakFlowRate": uL/s in (0, formFlowRate] (default half
-  // of it)}: welling at formFlowRate or faster runs down as a rivulet (TearLiquidParams::rivulet).
-  void readRivulet(ObjectReader& o, TearLiquidParams& p) {
+  // of it)}: welling at formFlowRate or faster runs down as a rivulet (LiquidTearParams::rivulet).
+  void readRivulet(ObjectReader& o, LiquidTearParams& p) {
     const Json* v = o.find("rivulet");
     if (!v) return;
     ObjectReader r(c_, *v, o.at("rivulet"), {"formFlowRate", "breakFlowRate"});

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cctype>
 
-#include "lacrima/geometry/name_suggestion.hpp"
+#include "lacrima/base/name_suggestion.hpp"
 
 namespace lacrima::shotfile {
 

@@ -6,7 +6,7 @@
 
 namespace lacrima::shotfile {
 
-// lacrima::closestName (geometry/name_suggestion.hpp: case-insensitive edit distance, case
+// lacrima::closestName (base/name_suggestion.hpp: case-insensitive edit distance, case
 // differences breaking ties) when it is within max(2, length/3) edits; "" when nothing is close
 // enough to be a likely typo.
 std::string closestName(std::string_view name, const std::vector<std::string>& candidates);

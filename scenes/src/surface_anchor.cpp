@@ -4,8 +4,8 @@
 #include <fmt/format.h>
 
 #include "asset_pose.hpp"
-#include "lacrima/geometry/error.hpp"
-#include "lacrima/geometry/surface_point.hpp"
+#include "lacrima/base/error.hpp"
+#include "lacrima/mesh/surface_point.hpp"
 #include "surface_attachment.hpp"
 
 namespace lacrima::shotfile {

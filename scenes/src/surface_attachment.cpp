@@ -4,7 +4,7 @@
 #include <limits>
 
 #include "asset_pose.hpp"
-#include "lacrima/geometry/surface_point.hpp"
+#include "lacrima/mesh/surface_point.hpp"
 #include "surface_anchor.hpp"
 
 namespace lacrima::shotfile {

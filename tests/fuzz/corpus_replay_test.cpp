@@ -13,8 +13,8 @@
 
 #include "fuzz_inputs.hpp"
 #include "fuzz_support.hpp"
-#include "lacrima/geometry/gltf_asset.hpp"
-#include "lacrima/geometry/performance_track.hpp"
+#include "lacrima/io/gltf_asset.hpp"
+#include "lacrima/io/performance_track.hpp"
 #include "lacrima/scenes/shot.hpp"
 
 namespace lacrima::fuzz {

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "fuzz_support.hpp"
-#include "lacrima/geometry/performance_track.hpp"
+#include "lacrima/io/performance_track.hpp"
 #include "lacrima/scenes/shot.hpp"
 
 namespace lacrima::fuzz {

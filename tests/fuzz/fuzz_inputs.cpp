@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "fuzz_support.hpp"
-#include "lacrima/geometry/gltf_asset.hpp"
-#include "lacrima/geometry/performance_track.hpp"
+#include "lacrima/io/gltf_asset.hpp"
+#include "lacrima/io/performance_track.hpp"
 #include "lacrima/scenes/shot.hpp"
 
 namespace lacrima::fuzz {

@@ -5,7 +5,7 @@
 #include <cstring>
 #include <vector>
 
-#include "lacrima/geometry/allocator_tuning.hpp"
+#include "lacrima/base/allocator_tuning.hpp"
 
 #if defined(__GLIBC__)
 #include <malloc.h>

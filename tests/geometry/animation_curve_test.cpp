@@ -1,8 +1,8 @@
 // Keyframe interpolation: step, linear, Catmull-Rom, monotone cubic; hold outside the keys.
 #include <gtest/gtest.h>
 
-#include "lacrima/geometry/animation_curve.hpp"
-#include "lacrima/geometry/error.hpp"
+#include "lacrima/base/animation_curve.hpp"
+#include "lacrima/base/error.hpp"
 
 namespace lacrima {
 namespace animation_curve_test {

@@ -1,9 +1,9 @@
-// countBoundaryEdges (geometry/mesh.hpp): what decides whether a dielectric mesh bounds a volume
+// countBoundaryEdges (mesh/mesh.hpp): what decides whether a dielectric mesh bounds a volume
 // or is an open sheet rendered as a thin interface.
 #include <gtest/gtest.h>
 
-#include "lacrima/geometry/mesh.hpp"
-#include "lacrima/geometry/shapes.hpp"
+#include "lacrima/mesh/mesh.hpp"
+#include "lacrima/mesh/shapes.hpp"
 
 namespace lacrima {
 namespace boundary_edges_test {

@@ -5,9 +5,9 @@
 #include <random>
 
 #include "height_field_mesh.hpp"
-#include "lacrima/geometry/closest_point_grid.hpp"
-#include "lacrima/geometry/error.hpp"
-#include "lacrima/geometry/shapes.hpp"
+#include "lacrima/mesh/closest_point_grid.hpp"
+#include "lacrima/base/error.hpp"
+#include "lacrima/mesh/shapes.hpp"
 
 namespace lacrima {
 namespace closest_point_grid_test {

@@ -7,8 +7,8 @@
 #include <set>
 #include <vector>
 
-#include "lacrima/geometry/detail_patterns.hpp"
-#include "lacrima/geometry/error.hpp"
+#include "lacrima/face/detail_patterns.hpp"
+#include "lacrima/base/error.hpp"
 
 namespace lacrima {
 namespace detail_patterns_test {

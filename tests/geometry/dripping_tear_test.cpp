@@ -8,9 +8,9 @@
 #include <map>
 #include <vector>
 
-#include "lacrima/geometry/dripping_tear.hpp"
-#include "lacrima/geometry/error.hpp"
-#include "lacrima/geometry/mesh.hpp"
+#include "lacrima/tears/dripping_tear.hpp"
+#include "lacrima/base/error.hpp"
+#include "lacrima/mesh/mesh.hpp"
 
 namespace lacrima {
 namespace dripping_tear_test {

@@ -8,10 +8,10 @@
 #include <numbers>
 #include <vector>
 
-#include "lacrima/geometry/drop_oscillation.hpp"
-#include "lacrima/geometry/error.hpp"
-#include "lacrima/geometry/shapes.hpp"
-#include "lacrima/geometry/tear_liquid.hpp"
+#include "lacrima/liquid/drop_oscillation.hpp"
+#include "lacrima/base/error.hpp"
+#include "lacrima/mesh/shapes.hpp"
+#include "lacrima/liquid/liquid_tear.hpp"
 
 namespace lacrima {
 namespace drop_oscillation_test {
@@ -25,8 +25,8 @@ constexpr double kPiD = std::numbers::pi;
 // alone is no drip site (a pendant drop needs an overhang).
 constexpr double kLedgeFromDown = 59.0 * kPiD / 180.0;
 
-TearLiquidInput dripInput(bool ceiling = false) {
-  TearLiquidInput input;
+LiquidTearInput dripInput(bool ceiling = false) {
+  LiquidTearInput input;
   const Vec3d ledgeNormal(0.0, -std::cos(kLedgeFromDown), std::sin(kLedgeFromDown));
   const Vec3d ledgeDown(0.0, -std::sin(kLedgeFromDown), -std::cos(kLedgeFromDown));  // in the ledge, downhill
   const int samples = ceiling ? 30 : 21;
@@ -48,8 +48,8 @@ TearLiquidInput dripInput(bool ceiling = false) {
 }
 
 // The simulation advanced to just after its first drop detached.
-TearLiquidSimulation simulatedToFirstDrop(const TearLiquidInput& input) {
-  TearLiquidSimulation simulation(input);
+LiquidTearSimulation simulatedToFirstDrop(const LiquidTearInput& input) {
+  LiquidTearSimulation simulation(input);
   while (simulation.drops().empty() && simulation.time() < 30.0) simulation.step();
   EXPECT_EQ(simulation.drops().size(), 1u);
   return simulation;
@@ -71,7 +71,7 @@ MeasuredAxes measureAxes(const TriangleMesh& mesh, const Vec3d& centre, const Ve
 }
 
 // eps measured on the drawn mesh of the first drop at time t.
-double drawnAmplitude(TearLiquidSimulation& simulation, double t) {
+double drawnAmplitude(LiquidTearSimulation& simulation, double t) {
   simulation.advanceTo(t);
   const DropView drop = simulation.state(t).drops.at(0);
   const TriangleMesh mesh = makeFallingDropMesh(drop.centre, drop.axis, drop.axes);
@@ -80,8 +80,8 @@ double drawnAmplitude(TearLiquidSimulation& simulation, double t) {
 }
 
 TEST(DropOscillation, DrawnDropRingsAtRayleighsFrequencyAndDecaysWithLambsTime) {
-  const TearLiquidInput input = dripInput();
-  TearLiquidSimulation simulation = simulatedToFirstDrop(input);
+  const LiquidTearInput input = dripInput();
+  LiquidTearSimulation simulation = simulatedToFirstDrop(input);
   const FallingDrop drop = simulation.drops()[0];
   const TearFluid& fluid = input.params.fluid;
   const double radius = std::cbrt(3.0 * drop.volume / (4.0 * kPiD));
@@ -117,14 +117,14 @@ TEST(DropOscillation, DrawnDropRingsAtRayleighsFrequencyAndDecaysWithLambsTime) 
 }
 
 // The drawn hanging bead's half extents: halfLength along the path, halfWidth across, height / 2 out of the skin.
-BeadShape hangingShape(const TearLiquidInput& input, double volume) {
+BeadShape hangingShape(const LiquidTearInput& input, double volume) {
   const ContactAngleHysteresis& angles = input.params.contactAngles;
   return beadShape(input.params.fluid, volume, 0.5 * (angles.advancing + angles.receding), 0.5 * kPiD);
 }
 
 TEST(DropOscillation, DropLeavesAWallProlateWithTheHangingBeadsStretch) {
-  const TearLiquidInput input = dripInput();
-  const TearLiquidSimulation simulation = simulatedToFirstDrop(input);
+  const LiquidTearInput input = dripInput();
+  const LiquidTearSimulation simulation = simulatedToFirstDrop(input);
   const FallingDrop drop = simulation.drops()[0];
   const BeadShape shape = hangingShape(input, drop.volume);
   // On the ledge (drawn as on a wall) the bead's long axis runs down the ledge, sin(59 deg) along
@@ -137,7 +137,7 @@ TEST(DropOscillation, DropLeavesAWallProlateWithTheHangingBeadsStretch) {
   EXPECT_GT(k, 1.2);
   EXPECT_NEAR(drop.oscillation.initialAmplitude, std::min(0.5, 2.0 * (k - 1.0) / (k + 2.0)), 1e-12);
   // At detachment the drawn drop is prolate along gravity by that ratio.
-  TearLiquidSimulation again(input);
+  LiquidTearSimulation again(input);
   again.advanceTo(drop.detachTime);
   const DropView view = again.state(drop.detachTime).drops.at(0);
   const double eps = drop.oscillation.initialAmplitude;
@@ -146,8 +146,8 @@ TEST(DropOscillation, DropLeavesAWallProlateWithTheHangingBeadsStretch) {
 }
 
 TEST(DropOscillation, DropLeavesACeilingOblateAsTheFlatCapIsDrawn) {
-  const TearLiquidInput input = dripInput(true);
-  const TearLiquidSimulation simulation = simulatedToFirstDrop(input);
+  const LiquidTearInput input = dripInput(true);
+  const LiquidTearSimulation simulation = simulatedToFirstDrop(input);
   const FallingDrop drop = simulation.drops()[0];
   const BeadShape shape = hangingShape(input, drop.volume);
   // Gravity along the normal: c = height / 2.
@@ -174,12 +174,12 @@ TEST(DropOscillation, DrawnMeshIsClosedAndKeepsTheDropsVolumeAtEveryAmplitude) {
 }
 
 TEST(DropOscillation, StateIsAFunctionOfTimeOnly) {
-  const TearLiquidInput input = dripInput();
-  TearLiquidSimulation stepped = simulatedToFirstDrop(input);
+  const LiquidTearInput input = dripInput();
+  LiquidTearSimulation stepped = simulatedToFirstDrop(input);
   const double t = stepped.drops()[0].detachTime + 0.0371;
   stepped.advanceTo(t);
-  const TearLiquidState direct = simulateTearLiquid(input, t);
-  const TearLiquidState sequenced = stepped.state(t);
+  const LiquidTearState direct = simulateLiquidTear(input, t);
+  const LiquidTearState sequenced = stepped.state(t);
   ASSERT_EQ(direct.drops.size(), 1u);
   ASSERT_EQ(sequenced.drops.size(), 1u);
   EXPECT_EQ(direct.drops[0].amplitude, sequenced.drops[0].amplitude);

@@ -7,10 +7,10 @@
 
 #include "geometry/glb_test_util.hpp"
 #include "geometry/mesh_test_util.hpp"
-#include "lacrima/geometry/error.hpp"
-#include "lacrima/geometry/eye.hpp"
-#include "lacrima/geometry/face_rig.hpp"
-#include "lacrima/geometry/gltf_asset.hpp"
+#include "lacrima/base/error.hpp"
+#include "lacrima/face/eye.hpp"
+#include "lacrima/rig/face_rig.hpp"
+#include "lacrima/io/gltf_asset.hpp"
 
 namespace lacrima {
 namespace eye_test {

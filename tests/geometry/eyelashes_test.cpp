@@ -5,12 +5,12 @@
 #include <cstdio>
 
 #include "geometry/glb_test_util.hpp"
-#include "lacrima/geometry/error.hpp"
-#include "lacrima/geometry/eye.hpp"
-#include "lacrima/geometry/eyelashes.hpp"
-#include "lacrima/geometry/face_rig.hpp"
-#include "lacrima/geometry/gltf_asset.hpp"
-#include "lacrima/geometry/surface_point.hpp"
+#include "lacrima/base/error.hpp"
+#include "lacrima/face/eye.hpp"
+#include "lacrima/face/eyelashes.hpp"
+#include "lacrima/rig/face_rig.hpp"
+#include "lacrima/io/gltf_asset.hpp"
+#include "lacrima/mesh/surface_point.hpp"
 
 namespace lacrima {
 namespace eyelashes_test {

@@ -4,8 +4,8 @@
 #include <functional>
 
 #include "geometry/face_test_util.hpp"
-#include "lacrima/geometry/error.hpp"
-#include "lacrima/geometry/face_controls.hpp"
+#include "lacrima/base/error.hpp"
+#include "lacrima/rig/face_controls.hpp"
 
 namespace lacrima {
 namespace face_controls_test {

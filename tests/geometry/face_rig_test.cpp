@@ -7,8 +7,8 @@
 
 #include "geometry/face_test_util.hpp"
 #include "geometry/glb_test_util.hpp"
-#include "lacrima/geometry/error.hpp"
-#include "lacrima/geometry/face_rig.hpp"
+#include "lacrima/base/error.hpp"
+#include "lacrima/rig/face_rig.hpp"
 
 namespace lacrima {
 namespace face_rig_test {

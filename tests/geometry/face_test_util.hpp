@@ -4,10 +4,10 @@
 #include <string>
 #include <vector>
 
-#include "lacrima/geometry/face_rig.hpp"
-#include "lacrima/geometry/gltf_asset.hpp"
-#include "lacrima/geometry/shapes.hpp"
-#include "lacrima/geometry/skinning.hpp"
+#include "lacrima/rig/face_rig.hpp"
+#include "lacrima/io/gltf_asset.hpp"
+#include "lacrima/mesh/shapes.hpp"
+#include "lacrima/rig/skinning.hpp"
 
 namespace lacrima::test {
 

@@ -6,8 +6,8 @@
 #include <numbers>
 #include <string>
 
-#include "lacrima/geometry/error.hpp"
-#include "lacrima/geometry/film_evaporation.hpp"
+#include "lacrima/base/error.hpp"
+#include "lacrima/liquid/film_evaporation.hpp"
 
 namespace lacrima {
 namespace film_evaporation_test {

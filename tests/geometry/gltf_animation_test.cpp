@@ -9,8 +9,8 @@
 #include <fmt/format.h>
 
 #include "geometry/glb_test_util.hpp"
-#include "lacrima/geometry/error.hpp"
-#include "lacrima/geometry/gltf_asset.hpp"
+#include "lacrima/base/error.hpp"
+#include "lacrima/io/gltf_asset.hpp"
 
 namespace lacrima {
 namespace gltf_animation_test {

@@ -8,7 +8,7 @@
 #include <map>
 
 #include "geometry/glb_test_util.hpp"
-#include "lacrima/geometry/gltf_asset.hpp"
+#include "lacrima/io/gltf_asset.hpp"
 
 namespace lacrima {
 namespace gltf_face_test {

@@ -8,8 +8,8 @@
 #include <string>
 
 #include "geometry/gltf_skin_test_util.hpp"
-#include "lacrima/geometry/error.hpp"
-#include "lacrima/geometry/gltf_asset.hpp"
+#include "lacrima/base/error.hpp"
+#include "lacrima/io/gltf_asset.hpp"
 
 namespace lacrima {
 namespace gltf_skin_test {

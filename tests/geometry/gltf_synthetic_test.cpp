@@ -3,8 +3,8 @@
 #include <gtest/gtest.h>
 
 #include "geometry/glb_test_util.hpp"
-#include "lacrima/geometry/error.hpp"
-#include "lacrima/geometry/gltf_asset.hpp"
+#include "lacrima/base/error.hpp"
+#include "lacrima/io/gltf_asset.hpp"
 
 namespace lacrima {
 namespace gltf_synthetic_test {

@@ -1,7 +1,7 @@
 // Perlin's gradient noise (gradient_noise.hpp): lattice zeros, range, smoothness, statistics.
-#include "lacrima/geometry/gradient_noise.hpp"
+#include "lacrima/base/gradient_noise.hpp"
 
-#include "lacrima/geometry/sampler.hpp"
+#include "lacrima/base/hash.hpp"
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 // the xy plane, z = height(x, y), two triangles per cell, counter-clockwise seen from +z.
 #include <functional>
 
-#include "lacrima/geometry/mesh.hpp"
+#include "lacrima/mesh/mesh.hpp"
 
 namespace lacrima::test {
 

@@ -7,8 +7,8 @@
 #include <numbers>
 
 #include "geometry/height_field_mesh.hpp"
-#include "lacrima/geometry/error.hpp"
-#include "lacrima/geometry/liquid_bead_mesh.hpp"
+#include "lacrima/base/error.hpp"
+#include "lacrima/liquid/liquid_bead_mesh.hpp"
 
 namespace lacrima {
 namespace liquid_bead_mesh_test {

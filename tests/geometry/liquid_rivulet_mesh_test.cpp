@@ -6,8 +6,8 @@
 #include <limits>
 #include <numbers>
 
-#include "lacrima/geometry/error.hpp"
-#include "lacrima/geometry/liquid_rivulet_mesh.hpp"
+#include "lacrima/base/error.hpp"
+#include "lacrima/liquid/liquid_rivulet_mesh.hpp"
 
 namespace lacrima {
 namespace liquid_rivulet_mesh_test {

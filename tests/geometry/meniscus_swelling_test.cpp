@@ -6,8 +6,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "lacrima/geometry/error.hpp"
-#include "lacrima/geometry/meniscus_swelling.hpp"
+#include "lacrima/base/error.hpp"
+#include "lacrima/liquid/meniscus_swelling.hpp"
 #include "support/swept_volume.hpp"
 
 namespace lacrima {

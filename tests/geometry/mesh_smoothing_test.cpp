@@ -6,8 +6,8 @@
 #include <cstdint>
 
 #include "geometry/height_field_mesh.hpp"
-#include "lacrima/geometry/error.hpp"
-#include "lacrima/geometry/mesh_smoothing.hpp"
+#include "lacrima/base/error.hpp"
+#include "lacrima/mesh/mesh_smoothing.hpp"
 
 namespace lacrima {
 namespace mesh_smoothing_test {

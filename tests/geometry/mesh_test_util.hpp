@@ -1,6 +1,6 @@
 #pragma once
 // Measures of triangle meshes shared by the geometry tests.
-#include "lacrima/geometry/mesh.hpp"
+#include "lacrima/mesh/mesh.hpp"
 
 namespace lacrima::test {
 

@@ -1,5 +1,5 @@
 // Moving least squares (Lin & Cheng 2013 section 4.2 step four, eqs. 8-14).
-#include "lacrima/geometry/moving_least_squares.hpp"
+#include "lacrima/mesh/moving_least_squares.hpp"
 
 #include <gtest/gtest.h>
 
@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "lacrima/geometry/error.hpp"
+#include "lacrima/base/error.hpp"
 
 namespace lacrima {
 namespace moving_least_squares_test {

@@ -1,7 +1,7 @@
 // Edit distance and "did you mean" suggestions.
 #include <gtest/gtest.h>
 
-#include "lacrima/geometry/name_suggestion.hpp"
+#include "lacrima/base/name_suggestion.hpp"
 
 namespace lacrima {
 namespace name_suggestion_test {

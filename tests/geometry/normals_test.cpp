@@ -1,8 +1,8 @@
 // Smooth normals: orientation, accuracy against analytic normals, welding across seams.
 #include <gtest/gtest.h>
 
-#include "lacrima/geometry/mesh.hpp"
-#include "lacrima/geometry/shapes.hpp"
+#include "lacrima/mesh/mesh.hpp"
+#include "lacrima/mesh/shapes.hpp"
 
 namespace lacrima {
 namespace normals_test {

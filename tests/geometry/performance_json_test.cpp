@@ -5,8 +5,8 @@
 #include <fstream>
 
 #include "geometry/glb_test_util.hpp"
-#include "lacrima/geometry/error.hpp"
-#include "lacrima/geometry/performance_track.hpp"
+#include "lacrima/base/error.hpp"
+#include "lacrima/io/performance_track.hpp"
 
 namespace lacrima {
 namespace performance_json_test {

@@ -6,8 +6,8 @@
 #include <random>
 
 #include "geometry/glb_test_util.hpp"
-#include "lacrima/geometry/error.hpp"
-#include "lacrima/geometry/performance_track.hpp"
+#include "lacrima/base/error.hpp"
+#include "lacrima/io/performance_track.hpp"
 
 namespace lacrima {
 namespace performance_track_test {

@@ -7,7 +7,7 @@
 #include <map>
 
 #include "geometry/mesh_test_util.hpp"
-#include "lacrima/geometry/region_refinement.hpp"
+#include "lacrima/rig/region_refinement.hpp"
 
 namespace lacrima {
 namespace region_refinement_test {

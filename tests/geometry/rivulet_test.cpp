@@ -8,9 +8,9 @@
 #include <cstdio>
 #include <numbers>
 
-#include "lacrima/geometry/error.hpp"
-#include "lacrima/geometry/rivulet.hpp"
-#include "lacrima/geometry/tear_liquid.hpp"
+#include "lacrima/base/error.hpp"
+#include "lacrima/liquid/rivulet.hpp"
+#include "lacrima/liquid/liquid_tear.hpp"
 
 namespace lacrima {
 namespace rivulet_test {
@@ -103,8 +103,8 @@ std::vector<LiquidPathSample> wallPath(double length, double overhangFrom) {
   return path;
 }
 
-TearLiquidInput cryingInput(double rate, double wellEnd, double length = 0.12, double overhangFrom = 0.1) {
-  TearLiquidInput input;
+LiquidTearInput cryingInput(double rate, double wellEnd, double length = 0.12, double overhangFrom = 0.1) {
+  LiquidTearInput input;
   input.path = wallPath(length, overhangFrom);
   input.params.source = WellingSource{.rate = rate, .start = 0.0, .end = wellEnd, .overflowVolume = 2.0 * kUl,
                                       .spillVolume = 2.0 * kUl};
@@ -114,7 +114,7 @@ TearLiquidInput cryingInput(double rate, double wellEnd, double length = 0.12, d
 }
 
 // Cells of the trail holding rivulet liquid, as the lowest one's far edge (m), and how many.
-double rivuletFront(const TearLiquidSimulation& simulation, double cellLength) {
+double rivuletFront(const LiquidTearSimulation& simulation, double cellLength) {
   double front = 0.0;
   const std::vector<double>& cells = simulation.cellRivuletVolume();
   for (size_t cell = 0; cell < cells.size(); ++cell)
@@ -124,8 +124,8 @@ double rivuletFront(const TearLiquidSimulation& simulation, double cellLength) {
 
 TEST(RivuletSimulation, TheFrontRunsAtTheShockSpeedAndTheRivuletCarriesTheWellingRateAtItsWidth) {
   const double rate = 6.0 * kUl;
-  TearLiquidInput input = cryingInput(rate, 1e30);
-  TearLiquidSimulation simulation(input);
+  LiquidTearInput input = cryingInput(rate, 1e30);
+  LiquidTearSimulation simulation(input);
   const RivuletFlow flow = simulation.rivuletFlowAt(0.05);
   const double a = rivuletHalfWidthForFlux(flow, rate);
   // Into dry skin the front is a shock, speed [Q] / [A] (Lighthill & Whitham 1955), where the jump
@@ -146,7 +146,7 @@ TEST(RivuletSimulation, TheFrontRunsAtTheShockSpeedAndTheRivuletCarriesTheWellin
   }
   simulation.advanceTo(8.0);  // long enough for the drop under the overhang to reach Tate's 25 uL
   // Steady: mid-path the cross-section carries the welling rate at Duffy & Moffatt's width.
-  const TearLiquidState state = simulation.state(simulation.time());
+  const LiquidTearState state = simulation.state(simulation.time());
   ASSERT_EQ(state.rivulets.size(), 1u);
   const RivuletView& rivulet = state.rivulets[0];
   EXPECT_EQ(rivulet.begin, 0.0);
@@ -167,8 +167,8 @@ TEST(RivuletSimulation, TheFrontRunsAtTheShockSpeedAndTheRivuletCarriesTheWellin
 }
 
 TEST(RivuletSimulation, WhenTheWellingStopsTheRivuletDrainsAndBreaksIntoBeads) {
-  TearLiquidInput input = cryingInput(8.0 * kUl, 2.0);
-  TearLiquidSimulation simulation(input);
+  LiquidTearInput input = cryingInput(8.0 * kUl, 2.0);
+  LiquidTearSimulation simulation(input);
   simulation.advanceTo(1.99);
   ASSERT_EQ(simulation.state(simulation.time()).rivulets.size(), 1u);
   EXPECT_TRUE(simulation.wellsAsRivulet());
@@ -183,7 +183,7 @@ TEST(RivuletSimulation, WhenTheWellingStopsTheRivuletDrainsAndBreaksIntoBeads) {
     mostBeads = std::max(mostBeads, live);
   }
   EXPECT_FALSE(simulation.wellsAsRivulet());
-  const TearLiquidState state = simulation.state(simulation.time());
+  const LiquidTearState state = simulation.state(simulation.time());
   std::printf("[ rivulet ] 6 s after the welling stopped: %zu stretches, %zu beads (at most %d), %.3f uL of rivulet\n",
               state.rivulets.size(), state.beads.size(), mostBeads, simulation.budget().rivulet / kUl);
   EXPECT_TRUE(state.rivulets.empty());
@@ -201,9 +201,9 @@ TEST(RivuletSimulation, WhenTheWellingStopsTheRivuletDrainsAndBreaksIntoBeads) {
 }
 
 TEST(RivuletSimulation, TheRivuletSwallowsABeadInItsWay) {
-  TearLiquidInput input = cryingInput(6.0 * kUl, 1e30);
+  LiquidTearInput input = cryingInput(6.0 * kUl, 1e30);
   input.params.initialBeads = {{0.02, 0.3 * kUl}};  // too small to slide down the wall
-  TearLiquidSimulation simulation(input);
+  LiquidTearSimulation simulation(input);
   simulation.advanceTo(0.3);
   ASSERT_EQ(simulation.beads()[0].phase, BeadPhase::Pinned);
   simulation.advanceTo(1.5);
@@ -213,10 +213,10 @@ TEST(RivuletSimulation, TheRivuletSwallowsABeadInItsWay) {
 }
 
 TEST(RivuletSimulation, BelowTheFormingRateTheTearSpillsBeadsExactlyAsWithoutRivulets) {
-  TearLiquidInput with = cryingInput(3.0 * kUl, 3.0);
-  TearLiquidInput without = with;
+  LiquidTearInput with = cryingInput(3.0 * kUl, 3.0);
+  LiquidTearInput without = with;
   without.params.rivulet.formFlowRate = 0.0;
-  TearLiquidSimulation a(with), b(without);
+  LiquidTearSimulation a(with), b(without);
   a.advanceTo(5.0);
   b.advanceTo(5.0);
   EXPECT_EQ(a.budget().rivulet, 0.0);
@@ -250,11 +250,11 @@ TEST(WellingSource, AKeyedRateIsIntegratedExactlyBetweenItsKeys) {
 // carries less (Q ~ a^4), the meniscus goes back to spilling beads once the rate is under the
 // forming rate, and the stream breaks up into beads.
 TEST(RivuletSimulation, AsTheCryingEasesTheRivuletNarrowsAndBreaksIntoBeads) {
-  TearLiquidInput input = cryingInput(0.0, 1e30);
+  LiquidTearInput input = cryingInput(0.0, 1e30);
   input.params.source.rateKeys = {{2.5, 10.0 * kUl}, {4.5, 0.0}};
-  TearLiquidSimulation simulation(input);
+  LiquidTearSimulation simulation(input);
   auto halfWidthAt = [&](double s) {
-    const TearLiquidState state = simulation.state(simulation.time());
+    const LiquidTearState state = simulation.state(simulation.time());
     for (const RivuletView& rivulet : state.rivulets)
       for (const RivuletStation& station : rivulet.stations)
         if (std::abs(station.arcLength - s) < 3e-4) return station.halfWidth;
@@ -284,24 +284,24 @@ TEST(RivuletSimulation, AsTheCryingEasesTheRivuletNarrowsAndBreaksIntoBeads) {
 }
 
 TEST(RivuletSimulation, RejectsBadRivuletParameters) {
-  TearLiquidInput input = cryingInput(6.0 * kUl, 1e30);
+  LiquidTearInput input = cryingInput(6.0 * kUl, 1e30);
   input.params.rivulet.breakFlowRate = 5.0 * kUl;
   input.params.rivulet.formFlowRate = 4.0 * kUl;
-  EXPECT_THROW(TearLiquidSimulation{input}, InputError);
+  EXPECT_THROW(LiquidTearSimulation{input}, InputError);
   input = cryingInput(6.0 * kUl, 1e30);
   input.params.contactAngles = ContactAngleHysteresis{deg(110.0), deg(95.0)};
   try {
-    TearLiquidSimulation simulation(input);
+    LiquidTearSimulation simulation(input);
     FAIL() << "a receding angle of 95 degrees was accepted for a rivulet";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("receding"), std::string::npos) << e.what();
   }
   input.params.rivulet.formFlowRate = 0.0;  // without rivulets any angle goes
-  EXPECT_NO_THROW(TearLiquidSimulation{input});
+  EXPECT_NO_THROW(LiquidTearSimulation{input});
   input.params.source.rateKeys = {{1.0, 1.0 * kUl}, {1.0, 2.0 * kUl}};
-  EXPECT_THROW(TearLiquidSimulation{input}, InputError);
+  EXPECT_THROW(LiquidTearSimulation{input}, InputError);
   input.params.source.rateKeys = {{1.0, -1.0 * kUl}};
-  EXPECT_THROW(TearLiquidSimulation{input}, InputError);
+  EXPECT_THROW(LiquidTearSimulation{input}, InputError);
 }
 
 }  // namespace rivulet_test

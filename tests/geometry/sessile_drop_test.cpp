@@ -8,8 +8,8 @@
 #include <limits>
 #include <numbers>
 
-#include "lacrima/geometry/error.hpp"
-#include "lacrima/geometry/sessile_drop.hpp"
+#include "lacrima/base/error.hpp"
+#include "lacrima/liquid/sessile_drop.hpp"
 
 namespace lacrima {
 namespace sessile_drop_test {

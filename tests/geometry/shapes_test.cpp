@@ -4,9 +4,9 @@
 
 #include <map>
 
-#include "lacrima/geometry/error.hpp"
-#include "lacrima/geometry/mesh.hpp"
-#include "lacrima/geometry/shapes.hpp"
+#include "lacrima/base/error.hpp"
+#include "lacrima/mesh/mesh.hpp"
+#include "lacrima/mesh/shapes.hpp"
 
 namespace lacrima {
 namespace shapes_test {

@@ -8,9 +8,9 @@
 #include <functional>
 #include <vector>
 
-#include "lacrima/geometry/error.hpp"
-#include "lacrima/geometry/mesh.hpp"
-#include "lacrima/geometry/shedding_tear.hpp"
+#include "lacrima/base/error.hpp"
+#include "lacrima/mesh/mesh.hpp"
+#include "lacrima/tears/shedding_tear.hpp"
 #include "height_field_mesh.hpp"
 
 namespace lacrima {

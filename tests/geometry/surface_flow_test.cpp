@@ -1,7 +1,7 @@
 // Flow paths (steepest descent on triangle meshes): exact on planes, cylinders and a V-shaped
 // crease, converging on a sphere, robust at vertices, edges, boundaries, seams and degenerate
 // triangles, and bitwise repeatable.
-#include "lacrima/geometry/surface_flow.hpp"
+#include "lacrima/mesh/surface_flow.hpp"
 
 #include <gtest/gtest.h>
 
@@ -14,10 +14,10 @@
 #include <vector>
 
 #include "geometry/glb_test_util.hpp"
-#include "lacrima/geometry/error.hpp"
-#include "lacrima/geometry/gltf_asset.hpp"
-#include "lacrima/geometry/mesh.hpp"
-#include "lacrima/geometry/shapes.hpp"
+#include "lacrima/base/error.hpp"
+#include "lacrima/io/gltf_asset.hpp"
+#include "lacrima/mesh/mesh.hpp"
+#include "lacrima/mesh/shapes.hpp"
 
 namespace lacrima {
 namespace surface_flow_test {

@@ -1,7 +1,7 @@
 // Surface points at a vertex and at a texture coordinate.
 #include <gtest/gtest.h>
 
-#include "lacrima/geometry/surface_point.hpp"
+#include "lacrima/mesh/surface_point.hpp"
 
 namespace lacrima {
 namespace surface_point_test {

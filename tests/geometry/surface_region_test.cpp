@@ -7,9 +7,9 @@
 #include <cstring>
 #include <vector>
 
-#include "lacrima/geometry/error.hpp"
-#include "lacrima/geometry/shedding_tear.hpp"
-#include "lacrima/geometry/surface_region.hpp"
+#include "lacrima/base/error.hpp"
+#include "lacrima/tears/shedding_tear.hpp"
+#include "lacrima/mesh/surface_region.hpp"
 #include "height_field_mesh.hpp"
 
 namespace lacrima {

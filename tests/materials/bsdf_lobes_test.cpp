@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "bsdf_cases.hpp"
-#include "lacrima/geometry/sampler.hpp"
+#include "lacrima/base/hash.hpp"
 #include "lacrima/materials/skin.hpp"
 
 namespace lacrima {

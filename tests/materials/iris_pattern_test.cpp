@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "lacrima/geometry/eye.hpp"
-#include "lacrima/geometry/sampler.hpp"
+#include "lacrima/face/eye.hpp"
+#include "lacrima/base/hash.hpp"
 #include "lacrima/materials/iris_pattern.hpp"
 
 namespace lacrima {

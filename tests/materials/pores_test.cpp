@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "lacrima/geometry/sampler.hpp"
+#include "lacrima/base/hash.hpp"
 #include "lacrima/materials/pores.hpp"
 #include "test_support.hpp"
 

@@ -3,12 +3,12 @@
 #include <cmath>
 #include <cstdint>
 
-#include "lacrima/geometry/math.hpp"
-#include "lacrima/geometry/sampler.hpp"
+#include "lacrima/base/math.hpp"
+#include "lacrima/base/hash.hpp"
 
 namespace lacrima::test {
 
-// Deterministic stream: value k is a pure function of (seed, k) (geometry/sampler.hpp hashing).
+// Deterministic stream: value k is a pure function of (seed, k) (renderer/sampler.hpp hashing).
 class TestRng {
  public:
   explicit TestRng(uint64_t seed) : key_(mix64(seed)) {}

@@ -52,7 +52,7 @@ TEST(WetSkinBsdf, CoverageGrowsWithFilmThickness) {
   EXPECT_EQ(wetFilmCoverage(0.0f), 0.0f);
   EXPECT_EQ(wetFilmCoverage(-1e-6f), 0.0f);
   EXPECT_NEAR(wetFilmCoverage(kWetFilmCoverageThickness * std::log(2.0f)), 0.5f, 1e-6f);
-  EXPECT_GT(wetFilmCoverage(20e-6f), 0.9999f);  // a fresh trail (TearLiquidParams::filmThickness)
+  EXPECT_GT(wetFilmCoverage(20e-6f), 0.9999f);  // a fresh trail (LiquidTearParams::filmThickness)
   EXPECT_LT(wetFilmCoverage(20e-6f), 1.0f);
   float previous = 0.0f;
   for (float d = 1e-7f; d < 3e-5f; d *= 1.5f) {

@@ -12,7 +12,7 @@
 #include <memory>
 #include <vector>
 
-#include "lacrima/geometry/shapes.hpp"
+#include "lacrima/mesh/shapes.hpp"
 #include "lacrima/renderer/environment.hpp"
 #include "lacrima/renderer/render.hpp"
 #include "support/test_scenes.hpp"

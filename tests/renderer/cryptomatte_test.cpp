@@ -10,8 +10,8 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
-#include "lacrima/geometry/sampler.hpp"
-#include "lacrima/geometry/shapes.hpp"
+#include "lacrima/base/hash.hpp"
+#include "lacrima/mesh/shapes.hpp"
 #include "lacrima/renderer/cryptomatte.hpp"
 #include "lacrima/renderer/image_output.hpp"
 #include "lacrima/renderer/render.hpp"

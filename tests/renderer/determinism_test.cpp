@@ -4,8 +4,8 @@
 
 #include <cstring>
 
-#include "lacrima/geometry/error.hpp"
-#include "lacrima/geometry/shapes.hpp"
+#include "lacrima/base/error.hpp"
+#include "lacrima/mesh/shapes.hpp"
 #include "lacrima/renderer/render.hpp"
 #include "support/test_scenes.hpp"
 

@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "lacrima/geometry/error.hpp"
-#include "lacrima/geometry/sampler.hpp"
+#include "lacrima/base/error.hpp"
+#include "lacrima/renderer/sampler.hpp"
 #include "lacrima/renderer/environment.hpp"
 
 namespace lacrima {

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "lacrima/geometry/error.hpp"
+#include "lacrima/base/error.hpp"
 #include "lacrima/renderer/image_output.hpp"
 
 namespace lacrima {

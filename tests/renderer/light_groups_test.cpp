@@ -4,7 +4,7 @@
 // was.
 #include <gtest/gtest.h>
 
-#include "lacrima/geometry/shapes.hpp"
+#include "lacrima/mesh/shapes.hpp"
 #include "lacrima/renderer/light_groups.hpp"
 #include "lacrima/renderer/render.hpp"
 #include "support/test_scenes.hpp"

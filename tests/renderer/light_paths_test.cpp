@@ -8,7 +8,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "lacrima/geometry/shapes.hpp"
+#include "lacrima/mesh/shapes.hpp"
 #include "lacrima/materials/skin.hpp"
 #include "lacrima/renderer/camera.hpp"
 #include "lacrima/renderer/environment.hpp"

@@ -6,7 +6,7 @@
 
 #include <cstring>
 
-#include "lacrima/geometry/shapes.hpp"
+#include "lacrima/mesh/shapes.hpp"
 #include "lacrima/renderer/render.hpp"
 #include "support/test_scenes.hpp"
 

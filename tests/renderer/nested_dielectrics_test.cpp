@@ -5,9 +5,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "lacrima/geometry/shapes.hpp"
+#include "lacrima/mesh/shapes.hpp"
 #include "lacrima/materials/fresnel.hpp"
-#include "lacrima/renderer/medium_stack.hpp"
+#include "medium_stack.hpp"
 #include "lacrima/renderer/render.hpp"
 #include "support/test_scenes.hpp"
 

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <string>
 
-#include "lacrima/geometry/shapes.hpp"
+#include "lacrima/mesh/shapes.hpp"
 #include "lacrima/renderer/render.hpp"
 #include "support/test_scenes.hpp"
 

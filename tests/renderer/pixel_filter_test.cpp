@@ -8,7 +8,7 @@
 #include <cmath>
 #include <vector>
 
-#include "lacrima/geometry/sampler.hpp"
+#include "lacrima/renderer/sampler.hpp"
 #include "lacrima/renderer/pixel_filter.hpp"
 
 namespace lacrima {

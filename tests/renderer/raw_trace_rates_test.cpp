@@ -2,7 +2,7 @@
 // the very rays the single-ray rates time, so both ways must find the same hits.
 #include <gtest/gtest.h>
 
-#include "lacrima/geometry/shapes.hpp"
+#include "lacrima/mesh/shapes.hpp"
 #include "lacrima/renderer/bench.hpp"
 #include "support/test_scenes.hpp"
 

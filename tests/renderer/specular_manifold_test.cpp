@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "lacrima/materials/material.hpp"
-#include "lacrima/renderer/specular_manifold.hpp"
+#include "specular_manifold.hpp"
 
 namespace lacrima {
 namespace specular_manifold_test {

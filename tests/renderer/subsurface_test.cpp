@@ -7,7 +7,7 @@
 #include <cmath>
 #include <cstring>
 
-#include "lacrima/geometry/shapes.hpp"
+#include "lacrima/mesh/shapes.hpp"
 #include "lacrima/materials/diffusion_profile.hpp"
 #include "lacrima/materials/fresnel.hpp"
 #include "lacrima/materials/subsurface.hpp"

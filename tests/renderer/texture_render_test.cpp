@@ -11,12 +11,12 @@
 #include <chrono>
 #include <functional>
 
-#include "lacrima/geometry/error.hpp"
-#include "lacrima/geometry/shapes.hpp"
+#include "lacrima/base/error.hpp"
+#include "lacrima/mesh/shapes.hpp"
 #include "lacrima/renderer/render.hpp"
 #include "support/test_directory.hpp"
 #include "support/test_scenes.hpp"
-#include "lacrima/geometry/eye.hpp"
+#include "lacrima/face/eye.hpp"
 #include "lacrima/materials/iris_pattern.hpp"
 #include "lacrima/materials/texture_values.hpp"
 

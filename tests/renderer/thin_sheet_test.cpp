@@ -4,7 +4,7 @@
 // lies on the lid margin, does not hide that surface.
 #include <gtest/gtest.h>
 
-#include "lacrima/geometry/shapes.hpp"
+#include "lacrima/mesh/shapes.hpp"
 #include "lacrima/materials/fresnel.hpp"
 #include "lacrima/renderer/render.hpp"
 #include "support/test_scenes.hpp"

@@ -3,7 +3,7 @@
 // pbrt-v4 §9.5.2): the camera sees what a diver sees, not what an outside observer sees.
 #include <gtest/gtest.h>
 
-#include "lacrima/geometry/shapes.hpp"
+#include "lacrima/mesh/shapes.hpp"
 #include "lacrima/materials/fresnel.hpp"
 #include "lacrima/renderer/render.hpp"
 #include "support/test_scenes.hpp"

@@ -17,7 +17,7 @@ namespace wet_skin_render_test {
 using test::lookAt;
 using test::smallSettings;
 
-constexpr float kTrailFilm = 20e-6f;  // a fresh tear trail (TearLiquidParams::filmThickness)
+constexpr float kTrailFilm = 20e-6f;  // a fresh tear trail (LiquidTearParams::filmThickness)
 
 // A skin floor (y = 0) seen from 45 degrees above, filling the view, under a uniform environment
 // of radiance 1; film metres on every vertex (negative: no wetness field at all).

@@ -5,7 +5,7 @@
 
 #include <fstream>
 
-#include "lacrima/geometry/face_rig.hpp"
+#include "lacrima/rig/face_rig.hpp"
 #include "shot_test_support.hpp"
 
 namespace lacrima {

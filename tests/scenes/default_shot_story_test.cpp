@@ -25,7 +25,7 @@ class DefaultShotStory : public ::testing::Test {
     shot_ = nullptr;
   }
   static const ShotLiquidTear& tear() { return shot_->liquidTears.at(0); }
-  static TearLiquidState stateAt(double frame) { return liquidTearStateAt(*shot_, tear(), frame); }
+  static LiquidTearState stateAt(double frame) { return liquidTearStateAt(*shot_, tear(), frame); }
 
   static Shot* shot_;
 };
@@ -60,7 +60,7 @@ TEST_F(DefaultShotStory, TheHangingDropLetsGoOnCameraAndFallsClearOfTheSkin) {
   ASSERT_NE(skin, nullptr) << skinName;
   double closest = 1e9;  // the smallest ellipsoidal radius of a skin vertex (1: on the drop's surface)
   for (double f = firstFall; f <= firstFall + 2.0; f += 0.25) {
-    const TearLiquidState state = stateAt(f);
+    const LiquidTearState state = stateAt(f);
     for (size_t d = before; d < state.drops.size(); ++d) {
       const DropView& drop = state.drops[d];
       for (const Vec3& v : skin->positions) {

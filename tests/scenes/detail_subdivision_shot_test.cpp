@@ -5,7 +5,7 @@
 #include <map>
 #include <set>
 
-#include "lacrima/geometry/surface_point.hpp"
+#include "lacrima/mesh/surface_point.hpp"
 #include "shot_test_support.hpp"
 
 namespace lacrima {

@@ -5,8 +5,8 @@
 
 #include <limits>
 
-#include "lacrima/geometry/closest_point_grid.hpp"
-#include "lacrima/geometry/surface_point.hpp"
+#include "lacrima/mesh/closest_point_grid.hpp"
+#include "lacrima/mesh/surface_point.hpp"
 #include "lacrima/scenes/liquid_tear.hpp"
 #include "liquid_tear_test_support.hpp"
 #include "shot_test_support.hpp"
@@ -35,7 +35,7 @@ std::vector<const MeshInstance*> rivuletsOf(const Frame& frame) {
 TEST(LiquidRivuletShot, ARivuletRunsDownTheCheekAsAClosedMeshJustUnderTheSkinItWets) {
   const Shot shot = loadShot(writeShot("rivulet_shot.json", ictFaceShot(kTear, "", "", kFrames)));
   const int f = 30;
-  const TearLiquidState state = liquidTearStateAt(shot, shot.liquidTears[0], f);
+  const LiquidTearState state = liquidTearStateAt(shot, shot.liquidTears[0], f);
   ASSERT_EQ(state.rivulets.size(), 1u);
   EXPECT_TRUE(state.beads.empty() || state.beads.back().phase == BeadPhase::Hanging);
   const Frame frame = buildFrame(shot, f);
@@ -88,7 +88,7 @@ TEST(LiquidRivuletShot, AKeyedRateReachesTheSimulationInSIUnits) {
   EXPECT_NEAR(polyline.rateKeys.back().second, 2.0 * kMicrolitre, 1e-15);
   EXPECT_EQ(b.liquidTears[0].input.params.source.rateKeys, polyline.rateKeys);  // what the simulation runs on
   // The whole simulation keeps its volume with a keyed rate.
-  EXPECT_LT(tearLiquidVolumeBudget(b.liquidTears[0].input, 2.0).relativeImbalance(), 1e-6);
+  EXPECT_LT(liquidTearVolumeBudget(b.liquidTears[0].input, 2.0).relativeImbalance(), 1e-6);
 }
 
 TEST(LiquidRivuletShot, BadRivuletKeysGiveExactMessages) {

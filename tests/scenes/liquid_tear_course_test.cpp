@@ -11,7 +11,7 @@
 #include <numbers>
 
 #include "geometry/height_field_mesh.hpp"
-#include "lacrima/geometry/surface_point.hpp"
+#include "lacrima/mesh/surface_point.hpp"
 #include "lacrima/scenes/liquid_tear.hpp"
 #include "shot_test_support.hpp"
 
@@ -116,7 +116,7 @@ Track slidingTrack(const std::shared_ptr<const TurningSheet>& sheet) {
   for (int frame = 1; frame <= 24; ++frame) {
     LiquidTearRun run(shot, tear);
     run.advanceTo(frame);
-    const TearLiquidState state = run.state(frame);
+    const LiquidTearState state = run.state(frame);
     if (state.beads.empty() || state.beads[0].phase != BeadPhase::Sliding) continue;
     const SurfacePoint at = liquidTearPathPoint(run.course().path, state.beads[0].arcLength);
     const Vec3 onTurned = surfacePosition(sheet->at(frame).skin, at);
@@ -220,7 +220,7 @@ TEST(LiquidTearCourse, AStillSurfaceKeepsOneCourseAndNeverReroutes) {
   EXPECT_EQ(tear.courses->tracedCount(), 1u);
   EXPECT_EQ(tear.courses->at(60), tear.courses->at(0));
   // Bitwise the simulation on the single path, as before courses moved.
-  TearLiquidSimulation fixed(tear.input);
+  LiquidTearSimulation fixed(tear.input);
   fixed.advanceTo(liquidTearSeconds(shot, tear, 60.0));
   ASSERT_EQ(fixed.beads().size(), run.simulation().beads().size());
   for (size_t i = 0; i < fixed.beads().size(); ++i) EXPECT_EQ(fixed.beads()[i].arcLength, run.simulation().beads()[i].arcLength);

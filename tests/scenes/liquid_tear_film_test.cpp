@@ -7,7 +7,7 @@
 #include <cmath>
 #include <limits>
 
-#include "lacrima/geometry/surface_point.hpp"
+#include "lacrima/mesh/surface_point.hpp"
 #include "lacrima/scenes/liquid_tear.hpp"
 #include "liquid_tear_film.hpp"  // scenes/src: the film and its definition evaluated directly
 #include "shot_test_support.hpp"
@@ -52,7 +52,7 @@ size_t nearestVertex(const TriangleMesh& mesh, const Vec3& p) {
 
 // Arc length of the single bead at a frame (the test tear has one), or -1 without one.
 double beadArcLength(const Shot& shot, int frame) {
-  const TearLiquidState state = liquidTearStateAt(shot, shot.liquidTears[0], frame);
+  const LiquidTearState state = liquidTearStateAt(shot, shot.liquidTears[0], frame);
   return state.beads.empty() ? -1.0 : state.beads.front().arcLength;
 }
 
@@ -77,7 +77,7 @@ TEST(LiquidTearFilm, TrailBehindTheBeadIsWetAndFarSkinDry) {
   const MeshInstance& skin = skinOf(frame, shot);
   ASSERT_EQ(skin.wetness.size(), skin.mesh.vertexCount());
   const ShotLiquidTear& tear = shot.liquidTears[0];
-  const TearLiquidState state = liquidTearStateAt(shot, tear, f);
+  const LiquidTearState state = liquidTearStateAt(shot, tear, f);
   // Skin vertices on the trail, 0.5 to 1.5 cm behind the bead: wet, about as thick as the film.
   const double bead = beadArcLength(shot, f);
   int onTrail = 0;

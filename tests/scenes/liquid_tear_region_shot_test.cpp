@@ -7,7 +7,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "lacrima/geometry/surface_point.hpp"
+#include "lacrima/mesh/surface_point.hpp"
 #include "lacrima/scenes/liquid_tear.hpp"
 #include "liquid_tear_test_support.hpp"
 #include "shot_test_support.hpp"
@@ -113,7 +113,7 @@ TEST(LiquidTearRegionShot, BeadMeshesInTheRegionAreDrawnAtItsContactAngle) {
     // Frame 26: the first bead, a frame after the overflow; on the oily skin it already slides (6 mm
     // down), on the tear's own angles it is still pinned at the source.
     const int f = 26;
-    const TearLiquidState state = liquidTearStateAt(*shot, shot->liquidTears[0], f);
+    const LiquidTearState state = liquidTearStateAt(*shot, shot->liquidTears[0], f);
     const Frame frame = buildFrame(*shot, f);
     const auto beads = beadsOf(frame);
     ASSERT_EQ(state.beads.size(), 1u);

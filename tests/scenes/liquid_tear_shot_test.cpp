@@ -9,9 +9,9 @@
 #include <cmath>
 #include <limits>
 
-#include "lacrima/geometry/closest_point_grid.hpp"
-#include "lacrima/geometry/surface_flow.hpp"
-#include "lacrima/geometry/surface_point.hpp"
+#include "lacrima/mesh/closest_point_grid.hpp"
+#include "lacrima/mesh/surface_flow.hpp"
+#include "lacrima/mesh/surface_point.hpp"
 #include "lacrima/scenes/liquid_tear.hpp"
 #include "liquid_tear_test_support.hpp"
 #include "shot_test_support.hpp"
@@ -112,7 +112,7 @@ TEST(LiquidTearShot, BeadAppearsAtTheOverflowAndRunsDown) {
   ASSERT_GT(first, 1);
   EXPECT_TRUE(beadsOf(buildFrame(shot, first - 1)).empty());
   EXPECT_FALSE(beadsOf(buildFrame(shot, first)).empty());
-  const TearLiquidState atFirst = liquidTearStateAt(shot, shot.liquidTears[0], first);
+  const LiquidTearState atFirst = liquidTearStateAt(shot, shot.liquidTears[0], first);
   ASSERT_FALSE(atFirst.beads.empty());
   // 10 uL at 10 uL/s: the meniscus overflows at t = 1 s (to the 1 ms step); the first frame at or
   // after that shows the 8 uL bead.
@@ -135,7 +135,7 @@ TEST(LiquidTearShot, BeadAppearsAtTheOverflowAndRunsDown) {
     previous = lowest;
   }
   EXPECT_GE(moved, 2);
-  const TearLiquidState end = liquidTearStateAt(shot, shot.liquidTears[0], kFrames);
+  const LiquidTearState end = liquidTearStateAt(shot, shot.liquidTears[0], kFrames);
   double farthest = 0.0;
   for (const BeadView& b : end.beads) farthest = std::max(farthest, b.arcLength);
   std::printf("[ liquid ] first bead at frame %d (t = %.3f s); at t = %.3f s the farthest bead is %.4f m down the "
@@ -238,7 +238,7 @@ TEST(LiquidTearShot, AFrameOnOneThreadEqualsTheFrameOnAllCores) {
 TEST(LiquidTearShot, SimulationCostPerFrameIsSmall) {
   const Shot shot = loadTearShot("liquid_cost.json");
   const auto start = std::chrono::steady_clock::now();
-  const TearLiquidState state = liquidTearStateAt(shot, shot.liquidTears[0], kFrames);
+  const LiquidTearState state = liquidTearStateAt(shot, shot.liquidTears[0], kFrames);
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   std::printf("[ liquid ] simulating the 3 s shot to its last frame: %.2f ms\n", ms);
   EXPECT_GE(state.time, 2.95);
@@ -260,7 +260,7 @@ TEST(LiquidTearShot, BeadsFollowTheDeformingFace) {
   ASSERT_FALSE(moving.empty());
   // The smile re-routes the course (it is traced again on each frame's pose), so the liquid state
   // differs a little ...
-  const TearLiquidState a = liquidTearStateAt(shot, shot.liquidTears[0], f),
+  const LiquidTearState a = liquidTearStateAt(shot, shot.liquidTears[0], f),
                         b = liquidTearStateAt(still, still.liquidTears[0], f);
   ASSERT_EQ(a.beads.size(), b.beads.size());
   const FlowPath& course = liquidTearCourseAt(shot, shot.liquidTears[0], f)->path;
@@ -297,9 +297,9 @@ TEST(LiquidTearShot, DetachedDropsAreRingingMeshesUnderAShutter) {
   const Shot shot = loadTearShot("liquid_drip.json", drip, shutter);
   int withDrops = 0;
   for (int f = 25; f <= kFrames; ++f) {
-    const TearLiquidState state = liquidTearStateAt(shot, shot.liquidTears[0], f - 0.25);
+    const LiquidTearState state = liquidTearStateAt(shot, shot.liquidTears[0], f - 0.25);
     if (state.drops.empty()) continue;
-    const TearLiquidState atClose = liquidTearStateAt(shot, shot.liquidTears[0], f + 0.25);
+    const LiquidTearState atClose = liquidTearStateAt(shot, shot.liquidTears[0], f + 0.25);
     const Frame frame = buildFrame(shot, f);
     EXPECT_TRUE(frame.spheres.empty()) << "a fresh drop rings visibly: a mesh";
     std::vector<const MeshInstance*> drops;
@@ -329,7 +329,7 @@ TEST(LiquidTearShot, SlidingBeadsAreMotionBlurredUnderAShutter) {
   const Shot shot = loadTearShot("liquid_bead_blur.json", kTear, shutter);
   int blurred = 0;
   for (int f = 25; f <= kFrames && blurred == 0; ++f) {
-    const TearLiquidState state = liquidTearStateAt(shot, shot.liquidTears[0], f - 0.25);
+    const LiquidTearState state = liquidTearStateAt(shot, shot.liquidTears[0], f - 0.25);
     if (state.beads.empty() || state.beads[0].phase != BeadPhase::Sliding) continue;
     const Frame frame = buildFrame(shot, f);  // kept: beadsOf points into it (ASan: use after free)
     const auto beads = beadsOf(frame);
@@ -356,7 +356,7 @@ TEST(LiquidTearShot, SlidingBeadsAreMotionBlurredUnderAShutter) {
 TEST(LiquidTearShot, VolumeBudgetIsBalanced) {
   const Shot shot = loadTearShot("liquid_budget.json");
   for (double t : {0.5, 1.2, 2.0, 3.0}) {
-    const VolumeBudget budget = tearLiquidVolumeBudget(shot.liquidTears[0].input, t);
+    const VolumeBudget budget = liquidTearVolumeBudget(shot.liquidTears[0].input, t);
     EXPECT_NEAR(budget.source, 10e-9 * t, 1e-11) << t;
     EXPECT_LT(budget.relativeImbalance(), 1e-6) << t;
   }
@@ -365,10 +365,10 @@ TEST(LiquidTearShot, VolumeBudgetIsBalanced) {
 TEST(LiquidTearShot, FilmThicknessAlongThePathIsAvailable) {
   const Shot shot = loadTearShot("liquid_film.json");
   const ShotLiquidTear& tear = shot.liquidTears[0];
-  const TearLiquidState before = liquidTearStateAt(shot, tear, 20);
+  const LiquidTearState before = liquidTearStateAt(shot, tear, 20);
   ASSERT_EQ(before.sampleFilmThickness.size(), tear.path.points.size());
   for (double h : before.sampleFilmThickness) EXPECT_EQ(h, 0.0);
-  const TearLiquidState after = liquidTearStateAt(shot, tear, kFrames);
+  const LiquidTearState after = liquidTearStateAt(shot, tear, kFrames);
   ASSERT_EQ(after.sampleFilmThickness.size(), tear.path.points.size());
   double wettest = 0.0;
   for (double h : after.sampleFilmThickness) wettest = std::max(wettest, h);
@@ -408,8 +408,8 @@ TEST(LiquidTearShot, AnEarlierWellStartStartsTheSimulationBeforeTheShot) {
   EXPECT_EQ(early.liquidTears[0].simulationStartFrame, -23.0);
   EXPECT_EQ(early.liquidTears[0].params.source.start, 0.0);
   for (int f : {1, 10, 40}) {
-    const TearLiquidState a = liquidTearStateAt(early, early.liquidTears[0], f);
-    const TearLiquidState b = liquidTearStateAt(late, late.liquidTears[0], f + 24);
+    const LiquidTearState a = liquidTearStateAt(early, early.liquidTears[0], f);
+    const LiquidTearState b = liquidTearStateAt(late, late.liquidTears[0], f + 24);
     EXPECT_EQ(a.time, b.time) << f;
     ASSERT_EQ(a.beads.size(), b.beads.size()) << f;
     for (size_t i = 0; i < a.beads.size(); ++i) EXPECT_EQ(a.beads[i].arcLength, b.beads[i].arcLength) << f;

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <limits>
 
-#include "lacrima/geometry/shedding_tear.hpp"
-#include "lacrima/geometry/surface_point.hpp"
+#include "lacrima/tears/shedding_tear.hpp"
+#include "lacrima/mesh/surface_point.hpp"
 #include "geometry/gltf_builder_test_util.hpp"
 #include "shot_test_support.hpp"
 

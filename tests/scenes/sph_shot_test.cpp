@@ -11,8 +11,8 @@
 #include <optional>
 #include <string>
 
-#include "lacrima/geometry/error.hpp"
-#include "lacrima/geometry/mesh.hpp"
+#include "lacrima/base/error.hpp"
+#include "lacrima/mesh/mesh.hpp"
 #include "lacrima/scenes/shot.hpp"
 #include "lacrima/sph/surface_tension.hpp"
 #include "scenes/shot_test_support.hpp"

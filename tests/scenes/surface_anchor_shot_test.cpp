@@ -3,7 +3,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include "lacrima/geometry/surface_point.hpp"
+#include "lacrima/mesh/surface_point.hpp"
 #include "shot_test_support.hpp"
 
 namespace lacrima {

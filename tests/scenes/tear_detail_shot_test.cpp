@@ -2,8 +2,8 @@
 // loadShot/buildFrame against the geometry library evaluated directly.
 #include <gtest/gtest.h>
 
-#include "lacrima/geometry/detail_patterns.hpp"
-#include "lacrima/geometry/dripping_tear.hpp"
+#include "lacrima/face/detail_patterns.hpp"
+#include "lacrima/tears/dripping_tear.hpp"
 #include "shot_test_support.hpp"
 
 namespace lacrima {

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
-#include "lacrima/geometry/sampler.hpp"
+#include "lacrima/base/hash.hpp"
 #include "lacrima/sph/neighbour_grid.hpp"
 
 namespace lacrima::sph {

@@ -5,7 +5,7 @@
 // counter-clockwise winding faces). Exact for a prism whose side faces are planar.
 #include <cmath>
 
-#include "lacrima/geometry/mesh.hpp"
+#include "lacrima/mesh/mesh.hpp"
 
 namespace lacrima::test {
 

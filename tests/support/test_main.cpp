@@ -2,7 +2,7 @@
 // so that tests which build frames measure and run as the command does.
 #include <gtest/gtest.h>
 
-#include "lacrima/geometry/allocator_tuning.hpp"
+#include "lacrima/base/allocator_tuning.hpp"
 
 int main(int argc, char** argv) {
   lacrima::keepFreedMemoryForReuse();

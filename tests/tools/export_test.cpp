@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "lacrima/geometry/gltf_asset.hpp"
-#include "lacrima/geometry/shapes.hpp"
+#include "lacrima/io/gltf_asset.hpp"
+#include "lacrima/mesh/shapes.hpp"
 #include "lacrima/scenes/shot.hpp"
 #include "support/test_directory.hpp"
 #include "tools/lacrima_cli_support.hpp"

@@ -9,7 +9,7 @@
 #include "diff/image_diff.hpp"
 #include "diff/image_pairs.hpp"
 #include "diff/suite_thresholds.hpp"
-#include "lacrima/geometry/error.hpp"
+#include "lacrima/base/error.hpp"
 #include "support/test_directory.hpp"
 
 namespace lacrima::diff {

@@ -9,7 +9,7 @@
 #include <limits>
 #include <string>
 
-#include "lacrima/geometry/error.hpp"
+#include "lacrima/base/error.hpp"
 #include "landmark_io.hpp"
 #include "support/test_directory.hpp"
 

@@ -10,7 +10,7 @@
 #include <stdexcept>
 #include <thread>
 
-#include "lacrima/geometry/error.hpp"
+#include "lacrima/base/error.hpp"
 
 namespace lacrima::cli {
 namespace {

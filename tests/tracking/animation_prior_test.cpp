@@ -10,7 +10,7 @@
 #include <chrono>
 #include <cstdio>
 
-#include "lacrima/geometry/sampler.hpp"
+#include "lacrima/base/hash.hpp"
 #include "lacrima/tracking/animation_prior.hpp"
 #include "tracking/tracking_test_support.hpp"
 

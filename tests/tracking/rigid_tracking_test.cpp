@@ -7,9 +7,9 @@
 #include <cstdio>
 #include <numbers>
 
-#include "lacrima/geometry/gltf_asset.hpp"
-#include "lacrima/geometry/sampler.hpp"
-#include "lacrima/geometry/shapes.hpp"
+#include "lacrima/io/gltf_asset.hpp"
+#include "lacrima/base/hash.hpp"
+#include "lacrima/mesh/shapes.hpp"
 #include "lacrima/tracking/depth_sensor.hpp"
 #include "lacrima/tracking/pose_filter.hpp"
 #include "lacrima/tracking/rigid_icp.hpp"

@@ -9,7 +9,7 @@
 #include <string>
 #include <system_error>
 
-#include "lacrima/geometry/error.hpp"
+#include "lacrima/base/error.hpp"
 
 namespace lacrima::cli {
 

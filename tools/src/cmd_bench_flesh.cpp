@@ -9,7 +9,7 @@
 #include <cstdio>
 
 #include "commands.hpp"
-#include "lacrima/geometry/error.hpp"
+#include "lacrima/base/error.hpp"
 #include "lacrima/scenes/flesh_bench.hpp"
 #include "lacrima/scenes/shot.hpp"
 #include "median.hpp"

@@ -15,7 +15,7 @@
 #include <unistd.h>
 
 #include "commands.hpp"
-#include "lacrima/geometry/user_cache.hpp"
+#include "lacrima/base/user_cache.hpp"
 #include "lacrima/renderer/render.hpp"
 #include "lacrima/scenes/shot.hpp"
 #include "progress.hpp"

@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "commands.hpp"
-#include "lacrima/geometry/error.hpp"
-#include "lacrima/geometry/sampler.hpp"
+#include "lacrima/base/error.hpp"
+#include "lacrima/base/hash.hpp"
 #include "lacrima/tracking/initial_pose.hpp"
 #include "lacrima/tracking/performance_tracker.hpp"
 #include "lacrima/tracking/synthetic_capture.hpp"

@@ -6,7 +6,7 @@
 
 #include "commands.hpp"
 #include "diff/diff_report.hpp"
-#include "lacrima/geometry/error.hpp"
+#include "lacrima/base/error.hpp"
 
 namespace lacrima::cli {
 

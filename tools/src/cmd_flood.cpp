@@ -17,7 +17,7 @@
 #include "commands.hpp"
 #include "lacrima/crowd/figure.hpp"
 #include "lacrima/crowd/flood.hpp"
-#include "lacrima/geometry/error.hpp"
+#include "lacrima/base/error.hpp"
 #include "lacrima/scenes/flood_scenario.hpp"
 #include "lacrima/scenes/shot.hpp"
 #include "lacrima/sph/sph_surface.hpp"

@@ -12,8 +12,8 @@
 
 #include "commands.hpp"
 #include "frame_selection.hpp"
-#include "lacrima/geometry/error.hpp"
-#include "lacrima/geometry/gltf_asset.hpp"
+#include "lacrima/base/error.hpp"
+#include "lacrima/io/gltf_asset.hpp"
 
 namespace lacrima::cli {
 

@@ -10,7 +10,7 @@
 #include "commands.hpp"
 #include "diff/diff_report.hpp"
 #include "diff/suite_thresholds.hpp"
-#include "lacrima/geometry/error.hpp"
+#include "lacrima/base/error.hpp"
 
 namespace lacrima::cli {
 

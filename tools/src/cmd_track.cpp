@@ -12,9 +12,9 @@
 
 #include "atomic_write.hpp"
 #include "commands.hpp"
-#include "lacrima/geometry/error.hpp"
-#include "lacrima/geometry/face_rig.hpp"
-#include "lacrima/geometry/performance_track.hpp"
+#include "lacrima/base/error.hpp"
+#include "lacrima/rig/face_rig.hpp"
+#include "lacrima/io/performance_track.hpp"
 #include "lacrima/scenes/shot.hpp"
 #include "lacrima/tracking/depth_sensor.hpp"
 #include "lacrima/tracking/initial_pose.hpp"

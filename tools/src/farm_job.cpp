@@ -10,7 +10,7 @@
 
 #include "atomic_write.hpp"
 #include "frame_range.hpp"
-#include "lacrima/geometry/error.hpp"
+#include "lacrima/base/error.hpp"
 #include "process.hpp"
 
 namespace lacrima::cli {

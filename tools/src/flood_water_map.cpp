@@ -8,7 +8,7 @@
 #include <array>
 #include <vector>
 
-#include "lacrima/geometry/error.hpp"
+#include "lacrima/base/error.hpp"
 
 namespace lacrima::cli {
 

@@ -13,7 +13,7 @@
 #include <string>
 
 #include "atomic_write.hpp"
-#include "lacrima/geometry/error.hpp"
+#include "lacrima/base/error.hpp"
 
 namespace lacrima::cli {
 

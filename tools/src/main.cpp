@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "commands.hpp"
-#include "lacrima/geometry/allocator_tuning.hpp"
+#include "lacrima/base/allocator_tuning.hpp"
 #include "lacrima/renderer/frame.hpp"
 
 using namespace lacrima::cli;

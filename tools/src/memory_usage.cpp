@@ -1,6 +1,6 @@
 #include "memory_usage.hpp"
 
-#include "lacrima/geometry/allocator_tuning.hpp"
+#include "lacrima/base/allocator_tuning.hpp"
 
 #include <fmt/format.h>
 #include <sys/resource.h>

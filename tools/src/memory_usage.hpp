@@ -21,7 +21,7 @@ struct MemoryUsage {
 MemoryUsage currentMemoryUsage();
 
 // Called after every frame of `render` and `export`: from then on the heap returns freed memory
-// promptly (geometry/allocator_tuning.hpp: the first frame, with the shot's load and the
+// promptly (base/allocator_tuning.hpp: the first frame, with the shot's load and the
 // simulation up to it, reused it), and the free pages inside the heap go back to the system
 // (glibc's malloc_trim; nothing elsewhere), so what a frame freed does not add up over a sequence.
 void releaseFreeHeapMemory();

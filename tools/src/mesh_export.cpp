@@ -3,7 +3,7 @@
 #include <type_traits>
 #include <variant>
 
-#include "lacrima/geometry/shapes.hpp"
+#include "lacrima/mesh/shapes.hpp"
 #include "lacrima/renderer/frame.hpp"
 #include "mesh_export.hpp"
 

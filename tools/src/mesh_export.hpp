@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "lacrima/geometry/mesh.hpp"
+#include "lacrima/mesh/mesh.hpp"
 
 namespace lacrima {
 struct Frame;

@@ -8,7 +8,7 @@
 #include <cstring>
 
 #include "atomic_write.hpp"
-#include "lacrima/geometry/error.hpp"
+#include "lacrima/base/error.hpp"
 #include "mesh_export.hpp"
 
 #ifndef LACRIMA_VERSION

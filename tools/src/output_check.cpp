@@ -9,7 +9,7 @@
 #include <cstdio>
 #include <cstring>
 
-#include "lacrima/geometry/error.hpp"
+#include "lacrima/base/error.hpp"
 
 namespace lacrima::cli {
 

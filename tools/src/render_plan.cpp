@@ -4,7 +4,7 @@
 
 #include "frame_check.hpp"
 #include "frame_selection.hpp"
-#include "lacrima/geometry/error.hpp"
+#include "lacrima/base/error.hpp"
 #include "lacrima/renderer/image_output.hpp"
 #include "lacrima/scenes/shot.hpp"
 

@@ -8,8 +8,8 @@
 #include <cstdio>
 #include <numbers>
 
-#include "lacrima/geometry/error.hpp"
-#include "lacrima/geometry/sampler.hpp"
+#include "lacrima/base/error.hpp"
+#include "lacrima/base/hash.hpp"
 #include "lacrima/scenes/shot.hpp"
 #include "track_io.hpp"
 

@@ -13,7 +13,7 @@
 #include <sstream>
 
 #include "atomic_write.hpp"
-#include "lacrima/geometry/error.hpp"
+#include "lacrima/base/error.hpp"
 #include "lacrima/scenes/shot.hpp"
 
 namespace lacrima::cli {

@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 #include "lacrima/crowd/ground_navigation.hpp"
-#include "lacrima/geometry/sampler.hpp"
+#include "lacrima/base/hash.hpp"
 
 namespace lacrima::crowd {
 

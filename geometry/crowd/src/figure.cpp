@@ -4,8 +4,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "lacrima/geometry/sampler.hpp"
-#include "lacrima/geometry/shapes.hpp"
+#include "lacrima/base/hash.hpp"
+#include "lacrima/mesh/shapes.hpp"
 
 namespace lacrima::crowd {
 

@@ -8,9 +8,9 @@
 #include <unordered_map>
 #include <unordered_set>
 
-#include "lacrima/geometry/closest_point_grid.hpp"
-#include "lacrima/geometry/sphere_fit.hpp"
-#include "lacrima/geometry/surface_point.hpp"
+#include "lacrima/mesh/closest_point_grid.hpp"
+#include "lacrima/mesh/sphere_fit.hpp"
+#include "lacrima/mesh/surface_point.hpp"
 #include "tetgen_call.hpp"
 
 namespace lacrima::flesh {

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <unordered_set>
 
-#include "lacrima/geometry/sampler.hpp"
+#include "lacrima/base/hash.hpp"
 #include "lacrima/sph/dfsph.hpp"
 
 namespace lacrima::sph {

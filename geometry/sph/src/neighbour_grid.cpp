@@ -7,7 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "lacrima/geometry/sampler.hpp"
+#include "lacrima/base/hash.hpp"
 
 namespace lacrima::sph {
 

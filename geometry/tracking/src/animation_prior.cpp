@@ -10,7 +10,7 @@
 #include <numeric>
 #include <stdexcept>
 
-#include "lacrima/geometry/sampler.hpp"
+#include "lacrima/base/hash.hpp"
 
 namespace lacrima::tracking {
 

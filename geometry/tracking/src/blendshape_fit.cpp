@@ -7,7 +7,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "lacrima/geometry/error.hpp"
+#include "lacrima/base/error.hpp"
 #include "robust_cut.hpp"
 
 namespace lacrima::tracking {

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "lacrima/geometry/sampler.hpp"
+#include "lacrima/base/hash.hpp"
 
 namespace lacrima::tracking {
 

@@ -6,7 +6,7 @@
 #include <numbers>
 #include <optional>
 
-#include "lacrima/geometry/sampler.hpp"
+#include "lacrima/base/hash.hpp"
 #include "lacrima/tracking/depth_sensor.hpp"
 
 namespace lacrima::tracking {

@@ -11,7 +11,7 @@
 #include <filesystem>
 
 #include "diff/flip.hpp"
-#include "lacrima/geometry/error.hpp"
+#include "lacrima/base/error.hpp"
 
 namespace lacrima::diff {
 

@@ -8,7 +8,7 @@
 #include <map>
 #include <regex>
 
-#include "lacrima/geometry/error.hpp"
+#include "lacrima/base/error.hpp"
 
 namespace lacrima::diff {
 

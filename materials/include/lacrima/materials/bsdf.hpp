@@ -8,7 +8,7 @@
 #include <memory>
 #include <optional>
 
-#include "lacrima/geometry/math.hpp"
+#include "lacrima/base/math.hpp"
 
 namespace lacrima {
 

@@ -16,7 +16,7 @@
 // land in a differently lit place (the bright, coloured outliers of a render) are not sampled.
 // Sampling the radius: 2 pi r R(r) / A = (1/4) (1/d) exp(-r/d) + (3/4) (1/(3d)) exp(-r/(3d)), a
 // mixture of two exponentials, sampled exactly within maxRadius.
-#include "lacrima/geometry/math.hpp"
+#include "lacrima/base/math.hpp"
 
 namespace lacrima {
 

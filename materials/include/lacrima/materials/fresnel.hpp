@@ -12,7 +12,7 @@
 // form of the refracted direction from pbrt-v4 Refract.
 #include <optional>
 
-#include "lacrima/geometry/math.hpp"
+#include "lacrima/base/math.hpp"
 
 namespace lacrima {
 

@@ -21,7 +21,7 @@
 // The feature points of the 27 cells around p are all hashed (one mix each); walls are sought only
 // to points nearer than |q - c1| + 2w (d_k >= (|q - c_k| - |q - c1|) / 2, the triangle
 // inequality, so farther points have no wall within w).
-#include "lacrima/geometry/math.hpp"
+#include "lacrima/base/math.hpp"
 
 namespace lacrima {
 

@@ -1,6 +1,6 @@
 #pragma once
 // A procedural iris: per-channel factors on a material's albedo over the iris's disc uvs
-// (geometry/eye.hpp: the pupil margin on the circle of radius 0.5 kIrisUvPupilRadius about
+// (face/eye.hpp: the pupil margin on the circle of radius 0.5 kIrisUvPupilRadius about
 // (0.5, 0.5), the root on the circle of radius 0.5). It is built in layers, as an ocularist paints
 // an iris for a prosthetic eye and as Lefohn, Budge, Shirley, Caruso & Reinhard 2003 synthesise
 // irises from such layers; the layers and their sizes are modelling choices after the iris's
@@ -16,7 +16,7 @@
 // albedo stays the iris's mean colour. Deterministic in (uv, seed).
 #include <cstdint>
 
-#include "lacrima/geometry/math.hpp"
+#include "lacrima/base/math.hpp"
 
 namespace lacrima {
 

@@ -10,7 +10,7 @@
 #include <utility>
 #include <variant>
 
-#include "lacrima/geometry/math.hpp"
+#include "lacrima/base/math.hpp"
 #include "lacrima/materials/bsdf.hpp"
 
 namespace lacrima {
@@ -125,7 +125,7 @@ std::unique_ptr<Bsdf> makeBsdf(const MaterialParams& params);
 // Budge 2002, "Simple Nested Dielectrics in Ray Traced Images", JGT 7(2)): where volumes
 // overlap, the one with the higher priority fills the overlap and the surfaces of the others
 // there are not interfaces at all. Priority 0 (the default) keeps the plain model: the
-// material's `ior` is relative to air. See renderer/include/lacrima/renderer/medium_stack.hpp.
+// material's `ior` is relative to air. See renderer/src/medium_stack.hpp.
 inline constexpr int kMaxDielectricPriority = 1000;  // priorities are integers in [0, 1000]
 
 struct DielectricMedium {

@@ -13,7 +13,7 @@
 // G2 = 1 / (1 + Lambda(wo) + Lambda(wi)) from Heitz 2014, "Understanding the Masking-Shadowing
 // Function in Microfacet-Based BRDFs" (JCGT 3(2)), eqs. 43, 72, 99; visible normals and their
 // sampling from Heitz 2018, "Sampling the GGX Distribution of Visible Normals" (JCGT 7(4)).
-#include "lacrima/geometry/math.hpp"
+#include "lacrima/base/math.hpp"
 
 namespace lacrima {
 

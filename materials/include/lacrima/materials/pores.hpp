@@ -17,7 +17,7 @@
 // below the geometric surface.
 // The field is evaluated at the world-space shading position: on an animated face the pores
 // slide over the skin when it deforms (a rest-pose position is not available at the hit).
-#include "lacrima/geometry/math.hpp"
+#include "lacrima/base/math.hpp"
 
 namespace lacrima {
 

@@ -4,7 +4,7 @@
 // Sources: Shirley & Chiu 1997, "A Low Distortion Map Between Disk and Square" (concentric map);
 // Malley's method (pbrt-v4 SampleCosineHemisphere): project a uniform disk point up to the hemisphere to get a
 // cosine-weighted direction, pdf = cos(theta) / pi.
-#include "lacrima/geometry/math.hpp"
+#include "lacrima/base/math.hpp"
 
 namespace lacrima {
 

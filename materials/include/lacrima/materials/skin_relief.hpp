@@ -17,7 +17,7 @@
 // bright albedo; cavity < 1 is how a shot weighs that. The darkened albedo is also what the skin
 // below scatters with (subsurface) and what the denoiser's albedo feature sees, so the relief
 // survives denoising.
-#include "lacrima/geometry/math.hpp"
+#include "lacrima/base/math.hpp"
 #include "lacrima/materials/material.hpp"
 
 namespace lacrima {

@@ -3,7 +3,7 @@
 // (the renderer's renderer/src/surface_textures.hpp looks them up through OpenImageIO).
 #include <optional>
 
-#include "lacrima/geometry/math.hpp"
+#include "lacrima/base/math.hpp"
 #include "lacrima/materials/material.hpp"
 
 namespace lacrima {

@@ -2,7 +2,7 @@
 // Camera rays and the matrices recorded in EXR headers.
 #include <limits>
 
-#include "lacrima/geometry/math.hpp"
+#include "lacrima/base/math.hpp"
 #include "lacrima/renderer/frame.hpp"
 
 namespace lacrima {

@@ -9,9 +9,9 @@
 #include <utility>
 #include <vector>
 
-#include "lacrima/geometry/math.hpp"
-#include "lacrima/geometry/mesh.hpp"
-#include "lacrima/geometry/sampler.hpp"
+#include "lacrima/base/math.hpp"
+#include "lacrima/mesh/mesh.hpp"
+#include "lacrima/renderer/sampler.hpp"
 #include "lacrima/materials/material.hpp"
 #include "lacrima/renderer/light_paths.hpp"
 #include "lacrima/renderer/pixel_filter.hpp"

@@ -16,7 +16,7 @@
 // lobes has the weight exactly 1 for every sample.
 #include <vector>
 
-#include "lacrima/geometry/math.hpp"
+#include "lacrima/base/math.hpp"
 
 namespace lacrima {
 

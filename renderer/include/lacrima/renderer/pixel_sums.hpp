@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <vector>
 
-#include "lacrima/geometry/math.hpp"
+#include "lacrima/base/math.hpp"
 #include "lacrima/renderer/cryptomatte.hpp"
 
 namespace lacrima {

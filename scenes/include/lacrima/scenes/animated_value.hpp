@@ -4,8 +4,8 @@
 // the shutter interval around a frame).
 #include <memory>
 
-#include "lacrima/geometry/animation_curve.hpp"
-#include "lacrima/geometry/math.hpp"
+#include "lacrima/base/animation_curve.hpp"
+#include "lacrima/base/math.hpp"
 
 namespace lacrima {
 

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "lacrima/crowd/flood.hpp"
-#include "lacrima/geometry/mesh.hpp"
+#include "lacrima/mesh/mesh.hpp"
 
 namespace lacrima {
 

@@ -8,9 +8,9 @@
 #include <optional>
 #include <vector>
 
-#include "lacrima/geometry/flow_path_transfer.hpp"
-#include "lacrima/geometry/surface_point.hpp"
-#include "lacrima/geometry/tear_liquid.hpp"
+#include "lacrima/mesh/flow_path_transfer.hpp"
+#include "lacrima/mesh/surface_point.hpp"
+#include "lacrima/liquid/liquid_tear.hpp"
 #include "lacrima/scenes/shot_model.hpp"
 
 namespace lacrima {
@@ -124,7 +124,7 @@ int liquidTearCourseFrame(const Shot& shot, const ShotLiquidTear& tear, double s
 
 // The tear's simulation with its course following the pose: from t = 0 on the first course, each
 // step on the course of its nearest frame, the liquid carried across at each change
-// (TearLiquidSimulation::reroute with the course's FlowPathTransfer). A pure function of the
+// (LiquidTearSimulation::reroute with the course's FlowPathTransfer). A pure function of the
 // time reached: a run advanced to t in one go or in several gives bitwise the same state.
 class LiquidTearRun {
  public:
@@ -135,8 +135,8 @@ class LiquidTearRun {
   bool hasPassed(double frame) const;
   // Simulates to the (fractional) frame, which may not be earlier than the last one (InputError).
   void advanceTo(double frame);
-  TearLiquidState state(double frame) const;  // after advanceTo(frame)
-  const TearLiquidSimulation& simulation() const { return simulation_; }
+  LiquidTearState state(double frame) const;  // after advanceTo(frame)
+  const LiquidTearSimulation& simulation() const { return simulation_; }
   const LiquidTearCourse& course() const { return *course_; }
   const std::shared_ptr<const LiquidTearCourse>& coursePointer() const { return course_; }
   // Course changes that moved the liquid so far.
@@ -149,7 +149,7 @@ class LiquidTearRun {
   const ShotLiquidTear& tear_;
   std::shared_ptr<const LiquidTearCourse> course_;
   int courseFrame_ = 0;
-  TearLiquidSimulation simulation_;
+  LiquidTearSimulation simulation_;
   int reroutes_ = 0;
 };
 
@@ -174,7 +174,7 @@ class LiquidTearRunKeeper {
 // falling drops and the film thickness at each sample of the course at that frame
 // (sampleFilmThickness[i] at liquidTearCourseAt(...)->path.points[i]). The same for a frame alone
 // or within a sequence.
-TearLiquidState liquidTearStateAt(const Shot& shot, const ShotLiquidTear& tear, double frame);
+LiquidTearState liquidTearStateAt(const Shot& shot, const ShotLiquidTear& tear, double frame);
 // The course the state at that frame lies on (its arc lengths are this course's).
 std::shared_ptr<const LiquidTearCourse> liquidTearCourseAt(const Shot& shot, const ShotLiquidTear& tear, double frame);
 

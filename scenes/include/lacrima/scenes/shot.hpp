@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "lacrima/geometry/error.hpp"
+#include "lacrima/base/error.hpp"
 #include "lacrima/renderer/frame.hpp"
 
 namespace lacrima {

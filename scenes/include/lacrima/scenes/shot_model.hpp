@@ -12,19 +12,19 @@
 
 #include "lacrima/flesh/flesh_simulation.hpp"
 #include "lacrima/flesh/flesh_volume.hpp"
-#include "lacrima/geometry/detail_patterns.hpp"
-#include "lacrima/geometry/dripping_tear.hpp"
-#include "lacrima/geometry/eye.hpp"
-#include "lacrima/geometry/eyelashes.hpp"
-#include "lacrima/geometry/face_controls.hpp"
-#include "lacrima/geometry/face_rig.hpp"
-#include "lacrima/geometry/gltf_asset.hpp"
-#include "lacrima/geometry/math.hpp"
-#include "lacrima/geometry/region_refinement.hpp"
-#include "lacrima/geometry/shedding_tear.hpp"
-#include "lacrima/geometry/surface_flow.hpp"
-#include "lacrima/geometry/tear_liquid.hpp"
-#include "lacrima/geometry/surface_region.hpp"
+#include "lacrima/face/detail_patterns.hpp"
+#include "lacrima/tears/dripping_tear.hpp"
+#include "lacrima/face/eye.hpp"
+#include "lacrima/face/eyelashes.hpp"
+#include "lacrima/rig/face_controls.hpp"
+#include "lacrima/rig/face_rig.hpp"
+#include "lacrima/io/gltf_asset.hpp"
+#include "lacrima/base/math.hpp"
+#include "lacrima/rig/region_refinement.hpp"
+#include "lacrima/tears/shedding_tear.hpp"
+#include "lacrima/mesh/surface_flow.hpp"
+#include "lacrima/liquid/liquid_tear.hpp"
+#include "lacrima/mesh/surface_region.hpp"
 #include "lacrima/materials/material.hpp"
 #include "lacrima/renderer/environment.hpp"
 #include "lacrima/renderer/frame.hpp"
@@ -243,7 +243,7 @@ class LiquidTearRunKeeper;  // liquid_tear.hpp
 
 // A liquid tear (docs/shot-format.md "Liquid tears"): tear fluid welling at a skin point
 // and running down the flow path from it as beads that stick, slide, leave a drying film, hang and
-// drip (TearLiquidSimulation, tear_liquid.hpp). The path is traced again at every integer frame on a
+// drip (LiquidTearSimulation, liquid_tear.hpp). The path is traced again at every integer frame on a
 // smoothed copy of the part posed there (its courses, LiquidTearCourses in liquid_tear.hpp), kept in
 // surface coordinates, so its beads ride the posed skin and turn with the face. The liquid state at
 // a frame is simulated from simulationStartFrame (t = 0: the shot's first frame, or the welling
@@ -251,7 +251,7 @@ class LiquidTearRunKeeper;  // liquid_tear.hpp
 // fps seconds, each step on the course of its nearest frame: a pure function of the frame.
 // A skin region with its own contact angles for a liquid tear ("contactAngleRegions"): the path
 // pieces that start within `radius` (straight-line distance, on the pose the course was traced
-// on) of the centre use `contactAngles` (TearLiquidParams::contactAngleRegions, same index).
+// on) of the centre use `contactAngles` (LiquidTearParams::contactAngleRegions, same index).
 struct ShotContactAngleRegion {
   ShotSurfaceAnchor center;             // as written, on the tear's part
   double radius = 0.0;                  // metres, > 0
@@ -265,7 +265,7 @@ struct ShotLiquidTear {
   ShotSurfaceAnchor source;      // as written
   Vec3 gravity = Vec3(0, -1, 0);  // non-zero; only its direction matters
   float maxLength = 0.12f;       // metres of flow path at most
-  TearLiquidParams params;       // SI units (the file's uL and degrees converted; welling times from t = 0)
+  LiquidTearParams params;       // SI units (the file's uL and degrees converted; welling times from t = 0)
   // "contactAngleRegions", in list order (params.contactAngleRegions holds their angles); the first
   // that contains a path sample gives it its angles.
   std::vector<ShotContactAngleRegion> contactAngleRegions;
@@ -286,7 +286,7 @@ struct ShotLiquidTear {
   ShotSurfacePoint sourcePoint;
   FlowPath path;
   float smoothedPathLength = 0.0f;  // the path's length on the smoothed skin it was traced on
-  TearLiquidInput input;            // the simulation's input (path samples of the first frame's course)
+  LiquidTearInput input;            // the simulation's input (path samples of the first frame's course)
   // The lacrimal fluid strip that swells with the meniscus (meniscus_swelling.hpp): the asset's
   // primitive of part kLacrimalFluidPart nearest the source when within reach (-1: none), and the
   // falloff weight of each of its vertices (from the source, on the first frame's pose).

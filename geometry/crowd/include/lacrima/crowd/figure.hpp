@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "lacrima/crowd/biocrowds.hpp"
-#include "lacrima/geometry/mesh.hpp"
+#include "lacrima/mesh/mesh.hpp"
 
 namespace lacrima::crowd {
 

@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "lacrima/crowd/biocrowds.hpp"
-#include "lacrima/geometry/math.hpp"
+#include "lacrima/base/math.hpp"
 
 namespace lacrima::crowd {
 

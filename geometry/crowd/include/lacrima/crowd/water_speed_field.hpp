@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "lacrima/crowd/biocrowds.hpp"
-#include "lacrima/geometry/math.hpp"
+#include "lacrima/base/math.hpp"
 
 namespace lacrima::crowd {
 

@@ -11,7 +11,7 @@
 #include <optional>
 #include <vector>
 
-#include "lacrima/geometry/math.hpp"
+#include "lacrima/base/math.hpp"
 
 namespace lacrima::flesh {
 

@@ -27,8 +27,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "lacrima/geometry/math.hpp"
-#include "lacrima/geometry/mesh.hpp"
+#include "lacrima/base/math.hpp"
+#include "lacrima/mesh/mesh.hpp"
 #include "lacrima/sph/neighbour_grid.hpp"
 #include "lacrima/sph/sph_kernel.hpp"
 

@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "lacrima/geometry/math.hpp"
+#include "lacrima/base/math.hpp"
 
 namespace lacrima::sph {
 

@@ -12,7 +12,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "lacrima/geometry/math.hpp"
+#include "lacrima/base/math.hpp"
 
 namespace lacrima::sph {
 

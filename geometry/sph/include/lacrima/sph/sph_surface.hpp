@@ -10,8 +10,8 @@
 // (e.g. Zhu & Bridson 2005's union of spheres, smoothed).
 #include <vector>
 
-#include "lacrima/geometry/math.hpp"
-#include "lacrima/geometry/mesh.hpp"
+#include "lacrima/base/math.hpp"
+#include "lacrima/mesh/mesh.hpp"
 
 namespace lacrima::sph {
 

@@ -13,7 +13,7 @@
 // gamma ("surfaceTension" in FluidParams) and beta ("adhesion") are the paper's coefficients, not
 // the physical surface tension: the paper tunes them by look. akinciGammaForSigma below relates
 // gamma to a physical surface tension sigma (N/m) by how a drop rings.
-#include "lacrima/geometry/math.hpp"
+#include "lacrima/base/math.hpp"
 
 namespace lacrima::sph {
 

@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "lacrima/geometry/math.hpp"
+#include "lacrima/base/math.hpp"
 
 namespace lacrima::tracking {
 

@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "lacrima/geometry/gltf_asset.hpp"
+#include "lacrima/io/gltf_asset.hpp"
 #include "lacrima/tracking/animation_prior.hpp"
 #include "lacrima/tracking/depth_frame.hpp"
 

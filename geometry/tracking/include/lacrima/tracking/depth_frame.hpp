@@ -5,7 +5,7 @@
 #include <optional>
 #include <vector>
 
-#include "lacrima/geometry/math.hpp"
+#include "lacrima/base/math.hpp"
 
 namespace lacrima::tracking {
 

@@ -4,7 +4,7 @@
 // centre), then the noise of a structured-light sensor added.
 #include <cstdint>
 
-#include "lacrima/geometry/mesh.hpp"
+#include "lacrima/mesh/mesh.hpp"
 #include "lacrima/tracking/depth_frame.hpp"
 
 namespace lacrima::tracking {

@@ -9,7 +9,7 @@
 // noise of a still pose; Weise et al. use k = 5.
 #include <deque>
 
-#include "lacrima/geometry/math.hpp"
+#include "lacrima/base/math.hpp"
 
 namespace lacrima::tracking {
 
