@@ -13,6 +13,8 @@
 #include "light_path_split.hpp"
 #include "ray_offset.hpp"
 #include "sample_dimensions.hpp"
+#include "segment_walk.hpp"
+#include "shading_side.hpp"
 #include "subsurface_probe.hpp"
 #include "subsurface_walk.hpp"
 
@@ -111,12 +113,6 @@ class BounceCounter {
 constexpr int kRussianRouletteDepth = 3;
 // A shadow ray gives up (counts as blocked) after this many dielectric crossings.
 constexpr int kMaxShadowCrossings = 16;
-// A ray that goes on through a thin sheet ignores hits closer than the sheet's distance times
-// (1 + this): past the rounding of the sheet's own hit, far short of a surface 1 um behind it.
-constexpr float kThinSheetMargin = 1e-6f;
-// The nearest distance a ray going on through a thin sheet at distance t may hit (strictly past
-// t, also when t is 0: a ray that starts on the sheet).
-float justPast(float t) { return std::nextafter(t * (1.0f + kThinSheetMargin), std::numeric_limits<float>::infinity()); }
 // A path is dropped (absorbed) after skipping this many false interfaces in one segment.
 constexpr int kMaxFalseInterfaces = 64;
 // The camera-media probe looks at no more than this many surfaces.
@@ -188,6 +184,13 @@ InterfaceCrossing PathIntegrator::classifyInterface(const MediumStack& media, ui
   return media.classify(MediumEntry{materialId, media_[materialId]->priority}, entering);
 }
 
+// Only the surfaces that bound a medium can be false interfaces; every other surface (a light,
+// an opaque one, a thin sheet), and every surface without priorities, is real.
+InterfaceCrossing PathIntegrator::mediumInterface(const MediumStack& media, const SurfaceHit& hit, bool entering) const {
+  if (!nested_ || hit.lightIndex >= 0 || !boundsMedium(hit)) return InterfaceCrossing{};
+  return classifyInterface(media, hit.materialId, entering);
+}
+
 const Bsdf* PathIntegrator::interfaceBsdf(uint32_t materialId, int otherMaterial) const {
   if (otherMaterial < 0) return bsdfs_[materialId].get();
   return pairBsdfs_[materialId * bsdfs_.size() + size_t(otherMaterial)].get();
@@ -203,16 +206,17 @@ void PathIntegrator::crossInterface(MediumStack& media, uint32_t materialId, boo
 // is assumed to lie in the same media as its centre.
 MediumStack PathIntegrator::mediaAroundCamera() const {
   const Vec3 direction = Vec3(0.5773f, 0.6139f, 0.5384f).normalized();
-  Ray ray{frame_.camera.cameraToWorld.translation(), direction, 0.0f};
+  SegmentWalk walk(scene_, Ray{frame_.camera.cameraToWorld.translation(), direction, 0.0f});
   std::vector<uint32_t> seen, enclosing;  // enclosing: innermost first
   SurfaceHit hit;
-  for (int i = 0; i < kMaxProbeSurfaces && scene_.intersect(ray, hit); ++i) {
+  uint64_t rays = 0;  // not a path's: set-up, uncounted
+  for (int i = 0; i < kMaxProbeSurfaces && walk.next(hit, rays); ++i) {
     const bool firstMeeting = std::find(seen.begin(), seen.end(), hit.materialId) == seen.end();
     if (hit.lightIndex < 0 && boundsMedium(hit) && firstMeeting) {
       seen.push_back(hit.materialId);
-      if (direction.dot(hit.geometricNormal) > 0.0f) enclosing.push_back(hit.materialId);
+      if (walk.leaving(hit)) enclosing.push_back(hit.materialId);
     }
-    ray.origin = offsetOrigin(hit.position, hit.geometricNormal, direction);
+    walk.cross(hit);
   }
   MediumStack media;
   for (auto id = enclosing.rbegin(); id != enclosing.rend(); ++id) crossInterface(media, *id, true);
@@ -223,20 +227,19 @@ MediumStack PathIntegrator::mediaAroundCamera() const {
 // the media the path is in change. Without priorities every surface is real.
 PathIntegrator::Trace PathIntegrator::traceToRealSurface(Ray& ray, SurfaceHit& hit, MediumStack& media,
                                                          PathCounters& counters) const {
-  float skippedDistance = 0.0f;  // so that hit.distance (the depth AOV) counts from the real origin
+  SegmentWalk walk(scene_, ray);
+  const auto stop = [&](Trace trace) {
+    ray = walk.ray();
+    return trace;
+  };
   for (int skipped = 0;; ++skipped) {
-    ++counters.rays;
-    if (!scene_.intersect(ray, hit)) return Trace::Miss;
-    hit.distance += skippedDistance;
-    if (!nested_ || hit.lightIndex >= 0 || !boundsMedium(hit)) return Trace::Hit;
-    const bool entering = ray.direction.dot(hit.geometricNormal) < 0.0f;
-    if (!classifyInterface(media, hit.materialId, entering).isFalse) return Trace::Hit;
-    if (skipped == kMaxFalseInterfaces) return Trace::Lost;
+    if (!walk.next(hit, counters.rays)) return stop(Trace::Miss);
+    hit.distance += walk.travelled();  // so that hit.distance (the depth AOV) counts from the real origin
+    const bool entering = walk.entering(hit);
+    if (!mediumInterface(media, hit, entering).isFalse) return stop(Trace::Hit);
+    if (skipped == kMaxFalseInterfaces) return stop(Trace::Lost);
     crossInterface(media, hit.materialId, entering);
-    const Vec3 next = offsetOrigin(hit.position, hit.geometricNormal, ray.direction);
-    skippedDistance += (next - ray.origin).dot(ray.direction);
-    ray.origin = next;
-    ray.tnear = 0.0f;
+    walk.cross(hit);
   }
 }
 
@@ -252,9 +255,8 @@ PathIntegrator::DirectLight PathIntegrator::sampleDirectLight(const Vertex& v, c
   const Vec3 wiLocal = v.frame.toLocal(light.direction);
   DirectLight direct{Color::Zero(), light.lightIndex, wiLocal};
   // No leaks: the shading frame and the geometric surface must agree on reflect vs transmit.
-  const bool geometricReflect = light.direction.dot(v.geometricNormal) * v.wo.dot(v.geometricNormal) > 0.0f;
-  const bool shadingReflect = wiLocal.z() * v.woLocal.z() > 0.0f;
-  if (geometricReflect != shadingReflect) return {};
+  const bool geometricReflect = reflectsGeometrically(v.wo, light.direction, v.geometricNormal);
+  if (geometricReflect != reflectsInShadingFrame(v.woLocal, wiLocal)) return {};
   // A shadow ray through a (rough) dielectric starts in the media on the far side.
   MediumStack shadowMedia = media;
   if (!geometricReflect && !v.thinSheet) crossInterface(shadowMedia, v.materialId, v.entering);
@@ -309,21 +311,16 @@ Color PathIntegrator::shadowTransmittance(const Ray& shadowRay, float maxDistanc
   const Vec3& direction = shadowRay.direction;
   if (frame_.settings.caustics == Caustics::Off) return Color::Zero();
   Color transmittance = Color::Ones();
-  Vec3 position = shadowRay.origin;
-  float remaining = maxDistance;
-  float tnear = 0.0f;
+  SegmentWalk walk(scene_, Ray{shadowRay.origin, direction, shadowRay.time}, maxDistance);
   for (int crossing = 0; crossing < kMaxShadowCrossings; ++crossing) {
     SurfaceHit hit;
-    ++counters.rays;
-    if (!scene_.intersect(Ray{position, direction, shadowRay.time, tnear}, hit) || hit.distance >= remaining)
-      return transmittance;
+    if (!walk.next(hit, counters.rays) || walk.pastTheEnd(hit)) return transmittance;
     if (hit.lightIndex >= 0) return Color::Zero();
-    const bool entering = direction.dot(hit.geometricNormal) < 0.0f;
+    const bool entering = walk.entering(hit);
     const bool thin = isThinSheet(hit);
-    const InterfaceCrossing surface =
-        nested_ && !thin && isDielectric(hit.materialId) ? classifyInterface(media, hit.materialId, entering) : InterfaceCrossing{};
+    const InterfaceCrossing surface = mediumInterface(media, hit, entering);
     if (!surface.isFalse) {
-      Vec3 ns = hit.shadingNormal.dot(hit.geometricNormal) < 0.0f ? -hit.shadingNormal : hit.shadingNormal;
+      const Vec3 ns = onGeometricSide(hit.shadingNormal, hit.geometricNormal);
       const Vec3 woLocal = ShadingFrame::fromNormal(ns).toLocal(-direction);
       const Bsdf* bsdf = thin ? thinSheetBsdfs_[hit.materialId].get() : interfaceBsdf(hit.materialId, surface.otherMaterial);
       transmittance *= bsdf->straightTransmittance(woLocal);
@@ -331,14 +328,11 @@ Color PathIntegrator::shadowTransmittance(const Ray& shadowRay, float maxDistanc
       crossedDielectric = true;
     }
     if (thin) {  // on along the same line (see pastThinSheet)
-      tnear = justPast(hit.rayDistance);
+      walk.crossThinSheet(hit);
       continue;
     }
     crossInterface(media, hit.materialId, entering);
-    const Vec3 next = offsetOrigin(hit.position, hit.geometricNormal, direction);
-    remaining -= (next - position).dot(direction);
-    position = next;
-    tnear = 0.0f;
+    walk.cross(hit);
   }
   return Color::Zero();
 }
@@ -433,8 +427,7 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
     v.time = ray.time;
     v.materialId = hit.materialId;
     Vec3 ng = hit.geometricNormal;
-    Vec3 ns = hit.shadingNormal;
-    if (ns.dot(ng) < 0.0f) ns = -ns;  // interpolated normals follow the winding's side
+    Vec3 ns = onGeometricSide(hit.shadingNormal, ng);  // interpolated normals follow the winding's side
     const bool frontFacing = v.wo.dot(ng) > 0.0f;
     v.entering = frontFacing;
     v.thinSheet = isThinSheet(hit);
@@ -520,8 +513,7 @@ Color PathIntegrator::radiance(const Ray& cameraRay, PixelSampler& sampler, Firs
     const std::optional<BsdfSample> bs = v.bsdf->sample(v.woLocal, u[0], Vec2(u[1], u[2]));
     if (!bs || bs->pdf <= 0.0f) break;
     const Vec3 wi = v.frame.toWorld(bs->wi).normalized();
-    const bool geometricReflect = wi.dot(ng) * v.wo.dot(ng) > 0.0f;
-    if (geometricReflect == bs->transmitted) break;  // the shading normal sent it through the surface
+    if (reflectsGeometrically(v.wo, wi, ng) == bs->transmitted) break;  // the shading normal sent it through the surface
     lastSegment = bounces.countIsOverLimit(*bs);
     if (depth == 0 && paths.active()) {
       if (bs->specular) paths.leftByDeltaLobe(bs->transmitted);

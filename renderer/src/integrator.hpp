@@ -90,6 +90,8 @@ class PathIntegrator {
   // moves past the skipped ones, media follows them); Lost when too many were skipped.
   Trace traceToRealSurface(Ray& ray, SurfaceHit& hit, MediumStack& media, PathCounters& counters) const;
   // A surface of dielectric materialId; entering when the ray arrives on its normal's side.
+  // The interface a walk meets at hit (segment_walk.hpp), false or real, with the medium beyond it.
+  InterfaceCrossing mediumInterface(const MediumStack& media, const SurfaceHit& hit, bool entering) const;
   InterfaceCrossing classifyInterface(const MediumStack& media, uint32_t materialId, bool entering) const;
   // The BSDF of a real interface of materialId against otherMaterial (-1 = air).
   const Bsdf* interfaceBsdf(uint32_t materialId, int otherMaterial) const;

@@ -27,6 +27,8 @@
 #include "integrator.hpp"
 #include "lacrima/materials/smooth_dielectric.hpp"
 #include "ray_offset.hpp"
+#include "segment_walk.hpp"
+#include "shading_side.hpp"
 
 namespace lacrima {
 
@@ -98,8 +100,7 @@ ManifoldEndpoint endpointOf(const Vec3& x0, const LightSample& light) {
 // The shading normal of a dielectric surface on its geometric normal's side, as the straight
 // transparent shadow orients it.
 Vec3 outsideShadingNormal(const SurfacePatch& patch) {
-  const Vec3d ng = patch.geometricNormal(), ns = patch.shadingNormal();
-  return (ns.dot(ng) < 0.0 ? Vec3d(-ns) : ns).cast<float>();
+  return onGeometricSide(patch.shadingNormal(), patch.geometricNormal()).cast<float>();
 }
 
 }  // namespace
@@ -122,17 +123,16 @@ struct PathIntegrator::CausticSeed {
 bool PathIntegrator::traceCausticSeed(const Vertex& v, const LightSample& light, MediumStack media, CausticSeed& seed,
                                       PathCounters& counters) const {
   const Vec3& direction = light.direction;
-  Vec3 position = offsetOrigin(v.position, v.geometricNormal, direction);
-  float remaining = std::isinf(light.distance) ? light.distance : light.distance * (1.0f - 1e-4f);
+  const float maxDistance = std::isinf(light.distance) ? light.distance : light.distance * (1.0f - 1e-4f);
+  SegmentWalk walk(scene_, Ray{offsetOrigin(v.position, v.geometricNormal, direction), direction, v.time}, maxDistance);
   seed.count = 0;
   for (int surface = 0; surface < kMaxSeedSurfaces; ++surface) {
     SurfaceHit hit;
-    ++counters.rays;
-    if (!scene_.intersect(Ray{position, direction, v.time}, hit) || hit.distance >= remaining) return seed.count > 0;
+    if (!walk.next(hit, counters.rays) || walk.pastTheEnd(hit)) return seed.count > 0;
     if (hit.lightIndex >= 0 || !isDielectric(hit.materialId)) break;  // opaque
     if (isThinSheet(hit)) return false;  // it bends nothing: the straight transparent shadow is exact there
-    const bool entering = direction.dot(hit.geometricNormal) < 0.0f;
-    const InterfaceCrossing crossing = nested_ ? classifyInterface(media, hit.materialId, entering) : InterfaceCrossing{};
+    const bool entering = walk.entering(hit);
+    const InterfaceCrossing crossing = mediumInterface(media, hit, entering);
     if (!crossing.isFalse) {
       const Bsdf* bsdf = interfaceBsdf(hit.materialId, crossing.otherMaterial);
       const auto* smooth = dynamic_cast<const SmoothDielectricBsdf*>(bsdf);
@@ -140,9 +140,7 @@ bool PathIntegrator::traceCausticSeed(const Vertex& v, const LightSample& light,
       seed.crossings[seed.count++] = {hit, entering, bsdf, smooth->ior()};
     }
     crossInterface(media, hit.materialId, entering);
-    const Vec3 next = offsetOrigin(hit.position, hit.geometricNormal, direction);
-    remaining -= (next - position).dot(direction);
-    position = next;
+    walk.cross(hit);
   }
   seed.count = 0;  // blocked (or too many surfaces, as the straight shadow gives up)
   return true;
@@ -218,8 +216,8 @@ std::optional<Color> PathIntegrator::manifoldDirectLight(const Vertex& v, const 
   // f at x0 towards the chain's first vertex, with the same no-leak rule as direct light.
   const Vec3 w0 = (chain.vertices[0].patch.position() - x0).normalized().cast<float>();
   const Vec3 wiLocal = v.frame.toLocal(w0);
-  const bool geometricReflect = w0.dot(v.geometricNormal) * v.wo.dot(v.geometricNormal) > 0.0f;
-  if (geometricReflect != (wiLocal.z() * v.woLocal.z() > 0.0f)) return Color::Zero();
+  if (reflectsGeometrically(v.wo, w0, v.geometricNormal) != reflectsInShadingFrame(v.woLocal, wiLocal))
+    return Color::Zero();
   const Color f = v.bsdf->eval(v.woLocal, wiLocal) * absCosTheta(wiLocal);
   if ((f <= 0.0f).all()) return Color::Zero();
   wiLocalOut = wiLocal;

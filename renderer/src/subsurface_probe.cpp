@@ -6,6 +6,8 @@
 #include <array>
 #include <cmath>
 
+#include "shading_side.hpp"
+
 namespace lacrima {
 
 namespace {
@@ -137,7 +139,7 @@ std::optional<SubsurfaceExit> probeDiffusionExit(const EmbreeScene& scene, const
   SurfaceHit chosen;
   scene.hitAt(chord, candidates[choice.index], chosen);
   const Vec3 ng = surface.entryOnWindingSide ? chosen.geometricNormal : Vec3(-chosen.geometricNormal);
-  const Vec3 ns = chosen.shadingNormal.dot(ng) > 0.0f ? chosen.shadingNormal : Vec3(-chosen.shadingNormal);
+  const Vec3 ns = onGeometricSide(chosen.shadingNormal, ng);
   const float density = probeDensity(profile, axes, channels, entry, chosen.position, ng);
   if (!(density > 0.0f)) return std::nullopt;
   const float distance = (chosen.position - entry).norm();

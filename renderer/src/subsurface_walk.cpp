@@ -6,6 +6,8 @@
 
 #include "lacrima/materials/sampling.hpp"
 #include "ray_offset.hpp"
+#include "segment_walk.hpp"
+#include "shading_side.hpp"
 
 namespace lacrima {
 
@@ -28,18 +30,15 @@ enum class FlightEnd { Scattered, Surface, Lost };
 FlightEnd flyToSurface(const EmbreeScene& scene, const std::vector<float>& dielectricIndex, Ray ray, float distance,
                        SurfaceHit& hit, uint64_t& rays) {
   constexpr int kMaxCrossed = 16;
-  float travelled = 0.0f;
+  SegmentWalk walk(scene, ray);
   for (int crossed = 0; crossed <= kMaxCrossed; ++crossed) {
-    ++rays;
-    if (!scene.intersect(ray, hit)) return FlightEnd::Lost;
-    if (travelled + hit.distance > distance) return FlightEnd::Scattered;
+    if (!walk.next(hit, rays)) return FlightEnd::Lost;
+    if (walk.travelled() + hit.distance > distance) return FlightEnd::Scattered;
     if (hit.lightIndex >= 0 || dielectricIndex[hit.materialId] == 0.0f) {
-      hit.distance += travelled;
+      hit.distance += walk.travelled();
       return FlightEnd::Surface;
     }
-    const Vec3 next = offsetOrigin(hit.position, hit.geometricNormal, ray.direction);
-    travelled += (next - ray.origin).dot(ray.direction);
-    ray.origin = next;
+    walk.cross(hit);
   }
   return FlightEnd::Lost;
 }
@@ -102,7 +101,7 @@ std::optional<SubsurfaceExit> walkBelowSurface(const EmbreeScene& scene, const S
       if (pdf <= 0.0f) return std::nullopt;
       weight *= transmittance / pdf;
       const Vec3 ng = hit.geometricNormal.dot(direction) > 0.0f ? hit.geometricNormal : Vec3(-hit.geometricNormal);
-      const Vec3 ns = hit.shadingNormal.dot(ng) > 0.0f ? hit.shadingNormal : Vec3(-hit.shadingNormal);
+      const Vec3 ns = onGeometricSide(hit.shadingNormal, ng);
       // Radiance scales with the square of the index of the medium it is in (L / n^2 is conserved,
       // pbrt-v4 §9.5.2): a walk from under a drop out into air, or back, carries that ratio.
       const float ratio = entryIndex / indexOutsideSkin(scene, dielectricIndex, hit.position, ng, time, rays);
