@@ -4,7 +4,7 @@
 #include <cmath>
 #include <random>
 
-#include "height_field_mesh.hpp"
+#include "height_field_support.hpp"
 #include "lacrima/mesh/closest_point_grid.hpp"
 #include "lacrima/base/error.hpp"
 #include "lacrima/mesh/shapes.hpp"

@@ -5,8 +5,8 @@
 #include <cstdio>
 #include <set>
 
-#include "geometry/glb_test_util.hpp"
-#include "geometry/mesh_test_util.hpp"
+#include "geometry/glb_support.hpp"
+#include "geometry/mesh_support.hpp"
 #include "lacrima/base/error.hpp"
 #include "lacrima/face/eye.hpp"
 #include "lacrima/rig/face_rig.hpp"

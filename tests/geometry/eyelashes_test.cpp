@@ -4,7 +4,7 @@
 
 #include <cstdio>
 
-#include "geometry/glb_test_util.hpp"
+#include "geometry/glb_support.hpp"
 #include "lacrima/base/error.hpp"
 #include "lacrima/face/eye.hpp"
 #include "lacrima/face/eyelashes.hpp"

@@ -3,7 +3,7 @@
 
 #include <functional>
 
-#include "geometry/face_test_util.hpp"
+#include "geometry/face_support.hpp"
 #include "lacrima/base/error.hpp"
 #include "lacrima/rig/face_controls.hpp"
 

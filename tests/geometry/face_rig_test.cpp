@@ -5,8 +5,8 @@
 #include <cstring>
 #include <random>
 
-#include "geometry/face_test_util.hpp"
-#include "geometry/glb_test_util.hpp"
+#include "geometry/face_support.hpp"
+#include "geometry/glb_support.hpp"
 #include "lacrima/base/error.hpp"
 #include "lacrima/rig/face_rig.hpp"
 

@@ -8,7 +8,7 @@
 
 #include <fmt/format.h>
 
-#include "geometry/glb_test_util.hpp"
+#include "geometry/glb_support.hpp"
 #include "lacrima/base/error.hpp"
 #include "lacrima/io/gltf_asset.hpp"
 

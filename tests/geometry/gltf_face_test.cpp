@@ -7,7 +7,7 @@
 #include <cstring>
 #include <map>
 
-#include "geometry/glb_test_util.hpp"
+#include "geometry/glb_support.hpp"
 #include "lacrima/io/gltf_asset.hpp"
 
 namespace lacrima {

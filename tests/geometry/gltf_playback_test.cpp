@@ -8,7 +8,7 @@
 
 #include <cmath>
 
-#include "geometry/gltf_builder_test_util.hpp"
+#include "geometry/gltf_builder_support.hpp"
 #include "lacrima/base/error.hpp"
 #include "lacrima/io/gltf_asset.hpp"
 

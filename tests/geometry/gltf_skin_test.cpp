@@ -1,13 +1,13 @@
 // glTF skins (spec 3.7.3): the loader bakes the skin's rest pose (ignoring the mesh node's
 // transform), playback gives per-skin joint matrices and applyGltfSkin poses a skinned primitive
-// (morph first, then skin). The GLB is described in gltf_skin_test_util.hpp.
+// (morph first, then skin). The GLB is described in gltf_skin_support.hpp.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
-#include "geometry/gltf_skin_test_util.hpp"
+#include "geometry/gltf_skin_support.hpp"
 #include "lacrima/base/error.hpp"
 #include "lacrima/io/gltf_asset.hpp"
 

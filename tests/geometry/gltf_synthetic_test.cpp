@@ -2,7 +2,7 @@
 // (uint16 indices, normalized uint8 uvs, byteStride, sparse uint8 indices, zero targets).
 #include <gtest/gtest.h>
 
-#include "geometry/glb_test_util.hpp"
+#include "geometry/glb_support.hpp"
 #include "lacrima/base/error.hpp"
 #include "lacrima/io/gltf_asset.hpp"
 

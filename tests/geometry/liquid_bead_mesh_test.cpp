@@ -6,7 +6,7 @@
 #include <limits>
 #include <numbers>
 
-#include "geometry/height_field_mesh.hpp"
+#include "geometry/height_field_support.hpp"
 #include "lacrima/base/error.hpp"
 #include "lacrima/liquid/liquid_bead_mesh.hpp"
 

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "geometry/height_field_mesh.hpp"
+#include "geometry/height_field_support.hpp"
 #include "lacrima/base/error.hpp"
 #include "lacrima/mesh/flow_path_transfer.hpp"
 #include "lacrima/liquid/liquid_tear.hpp"

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstdint>
 
-#include "geometry/height_field_mesh.hpp"
+#include "geometry/height_field_support.hpp"
 #include "lacrima/base/error.hpp"
 #include "lacrima/mesh/mesh_smoothing.hpp"
 

@@ -4,7 +4,7 @@
 
 #include <fstream>
 
-#include "geometry/glb_test_util.hpp"
+#include "geometry/glb_support.hpp"
 #include "lacrima/base/error.hpp"
 #include "lacrima/io/performance_track.hpp"
 

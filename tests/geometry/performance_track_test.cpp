@@ -5,7 +5,7 @@
 #include <fstream>
 #include <random>
 
-#include "geometry/glb_test_util.hpp"
+#include "geometry/glb_support.hpp"
 #include "lacrima/base/error.hpp"
 #include "lacrima/io/performance_track.hpp"
 

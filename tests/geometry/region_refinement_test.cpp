@@ -6,7 +6,7 @@
 #include <cmath>
 #include <map>
 
-#include "geometry/mesh_test_util.hpp"
+#include "geometry/mesh_support.hpp"
 #include "lacrima/rig/region_refinement.hpp"
 
 namespace lacrima {

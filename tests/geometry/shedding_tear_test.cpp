@@ -11,7 +11,7 @@
 #include "lacrima/base/error.hpp"
 #include "lacrima/mesh/mesh.hpp"
 #include "lacrima/tears/shedding_tear.hpp"
-#include "height_field_mesh.hpp"
+#include "height_field_support.hpp"
 
 namespace lacrima {
 namespace shedding_tear_test {

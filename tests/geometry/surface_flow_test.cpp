@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "geometry/glb_test_util.hpp"
+#include "geometry/glb_support.hpp"
 #include "lacrima/base/error.hpp"
 #include "lacrima/io/gltf_asset.hpp"
 #include "lacrima/mesh/mesh.hpp"

@@ -10,7 +10,7 @@
 #include "lacrima/base/error.hpp"
 #include "lacrima/tears/shedding_tear.hpp"
 #include "lacrima/mesh/surface_region.hpp"
-#include "height_field_mesh.hpp"
+#include "height_field_support.hpp"
 
 namespace lacrima {
 namespace surface_region_test {

@@ -7,7 +7,7 @@
 #include "lacrima/materials/skin.hpp"
 #include "lacrima/materials/smooth_dielectric.hpp"
 #include "lacrima/materials/wet_skin.hpp"
-#include "test_support.hpp"
+#include "materials_support.hpp"
 
 namespace lacrima {
 namespace bounce_kind_test {

@@ -4,8 +4,8 @@
 
 #include <cstdio>
 
-#include "bsdf_cases.hpp"
-#include "chi2.hpp"
+#include "bsdf_cases_support.hpp"
+#include "chi2_support.hpp"
 #include "lacrima/materials/microfacet.hpp"
 
 namespace lacrima {

@@ -4,7 +4,7 @@
 // glossy and its refraction transmission, delta lobes nothing).
 #include <gtest/gtest.h>
 
-#include "bsdf_cases.hpp"
+#include "bsdf_cases_support.hpp"
 #include "lacrima/base/hash.hpp"
 #include "lacrima/materials/skin.hpp"
 

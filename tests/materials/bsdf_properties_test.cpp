@@ -6,8 +6,8 @@
 #include <map>
 #include <tuple>
 
-#include "bsdf_cases.hpp"
-#include "chi2.hpp"
+#include "bsdf_cases_support.hpp"
+#include "chi2_support.hpp"
 #include "lacrima/materials/diffuse.hpp"
 #include "lacrima/materials/fresnel.hpp"
 #include "lacrima/materials/rough_dielectric.hpp"
@@ -22,7 +22,7 @@ struct NamedParams {
   std::string name;
   MaterialParams params;
   bool twoSided;  // light may arrive from below (dielectrics)
-  float wetCoverage = 0.0f;  // > 0: wet skin (bsdf_cases.hpp makeCaseBsdf)
+  float wetCoverage = 0.0f;  // > 0: wet skin (bsdf_cases_support.hpp makeCaseBsdf)
 };
 
 std::vector<NamedParams> propertyMaterials() {

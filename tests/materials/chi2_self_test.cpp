@@ -5,10 +5,10 @@
 #include <cmath>
 #include <cstdio>
 
-#include "chi2.hpp"
+#include "chi2_support.hpp"
 #include "lacrima/materials/microfacet.hpp"
 #include "lacrima/materials/sampling.hpp"
-#include "test_support.hpp"
+#include "materials_support.hpp"
 
 namespace lacrima {
 namespace chi2_self_test {

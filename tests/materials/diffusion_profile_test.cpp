@@ -8,7 +8,7 @@
 #include <random>
 #include <vector>
 
-#include "chi2.hpp"
+#include "chi2_support.hpp"
 #include "lacrima/materials/diffusion_profile.hpp"
 
 namespace lacrima {

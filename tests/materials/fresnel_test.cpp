@@ -6,7 +6,7 @@
 
 #include "lacrima/materials/fresnel.hpp"
 #include "lacrima/materials/material.hpp"
-#include "test_support.hpp"
+#include "materials_support.hpp"
 
 namespace lacrima {
 namespace fresnel_test {

@@ -4,9 +4,9 @@
 
 #include <cmath>
 
-#include "chi2.hpp"
+#include "chi2_support.hpp"
 #include "lacrima/materials/microfacet.hpp"
-#include "test_support.hpp"
+#include "materials_support.hpp"
 
 namespace lacrima {
 namespace microfacet_test {

@@ -6,7 +6,7 @@
 
 #include "lacrima/base/hash.hpp"
 #include "lacrima/materials/pores.hpp"
-#include "test_support.hpp"
+#include "materials_support.hpp"
 
 namespace lacrima {
 namespace pores_test {

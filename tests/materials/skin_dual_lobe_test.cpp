@@ -2,12 +2,12 @@
 // lobes when lobeMix > 0, and the BSDF's pore hook.
 #include <gtest/gtest.h>
 
-#include "chi2.hpp"
+#include "chi2_support.hpp"
 #include "lacrima/materials/diffuse.hpp"
 #include "lacrima/materials/fresnel.hpp"
 #include "lacrima/materials/microfacet.hpp"
 #include "lacrima/materials/skin.hpp"
-#include "test_support.hpp"
+#include "materials_support.hpp"
 
 namespace lacrima {
 namespace skin_dual_lobe_test {

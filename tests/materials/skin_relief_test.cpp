@@ -12,7 +12,7 @@
 #include "lacrima/materials/sampling.hpp"
 #include "lacrima/materials/skin.hpp"
 #include "lacrima/materials/skin_relief.hpp"
-#include "test_support.hpp"
+#include "materials_support.hpp"
 
 namespace lacrima {
 namespace skin_relief_test {

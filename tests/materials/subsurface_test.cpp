@@ -8,7 +8,7 @@
 #include "lacrima/materials/skin.hpp"
 #include "lacrima/materials/subsurface.hpp"
 #include "support/chandrasekhar_h.hpp"
-#include "test_support.hpp"
+#include "materials_support.hpp"
 
 namespace lacrima {
 namespace subsurface_test {

@@ -2,7 +2,7 @@
 // checked against a photon random walk in the film, the wet skin's base albedo (the skin's own
 // surface already traps light) against a random walk through skin and film, the lost sheen and
 // a sharper highlight.
-// Chi-square, consistency, reciprocity and energy cases live in bsdf_cases.hpp /
+// Chi-square, consistency, reciprocity and energy cases live in bsdf_cases_support.hpp /
 // bsdf_properties_test.cpp with the other BSDFs.
 #include <gtest/gtest.h>
 
@@ -11,7 +11,7 @@
 #include "lacrima/materials/fresnel.hpp"
 #include "lacrima/materials/sampling.hpp"
 #include "lacrima/materials/wet_skin.hpp"
-#include "test_support.hpp"
+#include "materials_support.hpp"
 
 namespace lacrima {
 namespace wet_skin_test {

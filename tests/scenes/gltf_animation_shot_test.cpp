@@ -8,8 +8,8 @@
 
 #include <string>
 
-#include "geometry/gltf_builder_test_util.hpp"
-#include "geometry/gltf_skin_test_util.hpp"
+#include "geometry/gltf_builder_support.hpp"
+#include "geometry/gltf_skin_support.hpp"
 #include "shot_test_support.hpp"
 
 namespace lacrima {
@@ -128,7 +128,7 @@ TEST(GltfAnimationShot, WithoutAnAnimationMemberTheAssetIsStill) {
   expectPositionsNear(triMesh(buildFrame(shot, 5)).mesh.positions, expectedTriangle(0, 0), 0.0f);
 }
 
-// The skinned strip of gltf_skin_test_util.hpp (asset "tri" here, so triMesh finds it), at z - 1.
+// The skinned strip of gltf_skin_support.hpp (asset "tri" here, so triMesh finds it), at z - 1.
 TEST(GltfAnimationShot, SkinnedAnimationPlaysThroughBuildFrame) {
   test::GltfBuilder b = test::skinnedStrip();
   const auto glb = shotDir() / "skinned.glb";

@@ -10,7 +10,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "geometry/height_field_mesh.hpp"
+#include "geometry/height_field_support.hpp"
 #include "lacrima/mesh/surface_point.hpp"
 #include "lacrima/scenes/liquid_tear.hpp"
 #include "shot_test_support.hpp"

@@ -8,7 +8,7 @@
 
 #include "lacrima/tears/shedding_tear.hpp"
 #include "lacrima/mesh/surface_point.hpp"
-#include "geometry/gltf_builder_test_util.hpp"
+#include "geometry/gltf_builder_support.hpp"
 #include "shot_test_support.hpp"
 
 namespace lacrima {

@@ -12,7 +12,7 @@
 
 #include "lacrima/base/hash.hpp"
 #include "lacrima/tracking/animation_prior.hpp"
-#include "tracking/tracking_test_support.hpp"
+#include "tracking/tracking_support.hpp"
 
 namespace lacrima::tracking {
 namespace animation_prior_test {

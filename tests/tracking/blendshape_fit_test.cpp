@@ -7,7 +7,7 @@
 #include <cstdio>
 #include <algorithm>
 
-#include "tracking/tracking_test_support.hpp"
+#include "tracking/tracking_support.hpp"
 
 namespace lacrima::tracking {
 namespace blendshape_fit_test {

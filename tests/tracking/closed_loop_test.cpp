@@ -10,7 +10,7 @@
 
 #include "lacrima/tracking/initial_pose.hpp"
 #include "lacrima/tracking/performance_tracker.hpp"
-#include "tracking/tracking_test_support.hpp"
+#include "tracking/tracking_support.hpp"
 
 namespace lacrima::tracking {
 namespace closed_loop_test {

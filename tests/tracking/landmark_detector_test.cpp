@@ -9,7 +9,7 @@
 #include <cstdio>
 
 #include "lacrima/tracking/synthetic_capture.hpp"
-#include "tracking/tracking_test_support.hpp"
+#include "tracking/tracking_support.hpp"
 
 namespace lacrima::tracking {
 namespace landmark_detector_test {

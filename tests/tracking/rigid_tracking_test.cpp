@@ -13,7 +13,7 @@
 #include "lacrima/tracking/depth_sensor.hpp"
 #include "lacrima/tracking/pose_filter.hpp"
 #include "lacrima/tracking/rigid_icp.hpp"
-#include "tracking/tracking_test_support.hpp"
+#include "tracking/tracking_support.hpp"
 
 namespace lacrima::tracking {
 namespace rigid_tracking_test {

@@ -10,7 +10,7 @@
 
 #include "lacrima/materials/material.hpp"
 #include "lacrima/materials/wet_skin.hpp"
-#include "test_support.hpp"
+#include "materials_support.hpp"
 
 namespace lacrima::test {
 

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "geometry/gltf_builder_test_util.hpp"
+#include "geometry/gltf_builder_support.hpp"
 
 namespace lacrima::test {
 

@@ -9,11 +9,11 @@
 #include "lacrima/tracking/blendshape_fit.hpp"
 #include "lacrima/tracking/synthetic_capture.hpp"
 
-namespace lacrima::tracking::test {
+namespace lacrima::test {
 
-inline const BlendshapeModel& ictModel() {
-  static const BlendshapeModel model =
-      blendshapeModelOf(loadGltfAsset(std::string(LACRIMA_SOURCE_DIR) + "/scenes/assets/ict-face/ict_face.glb"), "M_Face");
+inline const tracking::BlendshapeModel& ictModel() {
+  static const tracking::BlendshapeModel model =
+      tracking::blendshapeModelOf(loadGltfAsset(std::string(LACRIMA_SOURCE_DIR) + "/scenes/assets/ict-face/ict_face.glb"), "M_Face");
   return model;
 }
 
@@ -33,20 +33,20 @@ inline Eigen::Isometry3d headPose(double distance, const Vec3d& degrees = Vec3d:
 }
 
 struct Capture {
-  DepthFrame depth;
+  tracking::DepthFrame depth;
   std::vector<Eigen::Vector2d> landmarks;  // NaN where the landmark is not on the skin
 };
 
 // The face at `weights` and `pose` seen by the default camera: depth with `noise` x a Kinect's
 // noise, landmarks with uniform noise of +-`landmarkNoise` pixels; `seed` draws both.
-inline Capture capture(const BlendshapeModel& model, const Eigen::VectorXd& weights, const Eigen::Isometry3d& pose,
+inline Capture capture(const tracking::BlendshapeModel& model, const Eigen::VectorXd& weights, const Eigen::Isometry3d& pose,
                        double noise, double landmarkNoise, uint64_t seed) {
-  return Capture{captureDepth(model, weights, pose, PinholeCamera{}, noise, seed),
-                 projectLandmarks(model, weights, pose, PinholeCamera{}, landmarkNoise, seed)};
+  return Capture{tracking::captureDepth(model, weights, pose, tracking::PinholeCamera{}, noise, seed),
+                 tracking::projectLandmarks(model, weights, pose, tracking::PinholeCamera{}, landmarkNoise, seed)};
 }
 
 // The root mean square distance between the model's vertices at two weight vectors, millimetres.
-inline double vertexRmsMm(const BlendshapeModel& model, const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+inline double vertexRmsMm(const tracking::BlendshapeModel& model, const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
   const std::vector<Vec3d> p = model.positions(a), q = model.positions(b);
   double squared = 0.0;
   for (size_t v = 0; v < p.size(); ++v) squared += (p[v] - q[v]).squaredNorm();
@@ -57,4 +57,4 @@ inline double degreesBetween(const Eigen::Isometry3d& a, const Eigen::Isometry3d
   return Eigen::AngleAxisd(a.linear() * b.linear().transpose()).angle() * 180.0 / std::numbers::pi;
 }
 
-}  // namespace lacrima::tracking::test
+}  // namespace lacrima::test

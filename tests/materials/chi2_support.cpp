@@ -1,5 +1,5 @@
-// Chi-square goodness-of-fit machinery; see chi2.hpp.
-#include "chi2.hpp"
+// Chi-square goodness-of-fit machinery; see chi2_support.hpp.
+#include "chi2_support.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,7 +9,7 @@
 
 #include <fmt/format.h>
 
-#include "test_support.hpp"
+#include "materials_support.hpp"
 
 namespace lacrima::test {
 

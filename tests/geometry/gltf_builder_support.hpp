@@ -1,11 +1,11 @@
 #pragma once
 // A small glTF document builder for tests: float accessors appended to one BIN chunk, animation
-// samplers and channels, written as a GLB (see glb_test_util.hpp).
+// samplers and channels, written as a GLB (see glb_support.hpp).
 #include <filesystem>
 #include <string>
 #include <vector>
 
-#include "geometry/glb_test_util.hpp"
+#include "geometry/glb_support.hpp"
 
 namespace lacrima::test {
 
