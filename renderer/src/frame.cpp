@@ -5,6 +5,15 @@
 
 namespace lacrima {
 
+const char* causticsName(Caustics caustics) {
+  switch (caustics) {
+    case Caustics::Off: return "off";
+    case Caustics::Straight: return "straight";
+    case Caustics::Mnee: return "mnee";
+  }
+  return "?";
+}
+
 bool Frame::hasMotion() const {
   return camera.cameraToWorldAtClose.has_value() ||
          std::any_of(meshes.begin(), meshes.end(), [](const MeshInstance& m) { return m.moves(); }) ||

@@ -6,7 +6,6 @@
 // floor under the drop's centre (4 x 4 pixels), low and from the side, past the drop.
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -152,31 +151,6 @@ TEST(Caustics, RendersTheSameWithAnyThreadCount) {
   scene.dropHeight = kFocusHeight;
   Frame frame = dropOverFloor(scene, Caustics::Mnee, 8, 3, 16);
   test::expectThreadCountIndependent(frame);
-}
-
-// Equal-error time ratio (measured, not asserted; the numbers go into the report): the time
-// brute force needs to reach the variance of an MNEE render of the single-solution scene.
-TEST(Caustics, MeasureEqualErrorTimeRatio) {
-  const auto timed = [](Caustics caustics, int spp, int runs, double& seconds) {
-    const auto start = std::chrono::steady_clock::now();
-    const test::MeanEstimate e = overSeeds(DropScene{}, caustics, spp, runs);
-    seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / runs;
-    return e;
-  };
-  // MNEE's per-sample values are heavy-tailed (the geometry term peaks near folds): at low spp
-  // a few runs underestimate its variance, so both sides get enough samples.
-  constexpr int kMneeSpp = 256, kBruteSpp = 4096, kRuns = 12;
-  double mneeSeconds = 0.0, bruteSeconds = 0.0;
-  const test::MeanEstimate mnee = timed(Caustics::Mnee, kMneeSpp, kRuns, mneeSeconds);
-  const test::MeanEstimate brute = timed(Caustics::Off, kBruteSpp, kRuns, bruteSeconds);
-  // Per render: variance ~ 1 / spp, so brute force reaches MNEE's variance after
-  // bruteSeconds * (sigma_brute / sigma_mnee)^2.
-  const double ratio = bruteSeconds * std::pow(brute.standardError / mnee.standardError, 2.0) / mneeSeconds;
-  std::printf("[ measure  ] MNEE %d spp: %.4f +- %.4f per render in %.4f s; brute force %d spp: %.4f +- %.4f in %.4f s; "
-              "equal-error time ratio brute/MNEE = %.0f\n",
-              kMneeSpp, mnee.mean, mnee.standardError * std::sqrt(double(kRuns)), mneeSeconds, kBruteSpp, brute.mean,
-              brute.standardError * std::sqrt(double(kRuns)), bruteSeconds, ratio);
-  EXPECT_GT(mnee.mean, 0.0);
 }
 
 }  // namespace caustics_test

@@ -134,5 +134,31 @@ TEST(BenchQuality, AFrameOutsideTheShotIsBadInput) {
   EXPECT_NE(run.output.find("--frame 9: the shot's frames are 1-2"), std::string::npos) << run.output;
 }
 
+// --caustics renders the curve in another mode while the reference keeps the shot's (MNEE): the
+// second mode finds the first's reference cached, and its curve differs (brute force is far
+// noisier on the drop's focused caustic).
+TEST(BenchQuality, CausticsModeChangesTheMeasuredRendersNotTheReference) {
+  const fs::path dir = test::testDirectory("bench_quality_caustics", /*fresh=*/true);
+  const std::string shot = std::string(LACRIMA_SOURCE_DIR) + "/scenes/shots/caustic_drop.json";
+  const auto run = [&](const std::string& mode) {
+    return test::lacrima({"bench", "--quality", shot, "--width", "32", "--height", "18", "--reference-spp", "256",
+                          "--max-spp", "16", "--caustics", mode, "--cache", (dir / "cache").string()});
+  };
+  const auto mnee = run("mnee");
+  ASSERT_EQ(mnee.exitStatus, 0) << mnee.output;
+  EXPECT_NE(mnee.output.find("caustics mnee"), std::string::npos) << mnee.output;
+  EXPECT_NE(mnee.output.find("(rendered in"), std::string::npos) << mnee.output;
+  const auto bruteForce = run("off");
+  ASSERT_EQ(bruteForce.exitStatus, 0) << bruteForce.output;
+  EXPECT_NE(bruteForce.output.find("caustics off"), std::string::npos) << bruteForce.output;
+  EXPECT_NE(bruteForce.output.find("(cached)"), std::string::npos) << bruteForce.output;
+  EXPECT_EQ(rmseColumn(mnee.output).size(), 5u) << mnee.output;  // 1, 2, 4, 8, 16 spp
+  EXPECT_NE(rmseColumn(bruteForce.output), rmseColumn(mnee.output));
+
+  const auto unknown = run("focused");
+  EXPECT_EQ(unknown.exitStatus, 2) << unknown.output;
+  EXPECT_NE(unknown.output.find("--caustics"), std::string::npos) << unknown.output;
+}
+
 }  // namespace quality_curve_test
 }  // namespace lacrima::cli

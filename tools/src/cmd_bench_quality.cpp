@@ -153,13 +153,18 @@ int runBenchQuality(const BenchOptions& o) {
       if (frame.settings.adaptive.enabled) frame.settings.adaptive.threshold = float(*o.adaptiveThreshold);
     }
     const AdaptiveSampling& adaptive = frame.settings.adaptive;
-    std::printf("lacrima bench --quality: %s frame %d, %dx%d, max depth %d, threads %s, adaptive %s\n", shotPath.c_str(),
-                frameNumber, o.width, o.height, frame.settings.maxDepth,
+    const Caustics measuredCaustics = o.caustics.value_or(frame.settings.caustics);
+    std::printf("lacrima bench --quality: %s frame %d, %dx%d, max depth %d, threads %s, adaptive %s, caustics %s\n",
+                shotPath.c_str(), frameNumber, o.width, o.height, frame.settings.maxDepth,
                 o.threads ? std::to_string(o.threads).c_str() : "all",
                 adaptive.enabled ? fmt::format("threshold {} min {} spp", adaptive.threshold, adaptive.minSamples).c_str()
-                                 : "off");
+                                 : "off",
+                causticsName(measuredCaustics));
     const fs::path path = referencePath(o, shotPath, frameNumber, frame.settings);
+    // The reference keeps the shot's caustics: the measured modes (MNEE and brute force converge
+    // to the same image; straight does not) are then judged against one answer.
     const std::vector<float> reference = referenceImage(o, frame, path);
+    frame.settings.caustics = measuredCaustics;
     const std::vector<QualityPoint> points = measureCurve(o, frame, reference);
     std::printf("RMSE-vs-spp slope     %.3f (independent samples: -0.5; stratified sampling is steeper)\n",
                 rmseSlope(points));

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "lacrima/renderer/frame.hpp"
+
 namespace lacrima {
 struct Shot;
 }
@@ -116,6 +118,8 @@ struct BenchOptions {
   bool freshReference = false;
   // --adaptive: adaptive sampling's threshold for the measured renders (0: off); none: the shot's.
   std::optional<double> adaptiveThreshold;
+  // --caustics: the measured renders' caustics mode; none: the shot's. The reference keeps the shot's.
+  std::optional<Caustics> caustics;
 };
 
 struct DiffOptions {

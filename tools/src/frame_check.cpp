@@ -58,15 +58,6 @@ std::string checkRegion(const OIIO::ImageSpec& spec, const RenderSettings& s) {
                      spec.height, x, y, r.width, r.height, r.x, r.y);
 }
 
-const char* causticsName(Caustics c) {
-  switch (c) {
-    case Caustics::Off: return "off";
-    case Caustics::Straight: return "straight";
-    case Caustics::Mnee: return "mnee";
-  }
-  return "?";
-}
-
 }  // namespace
 
 std::map<std::string, std::string> pixelSettingsMetadata(const RenderSettings& s) {

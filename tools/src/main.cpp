@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <exception>
 #include <limits>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -466,6 +467,12 @@ void addBench(CLI::App& app, BenchOptions& o) {
                     "--quality: adaptive sampling for the measured renders with this threshold, 0 = off (default: "
                     "as the shot says); each count is then the pixels' maximum, and the mean is reported")
       ->check(nonNegativeNumber());
+  bench->add_option("--caustics", o.caustics,
+                    "--quality: the measured renders' caustics, mnee, straight or off (default: as the shot says; "
+                    "the reference keeps the shot's): e.g. MNEE against brute force on "
+                    "scenes/shots/caustic_drop.json")
+      ->transform(CLI::CheckedTransformer(std::map<std::string, lacrima::Caustics>{
+          {"mnee", lacrima::Caustics::Mnee}, {"straight", lacrima::Caustics::Straight}, {"off", lacrima::Caustics::Off}}));
   bench->callback(
       [&o] {
         throw CLI::RuntimeError(o.quality ? runBenchQuality(o)

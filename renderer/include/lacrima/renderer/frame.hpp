@@ -93,6 +93,8 @@ enum class Caustics {
   Straight,  // transparent shadows: shadow rays go straight through, Fresnel-weighted (no focusing)
   Mnee,      // manifold next-event estimation: the refracted connection, focused caustics
 };
+// The mode as shot files spell it: "off", "straight", "mnee".
+const char* causticsName(Caustics caustics);
 
 // Per-type bounce limits, as Cycles has them (its light-path settings "diffuse", "glossy" and
 // "transmission" bounces): a path may scatter `diffuse` times off diffuse lobes, `glossy` times
