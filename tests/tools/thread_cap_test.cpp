@@ -38,7 +38,9 @@ TEST(ThreadCap, OneThreadRunsOneTaskAtATime) {
 
 TEST(ThreadCap, ZeroMeansAllCores) {
   EXPECT_EQ(withThreadCap(0, [] { return tbb::this_task_arena::max_concurrency(); }), tbb::info::default_concurrency());
-  if (tbb::info::default_concurrency() > 1) EXPECT_GT(mostAtOnce(0), 1);
+  if (tbb::info::default_concurrency() > 1) {
+    EXPECT_GT(mostAtOnce(0), 1);
+  }
 }
 
 TEST(ThreadCap, ErrorsComeThrough) {
