@@ -353,12 +353,7 @@ Camera cameraAt(const ShotCamera& shotCamera, double frame) {
 
 // The lights (keyed centres and intensities) and the camera (at open and, when it moves, close).
 void addLightsAndCamera(const Shot& shot, int frameNumber, const ShutterTimes& shutter, Frame& frame) {
-  frame.lights = shot.lights;
-  for (size_t i = 0; i < frame.lights.size() && i < shot.lightCenterCurves.size(); ++i)
-    if (shot.lightCenterCurves[i]) frame.lights[i].center = shot.lightCenterCurves[i]->evaluate(float(frameNumber));
-  for (size_t i = 0; i < frame.lights.size() && i < shot.lightIntensities.size(); ++i)
-    if (shot.lightIntensities[i].animated() || shot.lightIntensities[i].constant != 1.0f)
-      frame.lights[i].radiance *= shot.lightIntensities[i].at(frameNumber);
+  for (const ShotLight& light : shot.lights) frame.lights.push_back(light.at(frameNumber));
   if (shot.environment) frame.environment = shot.environment->map;
   frame.uniformBackground = shot.background;
   frame.camera = cameraAt(shot.camera, shutter.open);

@@ -1121,11 +1121,7 @@ class ShotReader {
       if (auto x = readAnimatedNumber(c_, *i, o.at("intensity"), Range::atLeast(0))) intensity = *x;
     // animatedCenter is checked too: a missing center is not always an error yet here (with a
     // misspelt key such as "centcr" the object's unknown-key error comes later, from o).
-    if (c_.errorCount() == before && animatedCenter) {
-      shot_.lights.push_back(light);
-      shot_.lightCenterCurves.push_back(animatedCenter->curve);
-      shot_.lightIntensities.push_back(intensity);
-    }
+    if (c_.errorCount() == before && animatedCenter) shot_.lights.push_back({light, animatedCenter->curve, intensity});
   }
 
   void readShape(const Json& v, const std::string& pointer) {

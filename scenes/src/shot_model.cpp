@@ -66,6 +66,14 @@ std::vector<std::pair<size_t, float>> ShotPerformance::jointsAt(double frame) co
   return out;
 }
 
+AreaLight ShotLight::at(int frame) const {
+  AreaLight posed = light;
+  if (centerCurve) posed.center = centerCurve->evaluate(float(frame));
+  // A constant intensity of 1 leaves the radiance bitwise as written.
+  if (intensity.animated() || intensity.constant != 1.0f) posed.radiance *= intensity.at(frame);
+  return posed;
+}
+
 Affine3 ShotTransform::matrix() const {
   Affine3 m = Affine3::Identity();
   m.translate(translate);

@@ -102,7 +102,7 @@ TEST(LoadShot, DropsOnAPlane) {
 
   // The rectangle light faces its look-at point; power 5 W over 0.01 m^2, one-sided.
   ASSERT_EQ(shot.lights.size(), 1u);
-  const AreaLight& light = shot.lights[0];
+  const AreaLight& light = shot.lights[0].light;
   EXPECT_EQ(light.shape, AreaLight::Shape::Rectangle);
   const Vec3 normal = light.edgeU.cross(light.edgeV);
   EXPECT_NEAR(normal.norm(), 0.01f, 1e-7f);

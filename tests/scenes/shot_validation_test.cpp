@@ -215,12 +215,12 @@ TEST(ShotValidation, LightPowerBecomesRadiance) {
   ASSERT_EQ(shot.lights.size(), 2u);
   const float area = 0.1f;
   // Two-sided: the power leaves through both sides, L = P / (2 pi A).
-  EXPECT_NEAR(shot.lights[0].radiance.x(), 2.0f / (2.0f * kPi * area), 1e-4f);
-  EXPECT_NEAR(shot.lights[0].radiance.z(), 6.0f / (2.0f * kPi * area), 1e-4f);
-  EXPECT_TRUE(shot.lights[0].twoSided);
-  EXPECT_TRUE(shot.lights[0].edgeU == Vec3(0.5f, 0, 0));
-  EXPECT_NEAR(shot.lights[0].edgeU.cross(shot.lights[0].edgeV).normalized().y(), 1.0f, 1e-6f);
-  EXPECT_TRUE((shot.lights[1].radiance == Color(1, 2, 3)).all());
+  EXPECT_NEAR(shot.lights[0].light.radiance.x(), 2.0f / (2.0f * kPi * area), 1e-4f);
+  EXPECT_NEAR(shot.lights[0].light.radiance.z(), 6.0f / (2.0f * kPi * area), 1e-4f);
+  EXPECT_TRUE(shot.lights[0].light.twoSided);
+  EXPECT_TRUE(shot.lights[0].light.edgeU == Vec3(0.5f, 0, 0));
+  EXPECT_NEAR(shot.lights[0].light.edgeU.cross(shot.lights[0].light.edgeV).normalized().y(), 1.0f, 1e-6f);
+  EXPECT_TRUE((shot.lights[1].light.radiance == Color(1, 2, 3)).all());
 }
 
 TEST(ShotValidation, ALightNamesItsLightGroup) {
@@ -231,9 +231,9 @@ TEST(ShotValidation, ALightNamesItsLightGroup) {
   ])"));
   const Shot shot = loadShot(f);
   ASSERT_EQ(shot.lights.size(), 3u);
-  EXPECT_EQ(shot.lights[0].group, "key");
-  EXPECT_EQ(shot.lights[1].group, "key");
-  EXPECT_EQ(shot.lights[2].group, "");
+  EXPECT_EQ(shot.lights[0].light.group, "key");
+  EXPECT_EQ(shot.lights[1].light.group, "key");
+  EXPECT_EQ(shot.lights[2].light.group, "");
   const auto empty = writeShot("light_group_empty.json", shotText(R"("lights": [
     {"type": "sphere", "center": [0, 1, 0], "radius": 0.1, "power": 1, "lightGroup": ""}])"));
   std::vector<Diagnostic> diagnostics;

@@ -113,6 +113,17 @@ struct ShotGltfAnimation {
   double secondsAt(double frame) const;
 };
 
+// A light of the shot: the renderer's light as the file gives it (radiance already derived from
+// power where given; centre at the first key) and what the shot keys on it.
+struct ShotLight {
+  AreaLight light;
+  std::shared_ptr<const Vec3Curve> centerCurve;  // keyed centre in frames; null when still
+  AnimatedFloat intensity{1.0f, nullptr};        // multiplies the radiance (default 1)
+
+  // The light at a frame: its keyed centre, its radiance times its intensity there.
+  AreaLight at(int frame) const;
+};
+
 struct ShotEnvironment {
   std::filesystem::path file;  // resolved
   float intensity = 1.0f;
@@ -485,9 +496,7 @@ struct Shot {
 
   std::vector<Material> materials;       // from the shot file, in file order
   std::vector<Material> assetMaterials;  // glTF materials mapped automatically (unbound ones)
-  std::vector<AreaLight> lights;         // radiance already derived from power where given
-  std::vector<std::shared_ptr<const Vec3Curve>> lightCenterCurves;  // per light; null when still
-  std::vector<AnimatedFloat> lightIntensities;  // per light: multiplies its radiance (default 1)
+  std::vector<ShotLight> lights;
   std::vector<ShotAsset> assets;
   std::vector<ShotShape> shapes;
   std::vector<ShotTear> tears;                  // "dripping" tears
