@@ -428,8 +428,7 @@ Frame buildFrame(const Shot& shot, int frameNumber, FrameBuildTimes* times) {
 
   const StageClock clock(&t.otherSeconds);
   addLightsAndCamera(shot, frameNumber, shutter, frame);
-  frame.settings = shot.render;
-  frame.settings.frameNumber = frameNumber;
+  frame.settings = renderSettingsAt(shot, frameNumber);
   return frame;
 }
 

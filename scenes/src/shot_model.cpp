@@ -18,6 +18,12 @@ std::vector<Material> Shot::frameMaterials() const {
   return all;
 }
 
+RenderSettings renderSettingsAt(const Shot& shot, int frameNumber) {
+  RenderSettings settings = shot.render;
+  settings.frameNumber = frameNumber;
+  return settings;
+}
+
 bool ShotAsset::animated() const {
   const auto keyed = [](const AssetChannel& c) { return c.value.animated(); };
   return performance.has_value() || gltfAnimation.has_value() || std::any_of(animatedBlendshapes.begin(), animatedBlendshapes.end(), keyed) ||

@@ -105,12 +105,13 @@ std::string statusCommand(const FarmSubmitOptions& o) {
 
 int runFarmSubmit(const FarmSubmitOptions& o) {
   try {
-    const Shot shot = loadShot(o.render.shotPath);
+    Shot shot = loadShot(o.render.shotPath);
     const std::vector<int> frames = selectShotFrames(o.render.frames, shot);
     RenderOptions render = o.render;
     render.outputPattern = fs::absolute(resolveOutputPattern(o.render, shot, frames.size())).string();
     const fs::path jobDir = jobDirectoryFor(o.jobDir, render.outputPattern, shot.path);
     printShotWarnings(shot);
+    applyOverrides(render, shot.render);  // the settings the frames on disk are checked against
 
     const std::vector<int> missing = missingFrames(render, shot, render.outputPattern, frames);
     if (missing.empty()) {
@@ -219,11 +220,12 @@ void printDetails(const std::vector<FrameReport>& reports, const StatusCounts& c
 
 int runFarmStatus(const FarmStatusOptions& o) {
   try {
-    const Shot shot = loadShot(o.render.shotPath);
+    Shot shot = loadShot(o.render.shotPath);
     const std::vector<int> allFrames = selectShotFrames(std::nullopt, shot);
     const std::string pattern = fs::absolute(resolveOutputPattern(o.render, shot, allFrames.size())).string();
     const fs::path jobDir = jobDirectoryFor(o.jobDir, pattern, shot.path);
     const FarmJob job = readFarmJob(jobDir);
+    applyOverrides(job.render, shot.render);  // the job's tasks render with them: its frames are checked against them
     bool warned = false;
     std::string lastLine;
     for (;;) {

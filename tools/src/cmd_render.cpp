@@ -114,8 +114,6 @@ FrameOutcome renderOneFrame(Renderer& renderer, const RenderOptions& o, const Sh
                             int frameNumber, int index, int count, const SequenceProgress& sequence, double& seconds) {
   Frame frame = buildFrame(shot, frameNumber);
   if (o.reportMemory) reportMemory(frameNumber, " after buildFrame");
-  applyOverrides(o, frame.settings);
-  frame.settings.frameNumber = frameNumber;
   ProgressReporter reporter(frameNumber, index, count, sequence, o.quiet);
   RenderStats stats;
   Film film;
@@ -245,11 +243,14 @@ int runRender(const RenderOptions& o) {
   try {
     const auto start = std::chrono::steady_clock::now();
     // --threads caps the loading too; the shot's own render.threads applies from its frames on.
-    const Shot shot = withThreadCap(o.threads.value_or(0), [&] { return loadShot(o.shotPath, performanceOverrides(o)); });
+    Shot shot = withThreadCap(o.threads.value_or(0), [&] { return loadShot(o.shotPath, performanceOverrides(o)); });
     const std::vector<int> frames = selectShotFrames(o.frames, shot);
     const std::string pattern = resolveOutputPattern(o, shot, frames.size());
     checkPreviewConfig(o, shot);
     printShotWarnings(shot);
+    // Once, before any frame is checked or built (a bad --region is reported after the shot's
+    // own problems and warnings, as ever).
+    applyOverrides(o, shot.render);
     installInterruptHandlers();
 
     SequenceTally tally;
@@ -258,7 +259,7 @@ int runRender(const RenderOptions& o) {
     const std::vector<int> toRender = framesNotDone(frames, tally);
     if (!toRender.empty())
       checkOutputDirectories(outputDirectories(pattern, toRender),
-                             estimatedFrameBytes(settingsFor(o, shot, toRender.front()), o.preview), toRender.size());
+                             estimatedFrameBytes(renderSettingsAt(shot, toRender.front()), o.preview), toRender.size());
     Renderer renderer;  // keeps the Embree scene from frame to frame (refit when the topology stays)
     for (size_t i = 0; i < toRender.size() && !stopRequested(); ++i) {
       const int frameNumber = toRender[i];
@@ -266,7 +267,7 @@ int runRender(const RenderOptions& o) {
       const SequenceProgress sequence{tally.framesDone(), int(frames.size()), int(toRender.size() - i - 1),
                                       tally.meanFrameSeconds()};
       double seconds = 0;
-      const FrameOutcome outcome = withThreadCap(settingsFor(o, shot, frameNumber).threads, [&] {
+      const FrameOutcome outcome = withThreadCap(shot.render.threads, [&] {
         return renderOneFrame(renderer, o, shot, pattern, frameNumber, index, int(frames.size()), sequence, seconds);
       });
       if (outcome == FrameOutcome::Abandoned) break;

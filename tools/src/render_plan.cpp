@@ -41,13 +41,6 @@ void applyOverrides(const RenderOptions& o, RenderSettings& s) {
   if (!o.region.empty()) s.region = regionWithinFrame(o.region, s.width, s.height);
 }
 
-RenderSettings settingsFor(const RenderOptions& o, const Shot& shot, int frameNumber) {
-  RenderSettings s = shot.render;
-  applyOverrides(o, s);
-  s.frameNumber = frameNumber;
-  return s;
-}
-
 std::string resolveOutputPattern(const RenderOptions& o, const Shot& shot, size_t frameCount) {
   const std::string pattern = o.outputPattern.empty() ? shot.outputPattern : o.outputPattern;
   requireFrameField(pattern, frameCount, "rendered");
@@ -69,7 +62,7 @@ std::string whyFrameIsNotComplete(const RenderOptions& o, const Shot& shot, cons
   const std::filesystem::path exrPath = expandFramePattern(pattern, frameNumber);
   std::error_code ec;
   if (!std::filesystem::exists(exrPath, ec)) return "missing";
-  std::string why = whyFrameMustBeRendered(exrPath, settingsFor(o, shot, frameNumber));
+  std::string why = whyFrameMustBeRendered(exrPath, renderSettingsAt(shot, frameNumber));
   if (why.empty() && o.preview && !std::filesystem::exists(previewPathFor(exrPath), ec))
     why = "its --preview PNG is missing";
   return why;

@@ -15,8 +15,9 @@ struct Shot;
 
 namespace lacrima::cli {
 
-// The shot's render settings for `frameNumber` with the overrides of `o` applied.
-RenderSettings settingsFor(const RenderOptions& o, const Shot& shot, int frameNumber);
+// The overrides of `o` (--spp, --width, --region ...), applied once to a loaded shot's render
+// settings (shot.render) before any of its frames is built or checked on disk: every frame then
+// reads them there (renderSettingsAt). Throws InputError for a --region outside the frame.
 void applyOverrides(const RenderOptions& o, RenderSettings& s);
 
 // The output pattern (--out, else the shot's), checked: it has a frame field when frameCount > 1
@@ -27,8 +28,8 @@ std::string resolveOutputPattern(const RenderOptions& o, const Shot& shot, size_
 std::filesystem::path previewPathFor(const std::filesystem::path& exrPath);
 
 // Empty when frame `frameNumber` is on disk under `pattern`, complete and rendered with the
-// settings of this run (and its preview is there when o.preview); else why it must be rendered
-// ("missing" when there is no file).
+// settings of this run (the shot's, with the overrides of `o` applied by applyOverrides; and its
+// preview is there when o.preview); else why it must be rendered ("missing" when there is no file).
 std::string whyFrameIsNotComplete(const RenderOptions& o, const Shot& shot, const std::string& pattern,
                                   int frameNumber);
 

@@ -68,6 +68,10 @@ struct PerformanceOverride {
 // loadShot with takes played on assets; an unknown asset name is a ShotError at /assets.
 Shot loadShot(const std::filesystem::path& path, const std::vector<PerformanceOverride>& performances);
 
+// The shot's render settings for one frame: shot.render with its frameNumber set (the one place
+// a frame's number is given to its settings; buildFrame hands these to the renderer).
+RenderSettings renderSettingsAt(const Shot& shot, int frameNumber);
+
 // Builds the renderer input for one frame number (assets are loaded once and cached inside
 // the Shot's asset cache). Throws InputError for missing/corrupt assets.
 Frame buildFrame(const Shot& shot, int frameNumber);

@@ -485,7 +485,9 @@ struct Shot {
   // "colorConfig" resolved; empty when the shot does not name one (the tool uses its default).
   std::filesystem::path ocioConfig;
 
-  RenderSettings render;  // frameNumber is set by buildFrame
+  // frameNumber is set per frame by renderSettingsAt (shot.hpp); `lacrima render` applies its
+  // command-line overrides here, once, after loading.
+  RenderSettings render;
   ShotCamera camera;
   // Motion blur: the shutter is open from frame + open to frame + close (in frames, e.g.
   // {-0.25, 0.25} is a 180-degree shutter centred on the frame); none = no motion blur.
