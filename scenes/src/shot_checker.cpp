@@ -12,15 +12,6 @@ namespace lacrima::shotfile {
 
 namespace {
 
-std::string join(const std::vector<std::string>& items, const char* separator) {
-  std::string out;
-  for (size_t i = 0; i < items.size(); ++i) {
-    if (i > 0) out += separator;
-    out += items[i];
-  }
-  return out;
-}
-
 std::string found(const Json& v) { return "found " + describeValue(v); }
 
 bool isIntegral(const Json& v) {

@@ -1,4 +1,4 @@
-// Shot-file suggestions on top of the geometry library's edit distance and closest name.
+// Shot-file suggestions on top of the geometry library's edit distance and closest name, and lists of names.
 #include "suggest.hpp"
 
 #include <algorithm>
@@ -29,6 +29,30 @@ std::string closestName(std::string_view name, const std::vector<std::string>& c
 std::string didYouMean(std::string_view name, const std::vector<std::string>& candidates) {
   const std::string closest = closestName(name, candidates);
   return closest.empty() ? "" : "; did you mean '" + closest + "'?";
+}
+
+std::string join(const std::vector<std::string>& items, const char* separator) {
+  std::string out;
+  for (size_t i = 0; i < items.size(); ++i) {
+    if (i > 0) out += separator;
+    out += items[i];
+  }
+  return out;
+}
+
+std::string quotedList(const std::vector<std::string>& items) {
+  std::vector<std::string> quoted;
+  for (const std::string& s : items) quoted.push_back("'" + s + "'");
+  return join(quoted, ", ");
+}
+
+std::string suggestionOrList(const std::string& name, const std::vector<std::string>& candidates,
+                             const std::string& listName, const std::string& emptyText) {
+  if (candidates.empty()) return " (" + emptyText + ")";
+  const std::string suggestion = didYouMean(name, candidates);
+  if (!suggestion.empty()) return suggestion;
+  if (candidates.size() > 12) return "";
+  return " (" + listName + ": " + quotedList(candidates) + ")";
 }
 
 }  // namespace lacrima::shotfile

@@ -1,5 +1,6 @@
 #pragma once
-// "Did you mean ...?" for unknown keys, blendshapes, parts and material names.
+// "Did you mean ...?" for unknown keys, blendshapes, parts and material names, and the lists of
+// names a message offers instead.
 #include <string>
 #include <string_view>
 #include <vector>
@@ -13,5 +14,15 @@ std::string closestName(std::string_view name, const std::vector<std::string>& c
 
 // "; did you mean 'x'?" or "" when there is no close candidate.
 std::string didYouMean(std::string_view name, const std::vector<std::string>& candidates);
+
+// The items with `separator` between them: "a, b, c".
+std::string join(const std::vector<std::string>& items, const char* separator);
+// The items quoted, comma-separated: "'a', 'b', 'c'".
+std::string quotedList(const std::vector<std::string>& items);
+
+// "; did you mean 'x'?" or " (<listName>: a, b, c)" (at most 12 names, else "") or " (<emptyText>)"
+// when there are no candidates.
+std::string suggestionOrList(const std::string& name, const std::vector<std::string>& candidates,
+                             const std::string& listName, const std::string& emptyText);
 
 }  // namespace lacrima::shotfile

@@ -14,7 +14,7 @@ namespace fuzz_findings_test {
 
 // A misspelt "fov" (the only field of view of a look-at camera) is reported as an unknown key with
 // the suggestion, and the shot does not load. It used to crash: the missing 'fov' was not
-// reported again, so the camera was derived from a null glTF camera (shot_loader.cpp readCamera).
+// reported again, so the camera was derived from a null glTF camera (shot_reader_camera.cpp readCamera).
 TEST(FuzzFindings, MisspeltFovIsAnErrorNotACrash) {
   const std::filesystem::path path = workDirectory() / "misspelt_fov.json";
   std::ofstream(path) << R"({"version": 1, "frames": {"start": 1, "end": 1}, "output": "out.exr",
