@@ -6,7 +6,7 @@
 #include <fstream>
 
 #include "lacrima/rig/face_rig.hpp"
-#include "shot_test_support.hpp"
+#include "shot_support.hpp"
 
 namespace lacrima {
 namespace animation_shot_test {

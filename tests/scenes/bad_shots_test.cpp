@@ -2,7 +2,7 @@
 // file:line:column, JSON pointer, what was expected and found, the source line and a caret.
 #include <gtest/gtest.h>
 
-#include "shot_test_support.hpp"
+#include "shot_support.hpp"
 
 namespace lacrima {
 namespace bad_shots_test {

@@ -2,7 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "lacrima/scenes/shot.hpp"
-#include "scenes/shot_test_support.hpp"
+#include "scenes/shot_support.hpp"
 
 namespace lacrima {
 namespace bounce_limits_setting_test {

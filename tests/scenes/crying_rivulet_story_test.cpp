@@ -9,7 +9,7 @@
 #include <cstdio>
 
 #include "lacrima/scenes/liquid_tear.hpp"
-#include "shot_test_support.hpp"
+#include "shot_support.hpp"
 
 namespace lacrima {
 namespace crying_rivulet_story_test {

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "lacrima/scenes/liquid_tear.hpp"
-#include "shot_test_support.hpp"
+#include "shot_support.hpp"
 
 namespace lacrima {
 namespace default_shot_story_test {

@@ -6,7 +6,7 @@
 #include <set>
 
 #include "lacrima/mesh/surface_point.hpp"
-#include "shot_test_support.hpp"
+#include "shot_support.hpp"
 
 namespace lacrima {
 namespace detail_subdivision_shot_test {

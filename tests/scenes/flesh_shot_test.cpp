@@ -18,7 +18,7 @@
 #include "lacrima/scenes/flesh_bench.hpp"
 #include "support/test_directory.hpp"
 
-#include "shot_test_support.hpp"
+#include "shot_support.hpp"
 
 namespace lacrima {
 namespace flesh_shot_test {

@@ -7,7 +7,7 @@
 
 #include "lacrima/scenes/flood_scenario.hpp"
 #include "lacrima/scenes/shot.hpp"
-#include "scenes/shot_test_support.hpp"
+#include "scenes/shot_support.hpp"
 
 namespace lacrima {
 namespace flood_scenario_test {

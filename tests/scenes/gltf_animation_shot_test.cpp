@@ -10,7 +10,7 @@
 
 #include "geometry/gltf_builder_support.hpp"
 #include "geometry/gltf_skin_support.hpp"
-#include "shot_test_support.hpp"
+#include "shot_support.hpp"
 
 namespace lacrima {
 namespace gltf_animation_shot_test {

@@ -4,7 +4,7 @@
 
 #include <variant>
 
-#include "shot_test_support.hpp"
+#include "shot_support.hpp"
 
 namespace lacrima {
 namespace gltf_shot_test {

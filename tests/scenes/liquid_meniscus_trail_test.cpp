@@ -7,7 +7,7 @@
 #include <chrono>
 
 #include "lacrima/scenes/liquid_tear.hpp"
-#include "shot_test_support.hpp"
+#include "shot_support.hpp"
 #include "support/swept_volume.hpp"
 
 namespace lacrima {

@@ -8,8 +8,8 @@
 #include "lacrima/mesh/closest_point_grid.hpp"
 #include "lacrima/mesh/surface_point.hpp"
 #include "lacrima/scenes/liquid_tear.hpp"
-#include "liquid_tear_test_support.hpp"
-#include "shot_test_support.hpp"
+#include "liquid_tear_support.hpp"
+#include "shot_support.hpp"
 
 namespace lacrima {
 namespace liquid_rivulet_shot_test {

@@ -13,7 +13,7 @@
 #include "geometry/height_field_support.hpp"
 #include "lacrima/mesh/surface_point.hpp"
 #include "lacrima/scenes/liquid_tear.hpp"
-#include "shot_test_support.hpp"
+#include "shot_support.hpp"
 
 namespace lacrima {
 namespace liquid_tear_course_test {

@@ -10,7 +10,7 @@
 #include "lacrima/mesh/surface_point.hpp"
 #include "lacrima/scenes/liquid_tear.hpp"
 #include "liquid_tear_film.hpp"  // scenes/src: the film and its definition evaluated directly
-#include "shot_test_support.hpp"
+#include "shot_support.hpp"
 
 namespace lacrima {
 namespace liquid_tear_film_test {

@@ -7,7 +7,7 @@
 #include <numbers>
 
 #include "lacrima/scenes/liquid_tear.hpp"
-#include "shot_test_support.hpp"
+#include "shot_support.hpp"
 
 namespace lacrima {
 namespace liquid_tear_overhang_test {

@@ -8,8 +8,8 @@
 #include <cstdio>
 
 #include "lacrima/scenes/liquid_tear.hpp"
-#include "liquid_tear_test_support.hpp"
-#include "shot_test_support.hpp"
+#include "liquid_tear_support.hpp"
+#include "shot_support.hpp"
 
 namespace lacrima {
 namespace liquid_tear_pinning_shot_test {

@@ -13,8 +13,8 @@
 #include "lacrima/mesh/surface_flow.hpp"
 #include "lacrima/mesh/surface_point.hpp"
 #include "lacrima/scenes/liquid_tear.hpp"
-#include "liquid_tear_test_support.hpp"
-#include "shot_test_support.hpp"
+#include "liquid_tear_support.hpp"
+#include "shot_support.hpp"
 
 namespace lacrima {
 namespace liquid_tear_shot_test {

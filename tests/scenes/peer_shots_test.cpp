@@ -5,7 +5,7 @@
 
 #include <variant>
 
-#include "shot_test_support.hpp"
+#include "shot_support.hpp"
 
 namespace lacrima {
 namespace peer_shots_test {

@@ -9,7 +9,7 @@
 #include "lacrima/tears/shedding_tear.hpp"
 #include "lacrima/mesh/surface_point.hpp"
 #include "geometry/gltf_builder_support.hpp"
-#include "shot_test_support.hpp"
+#include "shot_support.hpp"
 
 namespace lacrima {
 namespace shedding_tear_shot_test {

@@ -9,7 +9,7 @@
 
 #include "lacrima/renderer/camera.hpp"
 #include "lacrima/renderer/environment.hpp"
-#include "shot_test_support.hpp"
+#include "shot_support.hpp"
 
 namespace lacrima {
 namespace shot_load_test {

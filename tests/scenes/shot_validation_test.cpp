@@ -2,7 +2,7 @@
 // keys, duplicates, versions), derived values (light power, transforms) and message details.
 #include <gtest/gtest.h>
 
-#include "shot_test_support.hpp"
+#include "shot_support.hpp"
 
 namespace lacrima {
 namespace shot_validation_test {

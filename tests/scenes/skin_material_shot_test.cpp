@@ -4,7 +4,7 @@
 #include <fstream>
 #include <iterator>
 
-#include "shot_test_support.hpp"
+#include "shot_support.hpp"
 
 namespace lacrima {
 namespace skin_material_shot_test {

@@ -15,7 +15,7 @@
 #include "lacrima/mesh/mesh.hpp"
 #include "lacrima/scenes/shot.hpp"
 #include "lacrima/sph/surface_tension.hpp"
-#include "scenes/shot_test_support.hpp"
+#include "scenes/shot_support.hpp"
 
 namespace lacrima {
 namespace sph_shot_test {

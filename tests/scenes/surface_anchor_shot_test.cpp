@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "lacrima/mesh/surface_point.hpp"
-#include "shot_test_support.hpp"
+#include "shot_support.hpp"
 
 namespace lacrima {
 namespace surface_anchor_shot_test {

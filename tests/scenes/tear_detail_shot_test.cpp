@@ -4,7 +4,7 @@
 
 #include "lacrima/face/detail_patterns.hpp"
 #include "lacrima/tears/dripping_tear.hpp"
-#include "shot_test_support.hpp"
+#include "shot_support.hpp"
 
 namespace lacrima {
 namespace tear_detail_shot_test {

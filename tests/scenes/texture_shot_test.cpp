@@ -6,7 +6,7 @@
 
 #include <fstream>
 
-#include "shot_test_support.hpp"
+#include "shot_support.hpp"
 
 namespace lacrima {
 namespace texture_shot_test {
