@@ -11,7 +11,6 @@ namespace lacrima::shotfile {
 
 namespace {
 
-const std::vector<std::string> kCausticsModes = {"mnee", "straight", "off"};  // order of readCaustics' modes
 const std::vector<std::string> kSamplerKinds = {"sobol", "independent"};  // order of readSampler's kinds
 const std::vector<std::string> kFilterTypes = {"blackman-harris", "gaussian", "mitchell", "box"};  // readFilter's order
 // A filter wider than this blurs away the detail it should keep (and 16 px is already 8 pixels
@@ -151,9 +150,13 @@ void ShotReader::readFilter(ObjectReader& render, RenderSettings& s) {
 
 // "caustics": "mnee" | "straight" | "off" (docs/shot-format.md, "Caustics").
 void ShotReader::readCaustics(ObjectReader& o, RenderSettings& s) {
-  static constexpr Caustics modes[] = {Caustics::Mnee, Caustics::Straight, Caustics::Off};
-  const auto i = readChoice(o, "caustics", kCausticsModes, "caustics mode");
-  if (i) s.caustics = modes[*i];
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> spelt;
+    for (Caustics mode : kCausticsModes) spelt.push_back(causticsName(mode));
+    return spelt;
+  }();
+  const auto i = readChoice(o, "caustics", names, "caustics mode");
+  if (i) s.caustics = kCausticsModes[*i];
 }
 
 }  // namespace lacrima::shotfile

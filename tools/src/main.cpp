@@ -50,6 +50,13 @@ const char* kDescription =
     "diff and test-suite: 0 pass, 1 warn, 2 fail or bad input; farm status: 3 frames still running.";
 
 // An option value as the error message shows it: numbers bare, anything else quoted.
+// --caustics' values, spelt as in shot files.
+std::map<std::string, lacrima::Caustics> causticsByName() {
+  std::map<std::string, lacrima::Caustics> byName;
+  for (lacrima::Caustics mode : lacrima::kCausticsModes) byName[lacrima::causticsName(mode)] = mode;
+  return byName;
+}
+
 std::string describeArgument(const std::string& text) {
   char* end = nullptr;
   if (!text.empty()) std::strtod(text.c_str(), &end);
@@ -471,8 +478,7 @@ void addBench(CLI::App& app, BenchOptions& o) {
                     "--quality: the measured renders' caustics, mnee, straight or off (default: as the shot says; "
                     "the reference keeps the shot's): e.g. MNEE against brute force on "
                     "scenes/shots/caustic_drop.json")
-      ->transform(CLI::CheckedTransformer(std::map<std::string, lacrima::Caustics>{
-          {"mnee", lacrima::Caustics::Mnee}, {"straight", lacrima::Caustics::Straight}, {"off", lacrima::Caustics::Off}}));
+      ->transform(CLI::CheckedTransformer(causticsByName()));
   bench->callback(
       [&o] {
         throw CLI::RuntimeError(o.quality ? runBenchQuality(o)

@@ -1,6 +1,7 @@
 #pragma once
 // The renderer's input: everything needed to render one frame, already in world space.
 // The renderer never reads shot files; scenes/ builds a Frame, tests build tiny ones in code.
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -93,7 +94,9 @@ enum class Caustics {
   Straight,  // transparent shadows: shadow rays go straight through, Fresnel-weighted (no focusing)
   Mnee,      // manifold next-event estimation: the refracted connection, focused caustics
 };
-// The mode as shot files spell it: "off", "straight", "mnee".
+// Every mode, in the order shot files and the command line list them.
+inline constexpr std::array<Caustics, 3> kCausticsModes = {Caustics::Mnee, Caustics::Straight, Caustics::Off};
+// The mode as shot files spell it: "mnee", "straight", "off".
 const char* causticsName(Caustics caustics);
 
 // Per-type bounce limits, as Cycles has them (its light-path settings "diffuse", "glossy" and
