@@ -19,7 +19,7 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 }  // namespace
 
 FleshBenchResult measureFleshFrames(const Shot& shot, double tetSize, int lastFrame) {
-  if (shot.flesh.empty() || !shot.flesh.front().run) throw InputError("bench --flesh: the shot simulates no flesh");
+  if (shot.flesh.empty() || !shot.flesh.front().tetVolume) throw InputError("bench --flesh: the shot simulates no flesh");
   ShotFlesh flesh = shot.flesh.front();
   flesh.volume.maxTetVolume = flesh::regularTetVolume(tetSize);  // as the shot's "tetSize"
   FleshBenchResult result;

@@ -96,7 +96,7 @@ std::optional<FleshProblem> resolveOne(Shot& shot, ShotFlesh& flesh) {
   } catch (const flesh::FleshVolumeError& e) {
     return FleshProblem{flesh.pointer, fmt::format("the flesh volume cannot be built: {}", e.what())};
   }
-  flesh.run = std::make_shared<FleshRun>(shot, flesh);
+  flesh.unrefinedAsset = std::make_shared<const ShotAsset>(asset);
   return std::nullopt;
 }
 
@@ -113,7 +113,7 @@ std::vector<FleshProblem> resolveFleshVolumes(Shot& shot) {
 
 void embedFleshSkins(Shot& shot) {
   for (ShotFlesh& flesh : shot.flesh) {
-    if (!flesh.run) continue;
+    if (!flesh.tetVolume) continue;
     const TriangleMesh skin = posedSkin(shot.assets[flesh.asset], flesh.primitive, shot.frameStart);
     const flesh::TetMesh& mesh = flesh.tetVolume->mesh;
     Eigen::AlignedBox3d box;
@@ -132,7 +132,7 @@ void embedFleshSkins(Shot& shot) {
 }
 
 FleshRun::FleshRun(const Shot& shot, const ShotFlesh& flesh, StateFiling filing)
-    : asset_(shot.assets.at(flesh.asset)),
+    : asset_(flesh.unrefinedAsset),
       primitive_(flesh.primitive),
       patch_(flesh.patch),
       volume_(flesh.tetVolume),
@@ -158,12 +158,12 @@ std::vector<Vec3d> FleshRun::targetAtFrame(int frame) {
     if (posedFrame == frame) return target;
   // The skin as the rig poses it, and as its joints alone pose it (the skull's and jaw's motion,
   // no expression).
-  AssetPose pose = assetPoseAt(asset_, frame);
+  AssetPose pose = assetPoseAt(*asset_, frame);
   const std::vector<Vec3d> skin = flesh::anchoredNodePositions(
-      *volume_, *patch_, patchPositions(*patch_, posedPrimitive(asset_, pose, primitive_)));
+      *volume_, *patch_, patchPositions(*patch_, posedPrimitive(*asset_, pose, primitive_)));
   std::fill(pose.face.blendshapeWeights.begin(), pose.face.blendshapeWeights.end(), 0.0f);
   const std::vector<Vec3d> skull = flesh::anchoredNodePositions(
-      *volume_, *patch_, patchPositions(*patch_, posedPrimitive(asset_, pose, primitive_)));
+      *volume_, *patch_, patchPositions(*patch_, posedPrimitive(*asset_, pose, primitive_)));
   std::vector<Vec3d> target(skin.size());
   for (size_t i = 0; i < target.size(); ++i) target[i] = (1.0 - depthFraction_[i]) * skin[i] + depthFraction_[i] * skull[i];
   posedTargets_[nextPosedSlot_] = {frame, target};
@@ -285,7 +285,7 @@ std::vector<Vec3d> FleshRun::nodeOffsetsAt(double frame) {
 }
 
 bool fleshMoves(const ShotFlesh& flesh, const TriangleMesh& posed) {
-  return flesh.run && posed.positions.size() == flesh.skinEmbedding.size();
+  return flesh.tetVolume && posed.positions.size() == flesh.skinEmbedding.size();
 }
 
 void moveSkinWithFlesh(const ShotFlesh& flesh, const GltfPrimitive& primitiveSource, const std::vector<Vec3d>& offsets,

@@ -20,7 +20,7 @@ using FleshProblem = SheddingTearProblem;
 // ~/.cache/lacrima/flesh; empty (not filed) when neither is set.
 std::filesystem::path fleshCacheDirectory();
 
-// Builds (or reads from the cache) each flesh volume of the shot and its simulation, on the assets
+// Builds (or reads from the cache) each flesh volume of the shot, on the assets
 // as loaded (before any refinement of their skin: the volume's boundary is the asset's own
 // tessellation, and the simulation poses that asset); the problems found (regions on different
 // primitives, no skin in them, a volume TetGen cannot mesh).
@@ -75,7 +75,7 @@ class FleshRun {
   // The chain key of the state at whole frame `index` of the simulation (flesh_state_cache.hpp).
   uint64_t stateKey(long index);
 
-  ShotAsset asset_;  // a copy of the asset as loaded, unrefined (meshes and rig shared)
+  std::shared_ptr<const ShotAsset> asset_;  // the asset as loaded, unrefined (ShotFlesh::unrefinedAsset)
   size_t primitive_;
   std::shared_ptr<const flesh::SkinPatch> patch_;
   std::shared_ptr<const flesh::FleshVolume> volume_;

@@ -1,4 +1,4 @@
-// buildFrame: a checked Shot at one frame number -> the renderer's Frame, through the geometry
+// FrameBuilder: a checked Shot at one frame number -> the renderer's Frame, through the geometry
 // stage: assets posed by their rig, keyframes and performance tracks, details displacing the
 // posed skin, shapes (keyed or attached to the skin), dripping, shedding and liquid tears (on the
 // posed, detailed skin), eyes and lashes (on the posed eyeball shells and lash cards), lights and camera, each at shutter open and, when the shot has a shutter
@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <memory>
+#include <vector>
 
 #include "asset_pose.hpp"
 #include "eye_frame.hpp"
@@ -19,6 +21,7 @@
 #include "lacrima/tears/shedding_tear.hpp"
 #include "lacrima/materials/material.hpp"
 #include "lacrima/scenes/frame_build_times.hpp"
+#include "lacrima/scenes/frame_builder.hpp"
 #include "lacrima/scenes/shot.hpp"
 #include "liquid_tear_frame.hpp"
 #include "shot_geometry.hpp"
@@ -257,16 +260,18 @@ void applyDetail(const Shot& shot, const ShotDetail& detail, double frame, std::
 
 // Moves the posed skin under each simulated flesh (at shutter open and close) before any detail
 // displaces it: the flesh carries the skin, the details ride on it.
-void applyFleshes(const Shot& shot, const ShutterTimes& shutter, PosedAssets& open, std::optional<PosedAssets>& close) {
-  for (const ShotFlesh& flesh : shot.flesh) {
+void applyFleshes(const Shot& shot, const std::vector<std::unique_ptr<shotfile::FleshRun>>& runs,
+                  const ShutterTimes& shutter, PosedAssets& open, std::optional<PosedAssets>& close) {
+  for (size_t f = 0; f < shot.flesh.size(); ++f) {
+    const ShotFlesh& flesh = shot.flesh[f];
     if (open[flesh.asset].empty() || flesh.primitive >= open[flesh.asset].size()) continue;
     const GltfPrimitive& source = shot.assets[flesh.asset].gltf->primitives[flesh.primitive];
     TriangleMesh& atOpen = open[flesh.asset][flesh.primitive];
     TriangleMesh* atClose = close && !(*close)[flesh.asset].empty() ? &(*close)[flesh.asset][flesh.primitive] : nullptr;
-    if (!shotfile::fleshMoves(flesh, atOpen)) continue;
+    if (!runs[f] || !shotfile::fleshMoves(flesh, atOpen)) continue;
     // The simulation steps forward in time: open's offsets first, then close's.
-    const std::vector<Vec3d> offsetsAtOpen = flesh.run->nodeOffsetsAt(shutter.open);
-    const std::vector<Vec3d> offsetsAtClose = atClose ? flesh.run->nodeOffsetsAt(shutter.close) : std::vector<Vec3d>{};
+    const std::vector<Vec3d> offsetsAtOpen = runs[f]->nodeOffsetsAt(shutter.open);
+    const std::vector<Vec3d> offsetsAtClose = atClose ? runs[f]->nodeOffsetsAt(shutter.close) : std::vector<Vec3d>{};
     tbb::parallel_invoke([&] { shotfile::moveSkinWithFlesh(flesh, source, offsetsAtOpen, atOpen); },
                          [&] {
                            if (atClose) shotfile::moveSkinWithFlesh(flesh, source, offsetsAtClose, *atClose);
@@ -297,7 +302,8 @@ void applyDetails(const Shot& shot, int frameNumber, const ShutterTimes& shutter
 
 // The assets posed at shutter open and (when the shutter is open for a while) close, then moved by
 // their simulated flesh and displaced by the details, each stage timed.
-void poseWithFleshAndDetails(const Shot& shot, int frameNumber, const ShutterTimes& shutter, PosedAssets& open,
+void poseWithFleshAndDetails(const Shot& shot, const std::vector<std::unique_ptr<shotfile::FleshRun>>& fleshRuns,
+                             int frameNumber, const ShutterTimes& shutter, PosedAssets& open,
                              std::optional<PosedAssets>& close, FrameBuildTimes& t) {
   {
     const StageClock clock(&t.rigSeconds);
@@ -309,18 +315,10 @@ void poseWithFleshAndDetails(const Shot& shot, int frameNumber, const ShutterTim
   }
   {
     const StageClock clock(&t.fleshSeconds);
-    applyFleshes(shot, shutter, open, close);
+    applyFleshes(shot, fleshRuns, shutter, open, close);
   }
   const StageClock clock(&t.detailSeconds);
   applyDetails(shot, frameNumber, shutter, open, close);
-}
-
-// Simulates each liquid tear over the shutter (no posed asset needed).
-std::vector<shotfile::LiquidTearShutter> simulateLiquidTears(const Shot& shot, const ShutterTimes& shutter) {
-  std::vector<shotfile::LiquidTearShutter> runs;
-  for (const ShotLiquidTear& tear : shot.liquidTears)
-    runs.push_back(shotfile::simulateLiquidTearShutter(shot, tear, shutter.open, shutter.close));
-  return runs;
 }
 
 // Lays each liquid tear's wet trail on the skin posed at open and swells the lacrimal strip near its
@@ -364,11 +362,55 @@ void addLightsAndCamera(const Shot& shot, int frameNumber, const ShutterTimes& s
   }
 }
 
+using shotfile::LiquidTearKeeper;
+using LiquidTearKeepers = std::vector<std::unique_ptr<LiquidTearKeeper>>;
+
+// Simulates each liquid tear over the shutter (no posed asset needed).
+std::vector<shotfile::LiquidTearShutter> simulateLiquidTears(const LiquidTearKeepers& tears, const ShutterTimes& shutter) {
+  std::vector<shotfile::LiquidTearShutter> shutters;
+  for (const std::unique_ptr<LiquidTearKeeper>& tear : tears)
+    shutters.push_back(shotfile::simulateLiquidTearShutter(*tear, shutter.open, shutter.close));
+  return shutters;
+}
+
 }  // namespace
 
-Frame buildFrame(const Shot& shot, int frameNumber) { return buildFrame(shot, frameNumber, nullptr); }
+// What the builder advances from frame to frame, one entry per liquid tear, flesh and SPH liquid
+// of the shot.
+struct FrameBuilder::Simulations {
+  LiquidTearKeepers liquidTears;
+  std::vector<std::unique_ptr<shotfile::FleshRun>> flesh;  // null: not resolved
+  std::vector<std::unique_ptr<shotfile::SphRun>> sph;
+};
 
-Frame buildFrame(const Shot& shot, int frameNumber, FrameBuildTimes* times) {
+FrameBuilder::FrameBuilder(const Shot& shot) : shot_(shot), simulations_(std::make_unique<Simulations>()) {
+  for (const ShotLiquidTear& tear : shot.liquidTears)
+    simulations_->liquidTears.push_back(std::make_unique<LiquidTearKeeper>(shot, tear));
+  for (const ShotFlesh& flesh : shot.flesh)
+    simulations_->flesh.push_back(flesh.tetVolume ? std::make_unique<shotfile::FleshRun>(shot, flesh) : nullptr);
+  for (const ShotSph& liquid : shot.sph) simulations_->sph.push_back(std::make_unique<shotfile::SphRun>(shot, liquid));
+}
+
+FrameBuilder::~FrameBuilder() = default;
+
+LiquidTearState FrameBuilder::liquidTearStateAt(size_t tear, double frame) {
+  LiquidTearKeeper& keeper = *simulations_->liquidTears.at(tear);
+  LiquidTearRun run = keeper.runFor(frame);
+  run.advanceTo(frame);
+  keeper.keep(run);
+  return run.state(frame);
+}
+
+std::shared_ptr<const LiquidTearCourse> FrameBuilder::liquidTearCourseAt(size_t tear, double frame) {
+  return lacrima::liquidTearCourseAt(shot_, shot_.liquidTears.at(tear), liquidTearCourses(tear), frame);
+}
+
+const LiquidTearCourses& FrameBuilder::liquidTearCourses(size_t tear) const {
+  return simulations_->liquidTears.at(tear)->courses();
+}
+
+Frame FrameBuilder::build(int frameNumber, FrameBuildTimes* times) {
+  const Shot& shot = shot_;
   FrameBuildTimes unused;
   FrameBuildTimes& t = times ? *times : unused;
   t = {};
@@ -387,10 +429,10 @@ Frame buildFrame(const Shot& shot, int frameNumber, FrameBuildTimes* times) {
   std::vector<shotfile::LiquidTearShutter> liquidRuns;
   // The liquid tears' simulation needs no posed asset: it runs beside the posing, whose flesh keeps
   // one core only partly busy (their clocks overlap; `totalSeconds` is the wall time).
-  tbb::parallel_invoke([&] { poseWithFleshAndDetails(shot, frameNumber, shutter, open, close, t); },
+  tbb::parallel_invoke([&] { poseWithFleshAndDetails(shot, simulations_->flesh, frameNumber, shutter, open, close, t); },
                        [&] {
                          const StageClock clock(&t.liquidSimulationSeconds);
-                         liquidRuns = simulateLiquidTears(shot, shutter);
+                         liquidRuns = simulateLiquidTears(simulations_->liquidTears, shutter);
                        });
   {
     const StageClock clock(&t.liquidSeconds);
@@ -423,7 +465,7 @@ Frame buildFrame(const Shot& shot, int frameNumber, FrameBuildTimes* times) {
 
   {
     const StageClock clock(&t.liquidSeconds);
-    shotfile::addSphLiquids(shot, shutter.open, shutter.close, frame);
+    shotfile::addSphLiquids(shot, simulations_->sph, shutter.open, shutter.close, frame);
   }
 
   const StageClock clock(&t.otherSeconds);
@@ -431,5 +473,7 @@ Frame buildFrame(const Shot& shot, int frameNumber, FrameBuildTimes* times) {
   frame.settings = renderSettingsAt(shot, frameNumber);
   return frame;
 }
+
+Frame buildFrame(const Shot& shot, int frameNumber) { return FrameBuilder(shot).build(frameNumber); }
 
 }  // namespace lacrima

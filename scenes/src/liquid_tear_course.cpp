@@ -22,11 +22,6 @@ LiquidTearInput inputOn(const ShotLiquidTear& tear, const LiquidTearCourse& cour
   return input;
 }
 
-const LiquidTearCourses& coursesOf(const ShotLiquidTear& tear) {
-  if (!tear.courses) throw InputError(fmt::format("liquid tear {}: its flow path was not resolved (load the shot with loadShot)", tear.pointer));
-  return *tear.courses;
-}
-
 }  // namespace
 
 // ---- Courses --------------------------------------------------------------------------------------
@@ -121,31 +116,24 @@ int liquidTearCourseFrame(const Shot& shot, const ShotLiquidTear& tear, double s
 
 // ---- The run --------------------------------------------------------------------------------------
 
-LiquidTearRun::LiquidTearRun(const Shot& shot, const ShotLiquidTear& tear)
-    : shot_(shot),
-      tear_(tear),
-      course_(coursesOf(tear).at(liquidTearCourseFrame(shot, tear, 0.0))),
+LiquidTearRun::LiquidTearRun(const Shot& shot, const ShotLiquidTear& tear, const LiquidTearCourses& courses)
+    : shot_(&shot),
+      tear_(&tear),
+      courses_(&courses),
+      course_(courses.at(liquidTearCourseFrame(shot, tear, 0.0))),
       courseFrame_(liquidTearCourseFrame(shot, tear, 0.0)),
       simulation_(inputOn(tear, *course_)) {}
 
-LiquidTearRun::LiquidTearRun(const Shot& shot, const ShotLiquidTear& tear, const LiquidTearRun& kept)
-    : shot_(shot),
-      tear_(tear),
-      course_(kept.course_),
-      courseFrame_(kept.courseFrame_),
-      simulation_(kept.simulation_),
-      reroutes_(kept.reroutes_) {}
-
 bool LiquidTearRun::hasPassed(double frame) const {
-  return liquidTearStepsTo(liquidTearSeconds(shot_, tear_, frame), tear_.input.params.timeStep) < simulation_.steps();
+  return liquidTearStepsTo(liquidTearSeconds(*shot_, *tear_, frame), tear_->input.params.timeStep) < simulation_.steps();
 }
 
 void LiquidTearRun::followCourse(int frame) {
   while (courseFrame_ < frame) {
     ++courseFrame_;
-    std::shared_ptr<const LiquidTearCourse> next = tear_.courses->at(courseFrame_);
+    std::shared_ptr<const LiquidTearCourse> next = courses_->at(courseFrame_);
     if (next == course_) continue;
-    if (!next->fromPrevious) throw InputError(fmt::format("liquid tear {}: the course at frame {} has no transfer", tear_.pointer, courseFrame_));
+    if (!next->fromPrevious) throw InputError(fmt::format("liquid tear {}: the course at frame {} has no transfer", tear_->pointer, courseFrame_));
     const FlowPathTransfer& transfer = *next->fromPrevious;  // from course_, the course of the frame before
     simulation_.reroute(next->samples, [&transfer](double s) { return transfer(s); });
     course_ = std::move(next);
@@ -154,46 +142,41 @@ void LiquidTearRun::followCourse(int frame) {
 }
 
 void LiquidTearRun::advanceTo(double frame) {
-  const double t = liquidTearSeconds(shot_, tear_, frame);
-  const double dt = tear_.input.params.timeStep;
+  const double t = liquidTearSeconds(*shot_, *tear_, frame);
+  const double dt = tear_->input.params.timeStep;
   const long long target = liquidTearStepsTo(t, dt);
   if (target < simulation_.steps()) simulation_.advanceTo(t);  // refuses to go back, with its message
   // Each step runs on the course of its start time's nearest frame; the state reached is left on
   // the course of the next step, so a run stopped here and continued equals one that did not stop.
   while (simulation_.steps() < target) {
-    followCourse(liquidTearCourseFrame(shot_, tear_, double(simulation_.steps()) * dt));
+    followCourse(liquidTearCourseFrame(*shot_, *tear_, double(simulation_.steps()) * dt));
     simulation_.step();
   }
-  followCourse(liquidTearCourseFrame(shot_, tear_, double(simulation_.steps()) * dt));
+  followCourse(liquidTearCourseFrame(*shot_, *tear_, double(simulation_.steps()) * dt));
 }
 
-LiquidTearState LiquidTearRun::state(double frame) const { return simulation_.state(liquidTearSeconds(shot_, tear_, frame)); }
-
-LiquidTearRun LiquidTearRunKeeper::runFor(const Shot& shot, const ShotLiquidTear& tear, double frame) const {
-  std::lock_guard<std::mutex> lock(mutex_);
-  if (run_ && tear_ == &tear && !run_->hasPassed(frame)) return LiquidTearRun(shot, tear, *run_);
-  return LiquidTearRun(shot, tear);
-}
-
-void LiquidTearRunKeeper::keep(const ShotLiquidTear& tear, const LiquidTearRun& run) {
-  std::lock_guard<std::mutex> lock(mutex_);
-  tear_ = &tear;
-  run_.reset();
-  run_.emplace(run);
+LiquidTearState LiquidTearRun::state(double frame) const {
+  return simulation_.state(liquidTearSeconds(*shot_, *tear_, frame));
 }
 
 // ---- Queries --------------------------------------------------------------------------------------
 
-LiquidTearState liquidTearStateAt(const Shot& shot, const ShotLiquidTear& tear, double frame) {
-  LiquidTearRun run(shot, tear);
-  run.advanceTo(frame);
-  return run.state(frame);
+std::shared_ptr<LiquidTearCourses> liquidTearCoursesOf(const Shot& shot, const ShotLiquidTear& tear) {
+  if (!tear.surface)
+    throw InputError(fmt::format("liquid tear {}: its flow path was not resolved (load the shot with loadShot)", tear.pointer));
+  std::vector<LiquidCourseRegion> regions;
+  for (const ShotContactAngleRegion& region : tear.contactAngleRegions)
+    regions.push_back({SurfacePoint{region.centerPoint.triangle, region.centerPoint.barycentric}, region.radius});
+  return std::make_shared<LiquidTearCourses>(tear.surface, SurfacePoint{tear.sourcePoint.triangle, tear.sourcePoint.barycentric},
+                                             tear.gravity, tear.maxLength, liquidTearCourseFrame(shot, tear, 0.0),
+                                             std::move(regions), tear.pinning);
 }
 
-std::shared_ptr<const LiquidTearCourse> liquidTearCourseAt(const Shot& shot, const ShotLiquidTear& tear, double frame) {
+std::shared_ptr<const LiquidTearCourse> liquidTearCourseAt(const Shot& shot, const ShotLiquidTear& tear,
+                                                           const LiquidTearCourses& courses, double frame) {
   const double dt = tear.input.params.timeStep;
   const long long steps = liquidTearStepsTo(liquidTearSeconds(shot, tear, frame), dt);
-  return coursesOf(tear).at(liquidTearCourseFrame(shot, tear, double(steps) * dt));
+  return courses.at(liquidTearCourseFrame(shot, tear, double(steps) * dt));
 }
 
 }  // namespace lacrima

@@ -2,6 +2,7 @@
 // falling drops as moving spheres; see liquid_tear_frame.hpp and lacrima/scenes/liquid_tear.hpp.
 #include "liquid_tear_frame.hpp"
 
+#include <fmt/format.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
 
@@ -9,6 +10,7 @@
 #include <functional>
 #include <optional>
 
+#include "lacrima/base/error.hpp"
 #include "lacrima/liquid/drop_oscillation.hpp"
 #include "lacrima/liquid/liquid_bead_mesh.hpp"
 #include "lacrima/liquid/liquid_rivulet_mesh.hpp"
@@ -158,15 +160,32 @@ MeshInstance rivuletInstance(const ShotLiquidTear& tear, const RivuletView& rivu
 
 }  // namespace
 
-LiquidTearShutter simulateLiquidTearShutter(const Shot& shot, const ShotLiquidTear& tear, double shutterOpen,
-                                            double shutterClose) {
+LiquidTearKeeper::LiquidTearKeeper(const Shot& shot, const ShotLiquidTear& tear)
+    : shot_(shot), tear_(tear), courses_(tear.surface ? liquidTearCoursesOf(shot, tear) : nullptr) {}
+
+const LiquidTearCourses& LiquidTearKeeper::courses() const {
+  if (!courses_)
+    throw InputError(fmt::format("liquid tear {}: its flow path was not resolved (load the shot with loadShot)", tear_.pointer));
+  return *courses_;
+}
+
+LiquidTearRun LiquidTearKeeper::runFor(double frame) const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (kept_ && !kept_->hasPassed(frame)) return *kept_;
+  return LiquidTearRun(shot_, tear_, courses());
+}
+
+void LiquidTearKeeper::keep(const LiquidTearRun& run) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  kept_ = run;
+}
+
+LiquidTearShutter simulateLiquidTearShutter(LiquidTearKeeper& tear, double shutterOpen, double shutterClose) {
   LiquidTearShutter result;
-  if (tear.input.path.empty()) return result;  // not resolved (not from loadShot)
-  // Continued from the run the frame before kept at its shutter open (bitwise the same state as
-  // simulating from the tear's start: LiquidTearRun), so a sequence simulates each step once.
-  LiquidTearRun run = tear.runKeeper ? tear.runKeeper->runFor(shot, tear, shutterOpen) : LiquidTearRun(shot, tear);
+  if (!tear.resolved()) return result;
+  LiquidTearRun run = tear.runFor(shutterOpen);
   run.advanceTo(shutterOpen);
-  if (tear.runKeeper) tear.runKeeper->keep(tear, run);
+  tear.keep(run);
   result.open = run.state(shutterOpen);
   result.openCourse = run.coursePointer();
   result.meniscusOpen = run.simulation().meniscusVolume();

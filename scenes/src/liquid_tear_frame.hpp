@@ -1,6 +1,8 @@
 #pragma once
-// The meshes and spheres of a shot's liquid tears in a frame (buildFrame's part; see ShotLiquidTear).
+// The meshes and spheres of a shot's liquid tears in a frame (FrameBuilder's part; see ShotLiquidTear).
 #include <memory>
+#include <mutex>
+#include <optional>
 #include <vector>
 
 #include "lacrima/scenes/liquid_tear.hpp"
@@ -34,11 +36,34 @@ struct LiquidTearShutter {
   std::vector<float> film;
 };
 
-// Simulates the tear to the frame whose shutter opens at frame `open` and closes at `close`
-// (fractional frames; equal: no blur). Needs no posed skin (the courses are the shot's), so it can
-// run while the assets are posed.
-LiquidTearShutter simulateLiquidTearShutter(const Shot& shot, const ShotLiquidTear& tear, double shutterOpen,
-                                            double shutterClose);
+// One liquid tear's courses and the run the last frame advanced, kept at that frame's shutter open
+// for the next frame to continue (a continued run gives bitwise the state a new one would): what a
+// FrameBuilder keeps of a tear. Thread-safe.
+class LiquidTearKeeper {
+ public:
+  // Traces the first course of a tear resolved by loadShot; a tear not resolved gets no courses.
+  LiquidTearKeeper(const Shot& shot, const ShotLiquidTear& tear);
+
+  bool resolved() const { return courses_ != nullptr; }
+  // The courses; InputError for a tear that was not resolved.
+  const LiquidTearCourses& courses() const;
+  // A run to advance to `frame`: the kept one when it has not passed the frame, else a new one.
+  LiquidTearRun runFor(double frame) const;
+  void keep(const LiquidTearRun& run);
+
+ private:
+  const Shot& shot_;
+  const ShotLiquidTear& tear_;
+  std::shared_ptr<const LiquidTearCourses> courses_;
+  mutable std::mutex mutex_;
+  std::optional<LiquidTearRun> kept_;
+};
+
+// Simulates the tear over the frame whose shutter opens at frame `open` and closes at `close`
+// (fractional frames; equal: no blur): the kept run continued to open and kept there, then on to
+// close. Needs no posed skin, so it can run while the assets are posed. Empty for a tear that was
+// not resolved.
+LiquidTearShutter simulateLiquidTearShutter(LiquidTearKeeper& tear, double shutterOpen, double shutterClose);
 
 // Lays the wet trail of `run` at shutter open on the tear's primitive of openSkin (the asset's
 // primitives posed at open, flesh and details included) into run.film.

@@ -158,14 +158,11 @@ void resolveTear(const Shot& shot, ShotLiquidTear& tear, std::vector<LiquidTearP
   const size_t primitive = tear.sourcePoint.primitive;
   const std::vector<Vec3>* carried =
       primitive < tear.smoothedSkins.size() && tear.smoothedSkins[primitive] ? tear.smoothedSkins[primitive].get() : nullptr;
-  // The courses from the simulation's first step on; the path checked and reported is the one the
-  // simulation starts on.
-  std::vector<LiquidCourseRegion> regions;
-  for (const ShotContactAngleRegion& region : tear.contactAngleRegions)
-    regions.push_back({SurfacePoint{region.centerPoint.triangle, region.centerPoint.barycentric}, region.radius});
-  tear.courses = liquidTearCourses(shot, tear, tear.sourcePoint, carried, std::move(regions), tear.pinning);
-  tear.runKeeper = std::make_shared<LiquidTearRunKeeper>();
-  const std::shared_ptr<const LiquidTearCourse> first = tear.courses->at(tear.courses->firstFrame());
+  // The courses from the simulation's first step on, traced here to check them (a FrameBuilder
+  // traces its own); the path checked and reported is the one the simulation starts on.
+  tear.surface = posedTearSurface(asset, primitive, shot.frameStart, carried);
+  const std::shared_ptr<const LiquidTearCourses> courses = liquidTearCoursesOf(shot, tear);
+  const std::shared_ptr<const LiquidTearCourse> first = courses->at(courses->firstFrame());
   if (first->path.points.size() < 2 || first->path.length() < kMinLiquidPathLength) {
     problems.push_back({childPointer(tear.pointer, "source"),
                         fmt::format("the flow path from the source runs only {:.3g} m over part '{}' before it stops "
@@ -173,7 +170,7 @@ void resolveTear(const Shot& shot, ShotLiquidTear& tear, std::vector<LiquidTearP
                                     first->path.length(), tear.part, flowStopName(first->path.stop), kMinLiquidPathLength)});
     return;
   }
-  const std::shared_ptr<const LiquidTearCourse> atShotStart = tear.courses->at(shot.frameStart);
+  const std::shared_ptr<const LiquidTearCourse> atShotStart = courses->at(shot.frameStart);
   tear.smoothedPathLength = atShotStart->smoothedLength;
   tear.path = atShotStart->path;
   tear.input.path = atShotStart->samples;

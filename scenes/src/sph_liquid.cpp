@@ -366,16 +366,15 @@ std::vector<SphProblem> resolveSphLiquids(Shot& shot) {
                             fmt::format("holds no particle: make it larger than the particle spacing ({} m = 2 x "
                                         "particleRadius)",
                                         2.0 * liquid.fluid.particleRadius)});
-    if (problems.empty()) liquid.run = std::make_shared<SphRun>(shot, liquid);
   }
   return problems;
 }
 
-void addSphLiquids(const Shot& shot, double openFrame, double closeFrame, Frame& frame) {
+void addSphLiquids(const Shot& shot, const std::vector<std::unique_ptr<SphRun>>& runs, double openFrame,
+                   double closeFrame, Frame& frame) {
   for (size_t l = 0; l < shot.sph.size(); ++l) {
     const ShotSph& liquid = shot.sph[l];
-    if (!liquid.run) continue;
-    const SphParticles particles = liquid.run->particlesAt(openFrame);
+    const SphParticles particles = runs.at(l)->particlesAt(openFrame);
     if (particles.positions.empty()) continue;
     sph::SurfaceParams surfacing;
     surfacing.voxelsPerRadius = liquid.voxelsPerRadius;

@@ -6,6 +6,7 @@
 // at shutter close by the velocity of the particles around it (motion blur).
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <utility>
@@ -23,7 +24,7 @@ struct SphProblem {
   std::string message;
 };
 
-// Makes each liquid's simulation (SphRun); the problems found (a release too small to hold a
+// Resolves each liquid's collider regions; the problems found (a release too small to hold a
 // particle, a collider with no surface to sample).
 std::vector<SphProblem> resolveSphLiquids(Shot& shot);
 
@@ -112,7 +113,9 @@ class SphRun {
   SphParticles checkpoint_;
 };
 
-// The liquids' surfaces at shutter open (and their motion to shutter close) added to `frame`.
-void addSphLiquids(const Shot& shot, double openFrame, double closeFrame, Frame& frame);
+// The liquids' surfaces at shutter open (and their motion to shutter close) added to `frame`;
+// `runs`: one per liquid of the shot, in order.
+void addSphLiquids(const Shot& shot, const std::vector<std::unique_ptr<SphRun>>& runs, double openFrame,
+                   double closeFrame, Frame& frame);
 
 }  // namespace lacrima::shotfile

@@ -15,6 +15,7 @@
 #include "fuzz_support.hpp"
 #include "lacrima/io/gltf_asset.hpp"
 #include "lacrima/io/performance_track.hpp"
+#include "lacrima/scenes/frame_builder.hpp"
 #include "lacrima/scenes/shot.hpp"
 
 namespace lacrima::fuzz {
@@ -107,8 +108,9 @@ TEST(FuzzSeeds, ValidSeedShotsLoadAndBuildEveryFrame) {
     const std::filesystem::path copy = workDirectory() / file.filename();
     std::filesystem::copy_file(file, copy, std::filesystem::copy_options::overwrite_existing);
     const Shot shot = loadShot(copy);
+    FrameBuilder builder(shot);
     for (int frame = shot.frameStart; frame <= shot.frameEnd; ++frame)
-      EXPECT_FALSE(buildFrame(shot, frame).meshes.empty()) << "frame " << frame;
+      EXPECT_FALSE(builder.build(frame).meshes.empty()) << "frame " << frame;
   }
 }
 

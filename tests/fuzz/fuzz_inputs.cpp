@@ -9,6 +9,7 @@
 #include "fuzz_support.hpp"
 #include "lacrima/io/gltf_asset.hpp"
 #include "lacrima/io/performance_track.hpp"
+#include "lacrima/scenes/frame_builder.hpp"
 #include "lacrima/scenes/shot.hpp"
 
 namespace lacrima::fuzz {
@@ -73,10 +74,11 @@ void loadShotInput(const uint8_t* data, size_t size) {
     // against a 10 s limit per input. The solver and its shot code run under the sanitizers in
     // lacrima_sph_tests and the SphShot tests of lacrima_scenes_tests; the bound on a liquid's particle
     // count is checked at load, which runs here.
-    for (ShotSph& liquid : shot.sph) liquid.run.reset();
-    (void)buildFrame(shot, shot.frameStart);
-    // buildFrame reads nothing but the shot and the frame number: the same frame again adds nothing.
-    if (shot.frameEnd != shot.frameStart) (void)buildFrame(shot, shot.frameEnd);
+    shot.sph.clear();
+    FrameBuilder builder(shot);
+    (void)builder.build(shot.frameStart);
+    // A frame reads nothing but the shot and the frame number: the same frame again adds nothing.
+    if (shot.frameEnd != shot.frameStart) (void)builder.build(shot.frameEnd);
   } catch (const InputError&) {
     // A clear message for bad input is the expected outcome.
   }

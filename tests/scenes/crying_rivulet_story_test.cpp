@@ -8,6 +8,7 @@
 
 #include <cstdio>
 
+#include "lacrima/scenes/frame_builder.hpp"
 #include "lacrima/scenes/liquid_tear.hpp"
 #include "shot_support.hpp"
 
@@ -16,15 +17,15 @@ namespace crying_rivulet_story_test {
 
 TEST(CryingRivuletStory, ASobRunsARivuletDownTheCheekThatBreaksIntoBeadsAsTheCryingEases) {
   const Shot shot = loadShot(test::sourcePath("scenes/shots/crying_rivulet.json"));
-  const ShotLiquidTear& tear = shot.liquidTears.at(0);
-  const LiquidTearState running = liquidTearStateAt(shot, tear, 20);
+  FrameBuilder builder(shot);
+  const LiquidTearState running = builder.liquidTearStateAt(0, 20);
   ASSERT_EQ(running.rivulets.size(), 1u);
   const RivuletView& rivulet = running.rivulets[0];
   std::printf("[ story ] frame 20: rivulet %.1f-%.1f mm down the path, %.2f uL; frame 60: ", rivulet.begin * 1e3,
               rivulet.end * 1e3, rivulet.volume / kMicrolitre);
   EXPECT_EQ(rivulet.begin, 0.0);  // from the lid
   EXPECT_GT(rivulet.end, 0.06);   // down the cheek
-  const LiquidTearState eased = liquidTearStateAt(shot, tear, 60);
+  const LiquidTearState eased = builder.liquidTearStateAt(0, 60);
   size_t beads = 0;
   for (const BeadView& bead : eased.beads) beads += bead.phase != BeadPhase::Hanging;
   std::printf("%zu rivulets, %zu beads on the cheek\n", eased.rivulets.size(), beads);

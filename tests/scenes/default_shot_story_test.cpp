@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <vector>
 
+#include "lacrima/scenes/frame_builder.hpp"
 #include "lacrima/scenes/liquid_tear.hpp"
 #include "shot_support.hpp"
 
@@ -19,18 +20,25 @@ namespace default_shot_story_test {
 
 class DefaultShotStory : public ::testing::Test {
  protected:
-  static void SetUpTestSuite() { shot_ = new Shot(loadShot(test::sourcePath("scenes/shots/tear_closeup.json"))); }
+  static void SetUpTestSuite() {
+    shot_ = new Shot(loadShot(test::sourcePath("scenes/shots/tear_closeup.json")));
+    builder_ = new FrameBuilder(*shot_);
+  }
   static void TearDownTestSuite() {
+    delete builder_;
+    builder_ = nullptr;
     delete shot_;
     shot_ = nullptr;
   }
   static const ShotLiquidTear& tear() { return shot_->liquidTears.at(0); }
-  static LiquidTearState stateAt(double frame) { return liquidTearStateAt(*shot_, tear(), frame); }
+  static LiquidTearState stateAt(double frame) { return builder_->liquidTearStateAt(0, frame); }
 
   static Shot* shot_;
+  static FrameBuilder* builder_;  // one for the suite: the tear's courses are traced once
 };
 
 Shot* DefaultShotStory::shot_ = nullptr;
+FrameBuilder* DefaultShotStory::builder_ = nullptr;
 
 TEST_F(DefaultShotStory, TheMeniscusOverflowsWhileTheCameraIsOnTheEye) {
   ASSERT_EQ(shot_->liquidTears.size(), 1u);
@@ -52,7 +60,7 @@ TEST_F(DefaultShotStory, TheHangingDropLetsGoOnCameraAndFallsClearOfTheSkin) {
   // The skin as rendered at that frame; over the next two frames (quarter frames) every skin vertex
   // near the drop stays outside the drop as drawn (its ringing spheroid) by 5 % of its size: the
   // drop leaves the skin it hung from instead of passing through it.
-  const Frame frame = buildFrame(*shot_, firstFall);
+  const Frame frame = builder_->build(firstFall);
   const std::string skinName = "face/" + shot_->assets[0].gltf->primitives[tear().sourcePoint.primitive].name;
   const TriangleMesh* skin = nullptr;
   for (const MeshInstance& m : frame.meshes)
@@ -82,7 +90,7 @@ TEST_F(DefaultShotStory, BeadsStopOnTheCheekAndTakeSecondsFromTheLidToTheJawLine
   // visible stops. Per bead: the time from its overflow until its liquid (the bead, or the bead it merged
   // into) is 8 cm down the path; and the longest it stood still between 1 and 8 cm.
   constexpr double kJawLine = 0.08, kStep = 0.25;  // metres; frames
-  LiquidTearRun run(*shot_, tear());
+  LiquidTearRun run(*shot_, tear(), builder_->liquidTearCourses(0));
   std::vector<double> born, arrived, stillSince, longestStill;
   for (double f = tear().simulationStartFrame; f <= shot_->frameEnd; f += kStep) {
     run.advanceTo(f);
@@ -128,11 +136,11 @@ TEST_F(DefaultShotStory, AFrameWhoseFleshContinuesFromAFiledStateIsTheFrameOfThe
   // inverted tetrahedron kept the rest shape of the step before, which no filed state holds, and
   // this failed.)
   ASSERT_EQ(shot_->flesh.size(), 1u);
-  buildFrame(*shot_, 47);
-  buildFrame(*shot_, 48);
-  const Frame inTheRun = buildFrame(*shot_, 49);
-  buildFrame(*shot_, 50);
-  const Frame continued = buildFrame(*shot_, 49);
+  builder_->build(47);
+  builder_->build(48);
+  const Frame inTheRun = builder_->build(49);
+  builder_->build(50);
+  const Frame continued = builder_->build(49);
   const MeshInstance *runSkin = test::findMesh(inTheRun, "face/ICTFace/M_Face"),
                      *continuedSkin = test::findMesh(continued, "face/ICTFace/M_Face");
   ASSERT_TRUE(runSkin && continuedSkin);

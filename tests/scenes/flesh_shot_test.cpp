@@ -15,6 +15,7 @@
 #include <optional>
 
 #include "lacrima/flesh/flesh_state_cache.hpp"
+#include "lacrima/scenes/frame_builder.hpp"
 #include "lacrima/scenes/flesh_bench.hpp"
 #include "support/test_directory.hpp"
 
@@ -69,9 +70,10 @@ Shot nodShot(bool withFlesh, const std::string& name) {
 TEST(FleshShot, TheCheekLagsANodAndSettlesOnTheRigsPose) {
   const Shot flesh = nodShot(true, "flesh_nod.json"), rig = nodShot(false, "flesh_nod_rig.json");
   ASSERT_EQ(flesh.flesh.size(), 1u);
+  FrameBuilder withFlesh(flesh), rigOnly(rig);
   std::vector<float> offsets;
   for (int f = 1; f <= kFrames; ++f)
-    offsets.push_back(difference(faceSkin(buildFrame(flesh, f)), faceSkin(buildFrame(rig, f))).largest);
+    offsets.push_back(difference(faceSkin(withFlesh.build(f)), faceSkin(rigOnly.build(f))).largest);
   const float peak = *std::max_element(offsets.begin(), offsets.begin() + 6);
   EXPECT_EQ(offsets[0], 0.0f);  // the first frame: at rest on the rig's pose
   EXPECT_GT(peak, 1e-4f) << "the flesh should lag the nod by a tenth of a millimetre or more";
@@ -100,26 +102,26 @@ TEST(FleshShot, AStillFaceIsLeftBitwiseAsTheRigMadeIt) {
   const std::string still = R"("rig": {"preset": "ict"}, "joints": {"head.rx": 8})";
   const Shot flesh = loadShot(writeShot("flesh_still.json", ictFaceShot(kFlesh, "", still, 6)));
   const Shot rig = loadShot(writeShot("flesh_still_rig.json", ictFaceShot("", "", still, 6)));
-  for (int f : {1, 6}) EXPECT_EQ(difference(faceSkin(buildFrame(flesh, f)), faceSkin(buildFrame(rig, f))).moved, 0u) << f;
+  FrameBuilder withFlesh(flesh);
+  for (int f : {1, 6}) EXPECT_EQ(difference(faceSkin(withFlesh.build(f)), faceSkin(buildFrame(rig, f))).moved, 0u) << f;
 }
 
 TEST(FleshShot, AFrameBuiltAloneIsTheFrameBuiltInSequenceWithAnyThreadCount) {
   // States filed by the sequence are not where the frame built alone looks: it simulates from the start.
   const std::filesystem::path home = test::testDirectory("flesh_cache", true);
   const ScopedCacheHome cache(home / "sequence");
-  const Shot sequence = nodShot(true, "flesh_sequence.json");
+  const Shot shot = nodShot(true, "flesh_sequence.json");
+  FrameBuilder sequence(shot);
   TriangleMesh inSequence;
-  for (int f = 1; f <= 5; ++f) inSequence = faceSkin(buildFrame(sequence, f));
+  for (int f = 1; f <= 5; ++f) inSequence = faceSkin(sequence.build(f));
   const ScopedCacheHome aloneCache(home / "alone");
-  const Shot alone = nodShot(true, "flesh_alone.json");
   TriangleMesh single;
   tbb::task_arena oneThread(1);
-  oneThread.execute([&] { single = faceSkin(buildFrame(alone, 5)); });
+  oneThread.execute([&] { single = faceSkin(buildFrame(shot, 5)); });
   EXPECT_EQ(difference(inSequence, single).moved, 0u);
   // Asked again for an earlier frame, the simulation starts over and gives it bitwise again.
-  const TriangleMesh again = faceSkin(buildFrame(sequence, 3));
-  const Shot fresh = nodShot(true, "flesh_fresh.json");
-  EXPECT_EQ(difference(again, faceSkin(buildFrame(fresh, 3))).moved, 0u);
+  const TriangleMesh again = faceSkin(sequence.build(3));
+  EXPECT_EQ(difference(again, faceSkin(buildFrame(shot, 3))).moved, 0u);
 }
 
 // The state filed at a whole frame (frame 1 + index: the nod shot has no shutter) of the shot's
@@ -138,8 +140,9 @@ TEST(FleshShot, AFrameBuiltAloneContinuesFromTheStateFiledAtTheFrameBefore) {
   const std::filesystem::path home = test::testDirectory("flesh_cache", true);
   const ScopedCacheHome cache(home);
   const Shot sequence = nodShot(true, "flesh_filed_sequence.json");
+  FrameBuilder builder(sequence);
   TriangleMesh inSequence;
-  for (int f = 1; f <= 5; ++f) inSequence = faceSkin(buildFrame(sequence, f));
+  for (int f = 1; f <= 5; ++f) inSequence = faceSkin(builder.build(f));
   // Frame 5 alone continues from the state of frame 5 itself (index 4): moved by a millimetre
   // there, the frame built alone moves with it, so it was read; put back, the frame is bitwise the
   // sequence's.
@@ -150,12 +153,12 @@ TEST(FleshShot, AFrameBuiltAloneContinuesFromTheStateFiledAtTheFrameBefore) {
   for (size_t n = 0; n < moved.positions.size(); ++n)
     if (!sequence.flesh[0].tetVolume->kinematic[n]) moved.positions[n].x() += 1e-3;
   flesh::writeFleshState(file, moved, key);
-  EXPECT_GT(difference(inSequence, faceSkin(buildFrame(nodShot(true, "flesh_filed_moved.json"), 5))).largest, 5e-4f);
+  EXPECT_GT(difference(inSequence, faceSkin(buildFrame(sequence, 5))).largest, 5e-4f);
   flesh::writeFleshState(file, *state, key);
-  EXPECT_EQ(difference(inSequence, faceSkin(buildFrame(nodShot(true, "flesh_filed_alone.json"), 5))).moved, 0u);
+  EXPECT_EQ(difference(inSequence, faceSkin(buildFrame(sequence, 5))).moved, 0u);
   // A corrupt state is passed over (the one before it serves).
   std::ofstream(file, std::ios::binary | std::ios::trunc) << "garbage";
-  EXPECT_EQ(difference(inSequence, faceSkin(buildFrame(nodShot(true, "flesh_filed_corrupt.json"), 5))).moved, 0u);
+  EXPECT_EQ(difference(inSequence, faceSkin(buildFrame(sequence, 5))).moved, 0u);
 }
 
 TEST(FleshShot, TheFleshBenchSimulatesEveryStepAndFilesNoState) {

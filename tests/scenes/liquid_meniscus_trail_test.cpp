@@ -6,6 +6,7 @@
 
 #include <chrono>
 
+#include "lacrima/scenes/frame_builder.hpp"
 #include "lacrima/scenes/liquid_tear.hpp"
 #include "shot_support.hpp"
 #include "support/swept_volume.hpp"
@@ -64,14 +65,15 @@ TEST(LiquidTearMeniscus, SwellsByTheSimulatedVolumeThenRelaxesAfterTheOverflow) 
   const size_t strip = size_t(tear.meniscusPrimitive);
   const TriangleMesh rest = primitiveOf(buildFrame(dry, 1), dry, strip);
   // Frame 1 is t = 0: no meniscus yet, the strip as without the tear, bitwise.
-  const TriangleMesh atStart = primitiveOf(buildFrame(shot, 1), shot, strip);
+  FrameBuilder builder(shot);
+  const TriangleMesh atStart = primitiveOf(builder.build(1), shot, strip);
   EXPECT_EQ(atStart.positions, rest.positions);
   EXPECT_EQ(atStart.normals, rest.normals);
 
   double previous = 0.0;
   for (int f : {4, 10, 20, 32}) {
-    const double volume = liquidTearStateAt(shot, tear, f).meniscusVolume;
-    const TriangleMesh swollen = primitiveOf(buildFrame(shot, f), shot, strip);
+    const double volume = builder.liquidTearStateAt(0, f).meniscusVolume;
+    const TriangleMesh swollen = primitiveOf(builder.build(f), shot, strip);
     const double swept = test::sweptVolume(rest, swollen);
     const double thickness = largestDisplacement(rest, swollen);
     std::printf("[ meniscus ] frame %d: %.2f uL, swept %.3f uL, thickest %.3f mm\n", f, volume * 1e9, swept * 1e9,
@@ -83,7 +85,7 @@ TEST(LiquidTearMeniscus, SwellsByTheSimulatedVolumeThenRelaxesAfterTheOverflow) 
     previous = thickness;
   }
   // After the overflow at 8 uL (frame 33) the meniscus holds 2 uL: the strip relaxes.
-  const double after = largestDisplacement(rest, primitiveOf(buildFrame(shot, 35), shot, strip));
+  const double after = largestDisplacement(rest, primitiveOf(builder.build(35), shot, strip));
   EXPECT_LT(after, 0.5 * previous);
   EXPECT_GT(after, 0.0);
 }

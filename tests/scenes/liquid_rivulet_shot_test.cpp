@@ -7,6 +7,7 @@
 
 #include "lacrima/mesh/closest_point_grid.hpp"
 #include "lacrima/mesh/surface_point.hpp"
+#include "lacrima/scenes/frame_builder.hpp"
 #include "lacrima/scenes/liquid_tear.hpp"
 #include "liquid_tear_support.hpp"
 #include "shot_support.hpp"
@@ -35,10 +36,11 @@ std::vector<const MeshInstance*> rivuletsOf(const Frame& frame) {
 TEST(LiquidRivuletShot, ARivuletRunsDownTheCheekAsAClosedMeshJustUnderTheSkinItWets) {
   const Shot shot = loadShot(writeShot("rivulet_shot.json", ictFaceShot(kTear, "", "", kFrames)));
   const int f = 30;
-  const LiquidTearState state = liquidTearStateAt(shot, shot.liquidTears[0], f);
+  FrameBuilder builder(shot);
+  const LiquidTearState state = builder.liquidTearStateAt(0, f);
   ASSERT_EQ(state.rivulets.size(), 1u);
   EXPECT_TRUE(state.beads.empty() || state.beads.back().phase == BeadPhase::Hanging);
-  const Frame frame = buildFrame(shot, f);
+  const Frame frame = builder.build(f);
   const auto rivulets = rivuletsOf(frame);
   ASSERT_EQ(rivulets.size(), 1u);
   const TriangleMesh& mesh = rivulets[0]->mesh;

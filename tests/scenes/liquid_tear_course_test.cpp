@@ -12,6 +12,7 @@
 
 #include "geometry/height_field_support.hpp"
 #include "lacrima/mesh/surface_point.hpp"
+#include "lacrima/scenes/frame_builder.hpp"
 #include "lacrima/scenes/liquid_tear.hpp"
 #include "shot_support.hpp"
 
@@ -54,7 +55,8 @@ Shot shotAt24Fps() {
 }
 
 // A liquid tear on the sheet from frame 0: welling at `rate` uL/s, 8 uL beads; initial beads as given.
-ShotLiquidTear tearOn(const std::shared_ptr<const TurningSheet>& sheet, double rate,
+// Resolved as loadShot resolves a tear: its surface, source, and the first course's path and input.
+ShotLiquidTear tearOn(const Shot& shot, const std::shared_ptr<const TurningSheet>& sheet, double rate,
                       std::vector<InitialBead> initialBeads = {}) {
   ShotLiquidTear tear;
   tear.pointer = "/tears/0";
@@ -64,9 +66,11 @@ ShotLiquidTear tearOn(const std::shared_ptr<const TurningSheet>& sheet, double r
   tear.params.source.overflowVolume = 8.0 * kMicrolitre;
   tear.params.source.spillVolume = 8.0 * kMicrolitre;
   tear.params.initialBeads = std::move(initialBeads);
-  tear.courses = std::make_shared<const LiquidTearCourses>(sheet, closestSurfacePoint(sheet->rest(), kSource),
-                                                           tear.gravity, tear.maxLength, 0);
-  const std::shared_ptr<const LiquidTearCourse> first = tear.courses->at(0);
+  tear.surface = sheet;
+  const SurfacePoint source = closestSurfacePoint(sheet->rest(), kSource);
+  tear.sourcePoint.triangle = source.triangle;
+  tear.sourcePoint.barycentric = source.barycentric;
+  const std::shared_ptr<const LiquidTearCourse> first = liquidTearCoursesOf(shot, tear)->at(0);
   tear.path = first->path;
   tear.input.path = first->samples;
   tear.input.gravityDirection = tear.gravity.cast<double>();
@@ -83,10 +87,11 @@ Vec3 restPosition(const TurningSheet& sheet, const FlowPath& course, double s) {
 Vec3 restDownAt(double angle) { return Vec3(float(std::sin(-angle)), float(-std::cos(-angle)), 0.0f); }
 
 TEST(LiquidTearCourse, EachFramesCourseIsTheSteepestDescentOfThatFramesPose) {
+  const Shot shot = shotAt24Fps();
   const auto sheet = std::make_shared<const TurningSheet>(2.0);
-  const ShotLiquidTear tear = tearOn(sheet, 0.0);
+  const std::shared_ptr<const LiquidTearCourses> courses = liquidTearCoursesOf(shot, tearOn(shot, sheet, 0.0));
   for (int frame : {0, 4, 9, 20}) {
-    const LiquidTearCourse& course = *tear.courses->at(frame);
+    const LiquidTearCourse& course = *courses->at(frame);
     EXPECT_EQ(course.frame, frame);
     EXPECT_NEAR(course.path.length(), 0.1f, 1e-6f) << frame;
     // Straight down the turned sheet: every point of the course right below the source ...
@@ -98,7 +103,7 @@ TEST(LiquidTearCourse, EachFramesCourseIsTheSteepestDescentOfThatFramesPose) {
     const Vec3 along = (restPosition(*sheet, course.path, 0.08) - kSource).normalized();
     EXPECT_GT(along.dot(restDownAt(sheet->angle(frame))), 1.0f - 1e-6f) << frame;
   }
-  EXPECT_EQ(tear.courses->tracedCount(), 21u);  // frames 0 to 20, each traced once
+  EXPECT_EQ(courses->tracedCount(), 21u);  // frames 0 to 20, each traced once
 }
 
 // The bead's sliding frames: the angle (radians) of its material point below the source on the
@@ -111,10 +116,11 @@ struct Track {
 
 Track slidingTrack(const std::shared_ptr<const TurningSheet>& sheet) {
   const Shot shot = shotAt24Fps();
-  const ShotLiquidTear tear = tearOn(sheet, 0.0, {{0.004, 14.0 * kMicrolitre}});
+  const ShotLiquidTear tear = tearOn(shot, sheet, 0.0, {{0.004, 14.0 * kMicrolitre}});
+  const std::shared_ptr<const LiquidTearCourses> courses = liquidTearCoursesOf(shot, tear);
   Track track;
   for (int frame = 1; frame <= 24; ++frame) {
-    LiquidTearRun run(shot, tear);
+    LiquidTearRun run(shot, tear, *courses);
     run.advanceTo(frame);
     const LiquidTearState state = run.state(frame);
     if (state.beads.empty() || state.beads[0].phase != BeadPhase::Sliding) continue;
@@ -145,61 +151,71 @@ TEST(LiquidTearCourse, ABeadsTrackOnTheSkinBendsAsTheSurfaceTurns) {
   EXPECT_NEAR(bend, -3.0 * kDegree * frames, 0.05 * kDegree);
 }
 
+// The shot of one liquid tear on the sheet (the frame builder's liquid tear 0).
+Shot shotOfTearOn(const std::shared_ptr<const TurningSheet>& sheet, double rate) {
+  Shot shot = shotAt24Fps();
+  shot.liquidTears.push_back(tearOn(shot, sheet, rate));
+  return shot;
+}
+
+void expectSameLiquid(const LiquidTearSimulation& a, const LiquidTearSimulation& b) {
+  ASSERT_FALSE(a.beads().empty());
+  ASSERT_EQ(a.beads().size(), b.beads().size());
+  for (size_t i = 0; i < a.beads().size(); ++i) {
+    EXPECT_EQ(a.beads()[i].arcLength, b.beads()[i].arcLength) << i;
+    EXPECT_EQ(a.beads()[i].volume, b.beads()[i].volume) << i;
+    EXPECT_EQ(a.beads()[i].phase, b.beads()[i].phase) << i;
+  }
+  EXPECT_EQ(a.cellFilmVolume(), b.cellFilmVolume());
+}
+
 TEST(LiquidTearCourse, AFrameAloneEqualsTheSameFrameInASequence) {
-  const Shot shot = shotAt24Fps();
-  const auto sheet = std::make_shared<const TurningSheet>(1.5);
-  const ShotLiquidTear alone = tearOn(sheet, 20.0), sequence = tearOn(sheet, 20.0);
-  LiquidTearRun once(shot, alone);
+  const Shot shot = shotOfTearOn(std::make_shared<const TurningSheet>(1.5), 20.0);
+  const ShotLiquidTear& tear = shot.liquidTears[0];
+  const std::shared_ptr<const LiquidTearCourses> aloneCourses = liquidTearCoursesOf(shot, tear);
+  LiquidTearRun once(shot, tear, *aloneCourses);
   once.advanceTo(40.0);
-  for (double f : {3.0, 12.5, 20.0, 33.25}) liquidTearStateAt(shot, sequence, f);  // fills sequence's courses
-  LiquidTearRun stepwise(shot, sequence);
+  FrameBuilder sequence(shot);
+  for (double f : {3.0, 12.5, 20.0, 33.25}) sequence.liquidTearStateAt(0, f);  // fills the builder's courses
+  LiquidTearRun stepwise(shot, tear, sequence.liquidTearCourses(0));
   for (double f : {5.0, 17.75, 30.0, 40.0}) stepwise.advanceTo(f);
   ASSERT_GT(once.reroutes(), 30);
   EXPECT_EQ(once.reroutes(), stepwise.reroutes());
   EXPECT_EQ(once.course().frame, 40);
   EXPECT_EQ(stepwise.course().frame, 40);
-  const auto &a = once.simulation().beads(), &b = stepwise.simulation().beads();
-  ASSERT_FALSE(a.empty());
-  ASSERT_EQ(a.size(), b.size());
-  for (size_t i = 0; i < a.size(); ++i) {
-    EXPECT_EQ(a[i].arcLength, b[i].arcLength) << i;
-    EXPECT_EQ(a[i].volume, b[i].volume) << i;
-    EXPECT_EQ(a[i].phase, b[i].phase) << i;
-  }
-  EXPECT_EQ(once.simulation().cellFilmVolume(), stepwise.simulation().cellFilmVolume());
+  expectSameLiquid(once.simulation(), stepwise.simulation());
   EXPECT_EQ(once.course().path.positions, stepwise.course().path.positions);
 }
 
-TEST(LiquidTearCourse, AKeptRunIsContinuedOnlyForItsOwnTearAndNotBackwards) {
-  const Shot shot = shotAt24Fps();
-  const auto sheet = std::make_shared<const TurningSheet>(1.5);
-  const ShotLiquidTear tear = tearOn(sheet, 20.0), other = tearOn(sheet, 20.0);
-  LiquidTearRunKeeper keeper;
-  LiquidTearRun first = keeper.runFor(shot, tear, 20.0);
-  EXPECT_EQ(first.simulation().steps(), 0);  // nothing kept yet
-  first.advanceTo(20.0);
-  keeper.keep(tear, first);
-  LiquidTearRun continued = keeper.runFor(shot, tear, 30.0);
-  EXPECT_EQ(continued.simulation().steps(), first.simulation().steps());
-  EXPECT_EQ(keeper.runFor(shot, other, 30.0).simulation().steps(), 0) << "another tear's run";
-  EXPECT_EQ(keeper.runFor(shot, tear, 10.0).simulation().steps(), 0) << "the kept run is past frame 10";
-  // Continued, the run reaches the state of a run from the start.
-  continued.advanceTo(40.0);
-  LiquidTearRun fresh(shot, tear);
-  fresh.advanceTo(40.0);
-  ASSERT_FALSE(fresh.simulation().beads().empty());
-  ASSERT_EQ(continued.simulation().beads().size(), fresh.simulation().beads().size());
-  for (size_t i = 0; i < fresh.simulation().beads().size(); ++i)
-    EXPECT_EQ(continued.simulation().beads()[i].arcLength, fresh.simulation().beads()[i].arcLength) << i;
-  EXPECT_EQ(continued.simulation().cellFilmVolume(), fresh.simulation().cellFilmVolume());
-  EXPECT_EQ(continued.reroutes(), fresh.reroutes());
+// The builder continues the run it advanced last when asked for a later time and starts again when
+// asked for an earlier one: either way the state of a run from the start.
+TEST(LiquidTearCourse, ABuildersStateIsARunFromTheStartWhateverWasAskedBefore) {
+  const Shot shot = shotOfTearOn(std::make_shared<const TurningSheet>(1.5), 20.0);
+  const ShotLiquidTear& tear = shot.liquidTears[0];
+  FrameBuilder builder(shot);
+  for (double f : {20.0, 40.0, 10.0, 10.5}) {
+    const LiquidTearState kept = builder.liquidTearStateAt(0, f);
+    const std::shared_ptr<const LiquidTearCourses> courses = liquidTearCoursesOf(shot, tear);
+    LiquidTearRun fresh(shot, tear, *courses);
+    fresh.advanceTo(f);
+    const LiquidTearState expected = fresh.state(f);
+    ASSERT_FALSE(expected.beads.empty()) << f;
+    ASSERT_EQ(kept.beads.size(), expected.beads.size()) << f;
+    for (size_t i = 0; i < expected.beads.size(); ++i) {
+      EXPECT_EQ(kept.beads[i].arcLength, expected.beads[i].arcLength) << f << " bead " << i;
+      EXPECT_EQ(kept.beads[i].volume, expected.beads[i].volume) << f << " bead " << i;
+    }
+    EXPECT_EQ(kept.sampleFilmThickness, expected.sampleFilmThickness) << f;
+    EXPECT_EQ(builder.liquidTearCourseAt(0, f)->path.positions, fresh.course().path.positions) << f;
+  }
 }
 
 TEST(LiquidTearCourse, TheVolumeIsConservedAcrossTheCourseChanges) {
   const Shot shot = shotAt24Fps();
-  const ShotLiquidTear tear = tearOn(std::make_shared<const TurningSheet>(2.0), 20.0);
+  const ShotLiquidTear tear = tearOn(shot, std::make_shared<const TurningSheet>(2.0), 20.0);
+  const std::shared_ptr<const LiquidTearCourses> courses = liquidTearCoursesOf(shot, tear);
   for (int frame : {12, 24, 48, 72}) {
-    LiquidTearRun run(shot, tear);
+    LiquidTearRun run(shot, tear, *courses);
     run.advanceTo(frame);
     const VolumeBudget budget = run.simulation().budget();
     EXPECT_NEAR(budget.source, 20e-9 * frame / 24.0, 1e-12) << frame;
@@ -213,12 +229,13 @@ TEST(LiquidTearCourse, TheVolumeIsConservedAcrossTheCourseChanges) {
 
 TEST(LiquidTearCourse, AStillSurfaceKeepsOneCourseAndNeverReroutes) {
   const Shot shot = shotAt24Fps();
-  const ShotLiquidTear tear = tearOn(std::make_shared<const TurningSheet>(0.0), 20.0);
-  LiquidTearRun run(shot, tear);
+  const ShotLiquidTear tear = tearOn(shot, std::make_shared<const TurningSheet>(0.0), 20.0);
+  const std::shared_ptr<const LiquidTearCourses> courses = liquidTearCoursesOf(shot, tear);
+  LiquidTearRun run(shot, tear, *courses);
   run.advanceTo(60.0);
   EXPECT_EQ(run.reroutes(), 0);
-  EXPECT_EQ(tear.courses->tracedCount(), 1u);
-  EXPECT_EQ(tear.courses->at(60), tear.courses->at(0));
+  EXPECT_EQ(courses->tracedCount(), 1u);
+  EXPECT_EQ(courses->at(60), courses->at(0));
   // Bitwise the simulation on the single path, as before courses moved.
   LiquidTearSimulation fixed(tear.input);
   fixed.advanceTo(liquidTearSeconds(shot, tear, 60.0));
@@ -234,13 +251,14 @@ TEST(LiquidTearCourse, AStillSurfaceKeepsOneCourseAndNeverReroutes) {
 TEST(LiquidTearCourse, OnTheDefaultShotTheCourseMovesWithTheHead) {
   const Shot shot = loadShot(test::sourcePath("scenes/shots/tear_closeup.json"));
   ASSERT_EQ(shot.liquidTears.size(), 1u);
-  const ShotLiquidTear& tear = shot.liquidTears[0];
+  const FrameBuilder builder(shot);
+  const LiquidTearCourses& courses = builder.liquidTearCourses(0);
   const auto start = std::chrono::steady_clock::now();
-  const std::shared_ptr<const LiquidTearCourse> first = tear.courses->at(1), last = tear.courses->at(72);
+  const std::shared_ptr<const LiquidTearCourse> first = courses.at(1), last = courses.at(72);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   ASSERT_NE(first, last);
   // Both courses as material points on the last frame's skin: how far the re-routing moved the course.
-  const TriangleMesh skin = tear.courses->surface().at(72).skin;
+  const TriangleMesh skin = courses.surface().at(72).skin;
   const FlowPathTransfer transfer(first->path, last->path, skin);
   double widest = 0.0, widestAt = 0.0;
   const double shared = std::min(first->path.length(), last->path.length());
@@ -251,7 +269,7 @@ TEST(LiquidTearCourse, OnTheDefaultShotTheCourseMovesWithTheHead) {
   std::printf("[ course ] default shot: %zu courses traced for frames %d-72 in %.2f s; frame 1: %.1f mm long, "
               "frame 72: %.1f mm (stop: %s); on the frame-72 skin the course moved by up to %.2f mm (at s = %.0f mm), "
               "%.2f mm at its end; the end moved %.2f mm in space\n",
-              tear.courses->tracedCount(), tear.courses->firstFrame(), seconds, 1e3 * first->path.length(),
+              courses.tracedCount(), courses.firstFrame(), seconds, 1e3 * first->path.length(),
               1e3 * last->path.length(), flowStopName(last->path.stop), 1e3 * widest, 1e3 * widestAt, 1e3 * endStep,
               1e3 * worldEnd);
   EXPECT_GT(widest, 2e-4);  // re-routed by the head's turn, not only carried along by the skin

@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "lacrima/mesh/surface_point.hpp"
+#include "lacrima/scenes/frame_builder.hpp"
 #include "lacrima/scenes/liquid_tear.hpp"
 #include "liquid_tear_film.hpp"  // scenes/src: the film and its definition evaluated directly
 #include "shot_support.hpp"
@@ -51,35 +52,37 @@ size_t nearestVertex(const TriangleMesh& mesh, const Vec3& p) {
 }
 
 // Arc length of the single bead at a frame (the test tear has one), or -1 without one.
-double beadArcLength(const Shot& shot, int frame) {
-  const LiquidTearState state = liquidTearStateAt(shot, shot.liquidTears[0], frame);
+double beadArcLength(FrameBuilder& builder, int frame) {
+  const LiquidTearState state = builder.liquidTearStateAt(0, frame);
   return state.beads.empty() ? -1.0 : state.beads.front().arcLength;
 }
 
 // A frame in which the bead has run at least 2 cm down the path.
-int frameAfterTheBeadRan(const Shot& shot) {
+int frameAfterTheBeadRan(FrameBuilder& builder) {
   for (int f = 25; f <= kFrames; ++f)
-    if (beadArcLength(shot, f) > 0.02) return f;
+    if (beadArcLength(builder, f) > 0.02) return f;
   ADD_FAILURE() << "the bead never ran 2 cm";
   return kFrames;
 }
 
 TEST(LiquidTearFilm, SkinIsDryBeforeTheFirstBead) {
   const Shot shot = loadFilmShot("film_dry.json");
-  ASSERT_LT(beadArcLength(shot, 20), 0.0);
-  EXPECT_TRUE(skinOf(buildFrame(shot, 20), shot).wetness.empty());
+  FrameBuilder builder(shot);
+  ASSERT_LT(beadArcLength(builder, 20), 0.0);
+  EXPECT_TRUE(skinOf(builder.build(20), shot).wetness.empty());
 }
 
 TEST(LiquidTearFilm, TrailBehindTheBeadIsWetAndFarSkinDry) {
   const Shot shot = loadFilmShot("film_trail.json");
-  const int f = frameAfterTheBeadRan(shot);
-  const Frame frame = buildFrame(shot, f);
+  FrameBuilder builder(shot);
+  const int f = frameAfterTheBeadRan(builder);
+  const Frame frame = builder.build(f);
   const MeshInstance& skin = skinOf(frame, shot);
   ASSERT_EQ(skin.wetness.size(), skin.mesh.vertexCount());
   const ShotLiquidTear& tear = shot.liquidTears[0];
-  const LiquidTearState state = liquidTearStateAt(shot, tear, f);
+  const LiquidTearState state = builder.liquidTearStateAt(0, f);
   // Skin vertices on the trail, 0.5 to 1.5 cm behind the bead: wet, about as thick as the film.
-  const double bead = beadArcLength(shot, f);
+  const double bead = beadArcLength(builder, f);
   int onTrail = 0;
   for (double s = bead - 0.015; s < bead - 0.005; s += 0.002) {
     const size_t v = nearestVertex(skin.mesh, surfacePosition(skin.mesh, liquidTearPathPoint(tear, s)));
@@ -110,14 +113,15 @@ TEST(LiquidTearFilm, TrailBehindTheBeadIsWetAndFarSkinDry) {
 
 TEST(LiquidTearFilm, TrailDriesAfterTheBeadHasPassed) {
   const Shot shot = loadFilmShot("film_drying.json");
-  const int f = frameAfterTheBeadRan(shot);
-  const Frame firstFrame = buildFrame(shot, f);
+  FrameBuilder builder(shot);
+  const int f = frameAfterTheBeadRan(builder);
+  const Frame firstFrame = builder.build(f);
   const MeshInstance& first = skinOf(firstFrame, shot);
   ASSERT_FALSE(first.wetness.empty());
   const size_t v = size_t(std::max_element(first.wetness.begin(), first.wetness.end()) - first.wetness.begin());
   float previous = first.wetness[v];
   for (int later = f + 6; later <= std::min(f + 30, kFrames); later += 6) {
-    const Frame frame = buildFrame(shot, later);
+    const Frame frame = builder.build(later);
     const float now = skinOf(frame, shot).wetness.at(v);
     EXPECT_GT(now, 0.0f) << "frame " << later;
     EXPECT_LT(now, previous) << "frame " << later;
@@ -164,15 +168,16 @@ double relativeSpread(const std::vector<float>& values) {
 TEST(LiquidTearFilm, TheTrailsEdgeWandersAndReachesNoFurtherThanBefore) {
   Shot shot = loadFilmShot("film_edge.json");
   const ShotLiquidTear& tear = shot.liquidTears[0];
-  const Frame firstFrame = buildFrame(shot, shot.frameStart);
+  FrameBuilder builder(shot);
+  const Frame firstFrame = builder.build(shot.frameStart);
   const MeshInstance& firstSkin = skinOf(firstFrame, shot);
   ASSERT_EQ(tear.filmEdgeVariation.size(), firstSkin.mesh.vertexCount());  // one value per vertex, fixed
   for (float v : tear.filmEdgeVariation) ASSERT_TRUE(v >= -1.0f && v <= 1.0f);
-  const int f = frameAfterTheBeadRan(shot);
-  const double bead = beadArcLength(shot, f);
-  const std::vector<float> wandering = edgeDistances(shot, buildFrame(shot, f), 0.004, bead - 0.004);
-  shot.liquidTears[0].filmEdgeVariation.clear();  // the straight-edged trail, for comparison
-  const std::vector<float> straight = edgeDistances(shot, buildFrame(shot, f), 0.004, bead - 0.004);
+  const int f = frameAfterTheBeadRan(builder);
+  const double bead = beadArcLength(builder, f);
+  const std::vector<float> wandering = edgeDistances(shot, builder.build(f), 0.004, bead - 0.004);
+  shot.liquidTears[0].filmEdgeVariation.clear();  // the straight-edged trail, for comparison (the builder reads it)
+  const std::vector<float> straight = edgeDistances(shot, builder.build(f), 0.004, bead - 0.004);
   ASSERT_GE(wandering.size(), 8u);
   const double spreadWandering = relativeSpread(wandering), spreadStraight = relativeSpread(straight);
   std::printf("[ film ] edge distance from the path over %zu mm: spread %.3f wandering, %.3f straight\n",
@@ -191,13 +196,14 @@ TEST(LiquidTearFilm, TheTrailsEdgeWandersAndReachesNoFurtherThanBefore) {
 // with the wandering edge and without it, while the bead runs and while the trail dries.
 TEST(LiquidTearFilm, EqualsItsDefinitionOverEveryPieceAtEveryVertex) {
   Shot shot = loadFilmShot("film_definition.json");
-  const int running = frameAfterTheBeadRan(shot);
+  FrameBuilder builder(shot);
+  const int running = frameAfterTheBeadRan(builder);
   for (const int f : {running, std::min(running + 12, kFrames)}) {
-    const TriangleMesh skin = skinOf(buildFrame(shot, f), shot).mesh;
+    const TriangleMesh skin = skinOf(builder.build(f), shot).mesh;
     for (const bool wandering : {true, false}) {
       ShotLiquidTear tear = shot.liquidTears[0];
       if (!wandering) tear.filmEdgeVariation.clear();
-      LiquidTearRun run(shot, tear);
+      LiquidTearRun run(shot, tear, builder.liquidTearCourses(0));
       run.advanceTo(double(f));
       std::vector<float> film, definition;
       shotfile::addLiquidTearFilm(tear, run.coursePointer()->path, run.simulation(), skin, film);
@@ -214,9 +220,9 @@ TEST(LiquidTearFilm, AFrameAloneEqualsTheSameFrameInASequence) {
   const Shot shot = loadFilmShot("film_alone.json");
   const std::vector<float> alone = skinOf(buildFrame(shot, 40), shot).wetness;
   ASSERT_FALSE(alone.empty());
-  const Shot sequenceShot = loadFilmShot("film_sequence.json");
-  for (int f : {10, 30, 35}) buildFrame(sequenceShot, f);
-  EXPECT_EQ(skinOf(buildFrame(sequenceShot, 40), sequenceShot).wetness, alone);
+  FrameBuilder sequence(shot);
+  for (int f : {10, 30, 35}) sequence.build(f);
+  EXPECT_EQ(skinOf(sequence.build(40), shot).wetness, alone);
 }
 
 }  // namespace liquid_tear_film_test

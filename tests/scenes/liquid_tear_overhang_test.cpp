@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "lacrima/scenes/frame_builder.hpp"
 #include "lacrima/scenes/liquid_tear.hpp"
 #include "shot_support.hpp"
 
@@ -27,8 +28,9 @@ Shot loadTearShot(const std::string& name, const std::string& extra) {
 
 // The first hanging bead of the shot (frame by frame), or none.
 std::optional<BeadView> firstHangingBead(const Shot& shot) {
+  FrameBuilder builder(shot);
   for (int f = 1; f <= kFrames; ++f)
-    for (const BeadView& bead : liquidTearStateAt(shot, shot.liquidTears[0], f).beads)
+    for (const BeadView& bead : builder.liquidTearStateAt(0, f).beads)
       if (bead.phase == BeadPhase::Hanging) return bead;
   return std::nullopt;
 }

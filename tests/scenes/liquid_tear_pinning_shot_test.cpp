@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "lacrima/scenes/frame_builder.hpp"
 #include "lacrima/scenes/liquid_tear.hpp"
 #include "liquid_tear_support.hpp"
 #include "shot_support.hpp"
@@ -38,7 +39,8 @@ Shot loadTearShot(const std::string& name, const std::string& extra) {
 // The arc length the tear's liquid has reached at each frame from the overflow on (the furthest bead).
 std::vector<double> frontByFrame(const Shot& shot) {
   std::vector<double> front;
-  LiquidTearRun run(shot, shot.liquidTears[0]);
+  const std::shared_ptr<const LiquidTearCourses> courses = liquidTearCoursesOf(shot, shot.liquidTears[0]);
+  LiquidTearRun run(shot, shot.liquidTears[0], *courses);
   for (int f = 25; f <= kFrames; ++f) {
     run.advanceTo(f);
     double furthest = 0.0;
@@ -58,8 +60,9 @@ TEST(LiquidTearPinningShot, SamplesCarryTheFactorOfTheSkinUnderThem) {
   EXPECT_GE(*low, 0.5f - 1e-6f);
   EXPECT_LE(*high, 2.0f + 1e-5f);
   // The factor under each sample is the skin's, interpolated at the sample's point on the path.
-  const std::shared_ptr<const LiquidTearCourse> course = liquidTearCourseAt(shot, tear, shot.frameStart);
-  const TriangleMesh& skin = tear.courses->surface().at(course->frame).skin;
+  FrameBuilder builder(shot);
+  const std::shared_ptr<const LiquidTearCourse> course = builder.liquidTearCourseAt(0, shot.frameStart);
+  const TriangleMesh skin = tear.surface->at(course->frame).skin;
   double fewest = 1e9, most = 0.0;
   for (size_t i = 0; i < course->samples.size(); ++i) {
     const SurfacePoint& point = course->path.points[i];
@@ -95,9 +98,9 @@ TEST(LiquidTearPinningShot, ATearOnPatchySkinWaitsWhereOneOnUniformSkinRunsOn) {
 TEST(LiquidTearPinningShot, AFrameAloneEqualsTheSameFrameInASequence) {
   const Shot shot = loadTearShot("pinning_alone.json", kPatchySkin);
   const Frame alone = buildFrame(shot, 66);
-  const Shot sequenceShot = loadTearShot("pinning_sequence.json", kPatchySkin);
-  for (int f : {30, 50, 64}) buildFrame(sequenceShot, f);
-  const Frame inSequence = buildFrame(sequenceShot, 66);
+  FrameBuilder sequence(shot);
+  for (int f : {30, 50, 64}) sequence.build(f);
+  const Frame inSequence = sequence.build(66);
   const auto a = beadsOf(alone), b = beadsOf(inSequence);
   ASSERT_FALSE(a.empty());
   ASSERT_EQ(a.size(), b.size());

@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "lacrima/mesh/surface_point.hpp"
+#include "lacrima/scenes/frame_builder.hpp"
 #include "lacrima/scenes/liquid_tear.hpp"
 #include "liquid_tear_support.hpp"
 #include "shot_support.hpp"
@@ -113,8 +114,9 @@ TEST(LiquidTearRegionShot, BeadMeshesInTheRegionAreDrawnAtItsContactAngle) {
     // Frame 26: the first bead, a frame after the overflow; on the oily skin it already slides (6 mm
     // down), on the tear's own angles it is still pinned at the source.
     const int f = 26;
-    const LiquidTearState state = liquidTearStateAt(*shot, shot->liquidTears[0], f);
-    const Frame frame = buildFrame(*shot, f);
+    FrameBuilder builder(*shot);
+    const LiquidTearState state = builder.liquidTearStateAt(0, f);
+    const Frame frame = builder.build(f);
     const auto beads = beadsOf(frame);
     ASSERT_EQ(state.beads.size(), 1u);
     ASSERT_EQ(beads.size(), 1u);
@@ -136,9 +138,9 @@ TEST(LiquidTearRegionShot, BeadMeshesInTheRegionAreDrawnAtItsContactAngle) {
 TEST(LiquidTearRegionShot, AFrameAloneEqualsTheSameFrameInASequence) {
   const Shot shot = loadTearShot("region_alone.json", kOilyAroundTheSource);
   const Frame alone = buildFrame(shot, 40);
-  const Shot sequenceShot = loadTearShot("region_sequence.json", kOilyAroundTheSource);
-  for (int f : {10, 30, 50}) buildFrame(sequenceShot, f);
-  const Frame inSequence = buildFrame(sequenceShot, 40);
+  FrameBuilder sequence(shot);
+  for (int f : {10, 30, 50}) sequence.build(f);
+  const Frame inSequence = sequence.build(40);
   const auto a = beadsOf(alone), b = beadsOf(inSequence);
   ASSERT_FALSE(a.empty());
   ASSERT_EQ(a.size(), b.size());

@@ -13,6 +13,7 @@
 
 #include "lacrima/base/error.hpp"
 #include "lacrima/mesh/mesh.hpp"
+#include "lacrima/scenes/frame_builder.hpp"
 #include "lacrima/scenes/shot.hpp"
 #include "lacrima/sph/surface_tension.hpp"
 #include "scenes/shot_support.hpp"
@@ -52,7 +53,8 @@ const MeshInstance* liquidMesh(Frame&&) = delete;
 TEST(SphShot, TheSurfacedDropIsAClosedWaterMeshBlurredByItsMotionAboveTheTable) {
   const Shot shot = loadShot(writeShot("sph_drop.json", dropShot()));
   ASSERT_EQ(shot.sph.size(), 1u);
-  const Frame frame = buildFrame(shot, 2);
+  FrameBuilder builder(shot);
+  const Frame frame = builder.build(2);
   const MeshInstance* liquid = liquidMesh(frame);
   ASSERT_NE(liquid, nullptr);
   EXPECT_EQ(frame.materials[liquid->materialId].name, "water");
@@ -69,7 +71,7 @@ TEST(SphShot, TheSurfacedDropIsAClosedWaterMeshBlurredByItsMotionAboveTheTable) 
   EXPECT_GT(meanDrop, 0.5e-3f);
   EXPECT_LT(meanDrop, 0.9e-3f);
   // Later the drop lies on the table: nothing of it below the table's boundary layer.
-  const Frame later = buildFrame(shot, 4);
+  const Frame later = builder.build(4);
   const MeshInstance* landed = liquidMesh(later);
   ASSERT_NE(landed, nullptr);
   for (const Vec3& p : landed->mesh.positions) ASSERT_GT(p.y(), -0.5e-3f);
@@ -79,20 +81,21 @@ TEST(SphShot, AFrameBuiltAloneEqualsTheSameFrameInASequenceOrAfterALaterOne) {
   // Each in a cache of its own: the frame built alone must not find the sequence's checkpoints.
   const std::filesystem::path home = test::testDirectory("sph_alone_cache", true);
   std::optional<test::ScopedCacheHome> cache(std::in_place, home / "sequence");
-  const Shot sequence = loadShot(writeShot("sph_sequence.json", dropShot()));
-  buildFrame(sequence, 2);
-  const Frame inSequence = buildFrame(sequence, 3);
+  const Shot shot = loadShot(writeShot("sph_sequence.json", dropShot()));
+  FrameBuilder sequence(shot);
+  sequence.build(2);
+  const Frame inSequence = sequence.build(3);
   cache.reset();
   cache.emplace(home / "alone");
-  const Shot alone = loadShot(writeShot("sph_alone.json", dropShot()));
-  const Frame builtAlone = buildFrame(alone, 3);
+  FrameBuilder alone(shot);
+  const Frame builtAlone = alone.build(3);
   ASSERT_NE(liquidMesh(inSequence), nullptr);
   ASSERT_NE(liquidMesh(builtAlone), nullptr);
   EXPECT_EQ(liquidMesh(inSequence)->mesh.positions, liquidMesh(builtAlone)->mesh.positions);
   // Backwards: frame 2 after frame 4 starts the simulation again.
-  buildFrame(alone, 4);
-  const Frame again = buildFrame(alone, 2);
-  const Frame first = buildFrame(sequence, 2);
+  alone.build(4);
+  const Frame again = alone.build(2);
+  const Frame first = sequence.build(2);
   EXPECT_EQ(liquidMesh(again)->mesh.positions, liquidMesh(first)->mesh.positions);
 }
 
@@ -164,7 +167,8 @@ TEST(SphShot, ALaterReleaseAddsItsDropAtItsFrame) {
     for (const Vec3& p : m.mesh.positions) hi = std::max(hi, p.x());
     return hi;
   };
-  const Frame before = buildFrame(shot, 2), after = buildFrame(shot, 4);
+  FrameBuilder builder(shot);
+  const Frame before = builder.build(2), after = builder.build(4);
   EXPECT_LT(xExtent(*liquidMesh(before)), 0.004f);  // only the first drop
   EXPECT_GT(xExtent(*liquidMesh(after)), 0.006f);   // the second one is there
 }
@@ -244,7 +248,8 @@ TEST(SphShot, TheChinOfAnOpeningJawPushesTheDropUnderIt) {
   const std::string chin = R"({"asset": "face", "part": "M_Face", "regions": [{"center": [0, -0.0823, 0.0817], "radius": 0.008}]})";
   const Shot shot = loadShot(writeShot("sph_under_the_jaw.json", dropUnderAnOpeningJaw(chin)));
   const Shot alone = loadShot(writeShot("sph_under_no_jaw.json", dropUnderAnOpeningJaw("")));
-  const Frame start = buildFrame(shot, 1), pushed = buildFrame(shot, 13), left = buildFrame(alone, 13);
+  FrameBuilder builder(shot);
+  const Frame start = builder.build(1), pushed = builder.build(13), left = buildFrame(alone, 13);
   // The chin's underside: the lowest skin point within 3 mm of the midline, in front of the neck.
   const auto chinBottom = [](const Frame& frame) {
     float lowest = 1.0f;
@@ -280,7 +285,8 @@ std::string plateUnderAnOpeningJaw(bool attached) {
 TEST(SphShot, AShapeAttachedToTheFaceCollidesWhereTheFaceCarriesIt) {
   const Shot attached = loadShot(writeShot("sph_attached_plate.json", plateUnderAnOpeningJaw(true)));
   const Shot still = loadShot(writeShot("sph_still_plate.json", plateUnderAnOpeningJaw(false)));
-  const Frame start = buildFrame(attached, 1), pushed = buildFrame(attached, 13), left = buildFrame(still, 13);
+  FrameBuilder builder(attached);
+  const Frame start = builder.build(1), pushed = builder.build(13), left = buildFrame(still, 13);
   std::printf("[ attached collider ] drop top %.2f -> %.2f mm under an attached plate, %.2f mm under a still one\n",
               1e3 * liquidTop(start), 1e3 * liquidTop(pushed), 1e3 * liquidTop(left));
   // The rendered plate (the frame builder's) and the collider move together: the plate goes down

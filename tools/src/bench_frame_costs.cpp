@@ -10,6 +10,7 @@
 #include "lacrima/renderer/bench.hpp"
 #include "lacrima/renderer/render.hpp"
 #include "lacrima/scenes/frame_build_times.hpp"
+#include "lacrima/scenes/frame_builder.hpp"
 #include "lacrima/scenes/shot.hpp"
 #include "median.hpp"
 #include "thread_cap.hpp"
@@ -79,11 +80,12 @@ std::vector<FrameCost> measureFrameCosts(const Shot& shot, const std::vector<int
   Renderer renderer;
   SceneUpdateProbe probe;
   Frame previous;  // raw Embree refits from its positions to the next frame's (the scenes trace no ray here)
+  FrameBuilder builder(shot);  // the frames in order, as a render builds them
   for (const int f : frames) {
     FrameCost cost;
     cost.frame = f;
     FrameBuildTimes times;
-    Frame frame = withThreadCap(settings.threads, [&] { return buildFrame(shot, f, &times); });
+    Frame frame = withThreadCap(settings.threads, [&] { return builder.build(f, &times); });
     recordGeometry(times, cost);
     applyBenchSettings(settings, frame.settings);
     const SceneUpdateSplit split = probe.update(frame);

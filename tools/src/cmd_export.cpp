@@ -1,5 +1,5 @@
 // `lacrima export`: the geometry of a shot's frames (posed face, shapes, tears) as one glTF
-// binary or OBJ file per frame, exactly what buildFrame gives the renderer, for other tools.
+// binary or OBJ file per frame, exactly what the frame builder gives the renderer, for other tools.
 #include <fmt/format.h>
 
 #include <chrono>
@@ -8,6 +8,7 @@
 
 #include "commands.hpp"
 #include "frame_selection.hpp"
+#include "lacrima/scenes/frame_builder.hpp"
 #include "lacrima/scenes/shot.hpp"
 #include "memory_usage.hpp"
 #include "mesh_export.hpp"
@@ -30,8 +31,8 @@ std::string exportPattern(const ExportOptions& o, const Shot& shot, size_t frame
   return pattern;
 }
 
-void exportFrame(const ExportOptions& o, const Shot& shot, const std::string& pattern, int frameNumber) {
-  const ExportScene scene = collectExportScene(buildFrame(shot, frameNumber));
+void exportFrame(const ExportOptions& o, FrameBuilder& builder, const std::string& pattern, int frameNumber) {
+  const ExportScene scene = collectExportScene(builder.build(frameNumber));
   const std::filesystem::path path = expandFramePattern(pattern, frameNumber);
   if (o.format == "obj") {
     writeObj(path, scene);
@@ -50,8 +51,9 @@ int exportFrames(const ExportOptions& o) {
   const std::vector<int> frames = selectShotFrames(o.frames, shot);
   const std::string pattern = exportPattern(o, shot, frames.size());
   printShotWarnings(shot);
+  FrameBuilder builder(shot);  // the frames in order: each continues the simulations of the one before
   for (int frameNumber : frames) {
-    exportFrame(o, shot, pattern, frameNumber);
+    exportFrame(o, builder, pattern, frameNumber);
     releaseFreeHeapMemory();
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <optional>
 
 #include "commands.hpp"
@@ -19,6 +20,7 @@
 #include "lacrima/renderer/camera.hpp"
 #include "lacrima/renderer/image_output.hpp"
 #include "lacrima/renderer/render.hpp"
+#include "lacrima/scenes/frame_builder.hpp"
 #include "lacrima/scenes/shot.hpp"
 #include "output_check.hpp"
 #include "progress.hpp"
@@ -110,9 +112,10 @@ void reportMemory(int frameNumber, const char* stage) {
 enum class FrameOutcome { Written, Failed, NotWritten, Abandoned };
 
 // Renders and writes one frame. `seconds` receives the render time (also for a failed frame).
-FrameOutcome renderOneFrame(Renderer& renderer, const RenderOptions& o, const Shot& shot, const std::string& pattern,
+FrameOutcome renderOneFrame(Renderer& renderer, FrameBuilder& builder, const RenderOptions& o, const std::string& pattern,
                             int frameNumber, int index, int count, const SequenceProgress& sequence, double& seconds) {
-  Frame frame = buildFrame(shot, frameNumber);
+  const Shot& shot = builder.shot();
+  Frame frame = builder.build(frameNumber);
   if (o.reportMemory) reportMemory(frameNumber, " after buildFrame");
   ProgressReporter reporter(frameNumber, index, count, sequence, o.quiet);
   RenderStats stats;
@@ -261,6 +264,10 @@ int runRender(const RenderOptions& o) {
       checkOutputDirectories(outputDirectories(pattern, toRender),
                              estimatedFrameBytes(renderSettingsAt(shot, toRender.front()), o.preview), toRender.size());
     Renderer renderer;  // keeps the Embree scene from frame to frame (refit when the topology stays)
+    // Keeps the shot's simulations from frame to frame (each frame continues the one before).
+    std::unique_ptr<FrameBuilder> builder;
+    if (!toRender.empty())
+      builder = withThreadCap(shot.render.threads, [&] { return std::make_unique<FrameBuilder>(shot); });
     for (size_t i = 0; i < toRender.size() && !stopRequested(); ++i) {
       const int frameNumber = toRender[i];
       const int index = int(std::find(frames.begin(), frames.end(), frameNumber) - frames.begin());
@@ -268,7 +275,7 @@ int runRender(const RenderOptions& o) {
                                       tally.meanFrameSeconds()};
       double seconds = 0;
       const FrameOutcome outcome = withThreadCap(shot.render.threads, [&] {
-        return renderOneFrame(renderer, o, shot, pattern, frameNumber, index, int(frames.size()), sequence, seconds);
+        return renderOneFrame(renderer, *builder, o, pattern, frameNumber, index, int(frames.size()), sequence, seconds);
       });
       if (outcome == FrameOutcome::Abandoned) break;
       if (outcome == FrameOutcome::NotWritten) {

@@ -1,13 +1,15 @@
 #pragma once
-// Where buildFrame's time goes, stage by stage, for `lacrima bench`'s per-frame report. Separate
-// from shot.hpp so that the many files including it do not recompile when a stage is added.
+// Where FrameBuilder::build's time goes, stage by stage, for `lacrima bench`'s per-frame report.
+// Separate from frame_builder.hpp so that the files including it do not recompile when a stage is
+// added.
 #include "lacrima/scenes/shot_model.hpp"
 
 namespace lacrima {
 
-// Wall seconds (std::chrono::steady_clock) of each stage of one buildFrame call. The subdivision
-// of the skin under details and along liquid trails happens once per shot, in loadShot, so the
-// per-frame stages below pose, displace and simulate on the already refined meshes.
+// Wall seconds (std::chrono::steady_clock) of each stage of one FrameBuilder::build call. The
+// subdivision of the skin under details and along liquid trails happens once per shot, in
+// loadShot, so the per-frame stages below pose, displace and simulate on the already refined
+// meshes.
 struct FrameBuildTimes {
   double rigSeconds = 0.0;     // assets posed: blendshapes, skinning, normals (shutter open and close)
   double fleshSeconds = 0.0;   // simulated flesh: the simulation up to the frame, the skin moved with it
@@ -24,8 +26,5 @@ struct FrameBuildTimes {
   double otherSeconds = 0.0;
   double totalSeconds = 0.0;   // the whole call
 };
-
-// buildFrame (shot.hpp), recording its stages' times in `times` (when not null).
-Frame buildFrame(const Shot& shot, int frameNumber, FrameBuildTimes* times);
 
 }  // namespace lacrima

@@ -1,8 +1,8 @@
 #pragma once
-// The liquid state of a shot's liquid tears at a frame (ShotLiquidTear; docs/shot-format.md
-// "Liquid tears"), for buildFrame and for anyone who needs more than the meshes (the trail's film
-// thickness along the path, for a wet-skin material), and the flow path's course as it follows
-// the moving face.
+// The liquid tear's flow path as it follows the moving face (its courses) and the simulation that
+// runs along them (ShotLiquidTear; docs/shot-format.md "Liquid tears"). A FrameBuilder
+// (frame_builder.hpp) owns each tear's courses and run; its liquidTearStateAt serves anyone who
+// needs more than the meshes (the trail's film thickness along the path, for a wet-skin material).
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -69,11 +69,11 @@ struct LiquidTearCourse {
 };
 
 // The courses of one tear, one per integer frame from `firstFrame` on, traced on demand in frame
-// order and kept (a per-process cache: a sequence pays each course once; a frame built alone
-// traces the courses up to it and gets bitwise the same ones). A frame whose surface is the
-// previous frame's keeps that course (the same object); so does a frame whose re-traced path is
-// shorter than kMinLiquidCourseLength or than kMinLiquidCourseLengthRatio times the course it
-// would replace: the liquid stays on the last course that could carry it. (On the default shot
+// order and kept (a cache, owned by whoever builds frames: a sequence pays each course once; a
+// frame built alone traces the courses up to it and gets bitwise the same ones). A frame whose
+// surface is the previous frame's keeps that course (the same object); so does a frame whose
+// re-traced path is shorter than kMinLiquidCourseLength or than kMinLiquidCourseLengthRatio times
+// the course it would replace: the liquid stays on the last course that could carry it. (On the default shot
 // the blink squeezes a pit 2.6 mm below the inner eye corner for frames 35-37; re-routed there,
 // every bead on the cheek would be pulled back up to it, while a tear on the cheek follows the
 // cheek, not the lid.) Thread-safe.
@@ -125,12 +125,12 @@ int liquidTearCourseFrame(const Shot& shot, const ShotLiquidTear& tear, double s
 // The tear's simulation with its course following the pose: from t = 0 on the first course, each
 // step on the course of its nearest frame, the liquid carried across at each change
 // (LiquidTearSimulation::reroute with the course's FlowPathTransfer). A pure function of the
-// time reached: a run advanced to t in one go or in several gives bitwise the same state.
+// time reached: a run advanced to t in one go or in several gives bitwise the same state, so a
+// copy kept at one frame can be continued to the next.
 class LiquidTearRun {
  public:
-  LiquidTearRun(const Shot& shot, const ShotLiquidTear& tear);
-  // `kept` (a run of this tear) continued from where it stopped.
-  LiquidTearRun(const Shot& shot, const ShotLiquidTear& tear, const LiquidTearRun& kept);
+  // `courses`: the tear's (liquidTearCoursesOf); shot, tear and courses must outlive the run.
+  LiquidTearRun(const Shot& shot, const ShotLiquidTear& tear, const LiquidTearCourses& courses);
   // Whether it has stepped past the (fractional) frame, so cannot be advanced to it.
   bool hasPassed(double frame) const;
   // Simulates to the (fractional) frame, which may not be earlier than the last one (InputError).
@@ -145,38 +145,23 @@ class LiquidTearRun {
  private:
   void followCourse(int frame);
 
-  const Shot& shot_;
-  const ShotLiquidTear& tear_;
+  const Shot* shot_;
+  const ShotLiquidTear* tear_;
+  const LiquidTearCourses* courses_;
   std::shared_ptr<const LiquidTearCourse> course_;
   int courseFrame_ = 0;
   LiquidTearSimulation simulation_;
   int reroutes_ = 0;
 };
 
-// The latest run a process advanced for a tear (ShotLiquidTear::runKeeper), so that the next frame
-// continues it instead of simulating again from the tear's start. A run is a pure function of the
-// time it reached, so a continued run gives bitwise the state a new one would. Thread-safe.
-class LiquidTearRunKeeper {
- public:
-  // A run to advance to `frame`: the kept run continued when it was kept for this tear (the same
-  // object: a copy of the shot has its own runs) and has not passed the frame, else a new run.
-  LiquidTearRun runFor(const Shot& shot, const ShotLiquidTear& tear, double frame) const;
-  // Keeps a copy of `run`, of `tear`, in place of the kept one.
-  void keep(const ShotLiquidTear& tear, const LiquidTearRun& run);
+// New courses of a tear resolved by loadShot (on ShotLiquidTear::surface, from its source, with its
+// contact-angle regions and pinning), holding only the first course. InputError for a tear that
+// was not resolved.
+std::shared_ptr<LiquidTearCourses> liquidTearCoursesOf(const Shot& shot, const ShotLiquidTear& tear);
 
- private:
-  mutable std::mutex mutex_;
-  const ShotLiquidTear* tear_ = nullptr;
-  std::optional<LiquidTearRun> run_;
-};
-
-// The tear's liquid state at a (fractional) frame, simulated from its simulationStartFrame: beads,
-// falling drops and the film thickness at each sample of the course at that frame
-// (sampleFilmThickness[i] at liquidTearCourseAt(...)->path.points[i]). The same for a frame alone
-// or within a sequence.
-LiquidTearState liquidTearStateAt(const Shot& shot, const ShotLiquidTear& tear, double frame);
-// The course the state at that frame lies on (its arc lengths are this course's).
-std::shared_ptr<const LiquidTearCourse> liquidTearCourseAt(const Shot& shot, const ShotLiquidTear& tear, double frame);
+// The course the tear's state at a (fractional) frame lies on (its arc lengths are this course's).
+std::shared_ptr<const LiquidTearCourse> liquidTearCourseAt(const Shot& shot, const ShotLiquidTear& tear,
+                                                           const LiquidTearCourses& courses, double frame);
 
 // The point at arc length s along a course (clamped to it), in the triangles of its primitive,
 // and the piece it lies on (piece i runs from path.points[i] to path.arrival[i + 1]).

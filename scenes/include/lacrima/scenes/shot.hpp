@@ -72,8 +72,9 @@ Shot loadShot(const std::filesystem::path& path, const std::vector<PerformanceOv
 // a frame's number is given to its settings; buildFrame hands these to the renderer).
 RenderSettings renderSettingsAt(const Shot& shot, int frameNumber);
 
-// Builds the renderer input for one frame number (assets are loaded once and cached inside
-// the Shot's asset cache). Throws InputError for missing/corrupt assets.
+// The renderer input for one frame number, built alone: FrameBuilder(shot).build(frameNumber)
+// (frame_builder.hpp), so every simulation runs from its start (or a state filed on disk). A
+// sequence keeps one FrameBuilder instead. Throws InputError for a frame outside the shot.
 Frame buildFrame(const Shot& shot, int frameNumber);
 
 // The face pose of `shot.assets[assetIndex]` at a (fractional) frame: its blendshape weights from

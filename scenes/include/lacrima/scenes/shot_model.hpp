@@ -1,7 +1,8 @@
 #pragma once
 // The Shot: everything a shot file says, checked and in lacrima's units (metres, radians where
 // the renderer wants them, linear RGB), plus the external files it names, loaded once.
-// Plain data: loadShot() fills it, buildFrame() reads it. docs/shot-format.md describes the file.
+// Plain data: loadShot() fills it, a FrameBuilder (frame_builder.hpp) reads it and keeps the
+// simulations it advances from frame to frame. docs/shot-format.md describes the file.
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -249,14 +250,14 @@ struct ShotSheddingTear {
   double secondsAt(double frame, double fps) const { return (frame - startFrame) / fps; }
 };
 
-class LiquidTearCourses;    // liquid_tear.hpp
-class LiquidTearRunKeeper;  // liquid_tear.hpp
+class LiquidTearSurface;  // liquid_tear.hpp
 
 // A liquid tear (docs/shot-format.md "Liquid tears"): tear fluid welling at a skin point
 // and running down the flow path from it as beads that stick, slide, leave a drying film, hang and
 // drip (LiquidTearSimulation, liquid_tear.hpp). The path is traced again at every integer frame on a
-// smoothed copy of the part posed there (its courses, LiquidTearCourses in liquid_tear.hpp), kept in
-// surface coordinates, so its beads ride the posed skin and turn with the face. The liquid state at
+// smoothed copy of the part posed there (its courses, LiquidTearCourses in liquid_tear.hpp, which a
+// FrameBuilder keeps), kept in surface coordinates, so its beads ride the posed skin and turn with
+// the face. The liquid state at
 // a frame is simulated from simulationStartFrame (t = 0: the shot's first frame, or the welling
 // start when that is earlier, so a shot can begin mid-cry) to t = (frame - simulationStartFrame) /
 // fps seconds, each step on the course of its nearest frame: a pure function of the frame.
@@ -314,12 +315,10 @@ struct ShotLiquidTear {
   // Per vertex of the source's primitive, the factor there (liquid_tear_pinning.hpp); set by
   // loadShot when pinningFactor > 1, else empty.
   std::vector<float> pinning;
-  // The flow path's courses as the face moves, one per integer frame from the simulation's start
-  // (liquid_tear.hpp); set by loadShot. `path` and `input.path` are its course at frameStart.
-  std::shared_ptr<const LiquidTearCourses> courses;
-  // The run the last frame built advanced (liquid_tear.hpp), for the next frame to continue; set
-  // by loadShot.
-  std::shared_ptr<LiquidTearRunKeeper> runKeeper;
+  // The surface the flow path is traced on at each frame (the source's primitive posed, and its
+  // smoothed copy; liquid_tear.hpp); set by loadShot. `path` and `input.path` are the course traced
+  // on it at frameStart.
+  std::shared_ptr<const LiquidTearSurface> surface;
 };
 
 // Animated skin detail (Lin & Cheng 2013 section 3; docs/shot-format.md "details"): a sum of basic
@@ -375,11 +374,6 @@ struct ShotEye {
   std::shared_ptr<const EyeModel> model;
 };
 
-namespace shotfile {
-class FleshRun;  // scenes/src/flesh_frame.hpp: a flesh's simulation, advanced as frames are built
-class SphRun;  // scenes/src/sph_liquid.hpp: an SPH liquid's simulation, advanced as frames are built
-}
-
 // A sphere of a part's surface: all of the part's triangles whose corners lie within `radius` of
 // the centre, on the first frame's pose (the skin a flesh is simulated under, the stretch of a face
 // an SPH liquid collides with).
@@ -424,14 +418,18 @@ struct ShotFlesh {
   int substeps = 4;               // simulation steps per frame
   std::string pointer;            // "/flesh/0", for problems found resolving it
   // Resolved by loadShot (scenes/src/flesh_frame.hpp): the primitive of the regions' centres, the
-  // skin patch in it (positions of the shot's first frame), the volume under it, the simulation.
+  // skin patch in it (positions of the shot's first frame), the volume under it (null: not
+  // resolved, so not simulated).
   size_t primitive = 0;
   std::shared_ptr<const flesh::SkinPatch> patch;  // of the unrefined primitive, vertices welded by position
   std::shared_ptr<const flesh::FleshVolume> tetVolume;
   // Per vertex of the primitive as rendered (after refinement): its place in the volume (tet -1:
   // outside, not moved by the flesh).
   std::vector<flesh::TetEmbedding> skinEmbedding;
-  std::shared_ptr<shotfile::FleshRun> run;
+  // The asset as loaded, before any refinement of its skin: the one the simulation poses (the
+  // volume's boundary is its tessellation).
+  std::shared_ptr<const ShotAsset> unrefinedAsset;
+  // Its simulation is a FrameBuilder's (frame_builder.hpp): advanced as frames are built.
 };
 
 // SPH liquid (docs/shot-format.md "sph"): fluid released as drops and blocks, simulated by DFSPH
@@ -468,8 +466,7 @@ struct ShotSph {
   double voxelsPerRadius = 1.5;  // surfacing resolution (sph::SurfaceParams)
   int smoothing = 32;  // mean-curvature steps: a drop a dozen particles across needs many to read as smooth water
   std::string pointer;  // "/sph/0"
-  // Made by loadShot (scenes/src/sph_liquid.hpp): the simulation, advanced as frames are built.
-  std::shared_ptr<shotfile::SphRun> run;
+  // Its simulation is a FrameBuilder's (frame_builder.hpp): advanced as frames are built.
 };
 
 struct Shot {
