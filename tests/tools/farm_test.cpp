@@ -158,6 +158,19 @@ TEST(FarmCommand, DryRunWritesTheJobAndSubmitsNothing) {
   EXPECT_TRUE(contains(status.output, "frames 1-5 missing: only a --dry-run job was written")) << status.output;
 }
 
+// The overrides are applied right after loading: a --region outside the shot's 32x18 frame is
+// refused before any frame is checked or any job written, not by every task on the farm.
+TEST(FarmCommand, ARegionOutsideTheFrameIsRefusedBeforeAJobIsWritten) {
+  const fs::path dir = test::testDirectory("farm_region", /*fresh=*/true);
+  const fs::path shot = writeSphereShot(dir, 3);
+  const auto run = lacrima({"farm", "submit", shot.string(), "--region", "30,0,4,4", "--dry-run"});
+  EXPECT_EQ(run.exitStatus, 2) << run.output;
+  EXPECT_TRUE(contains(run.output, "--region 30,0,4,4: the region does not lie within the 32x18 frame (it ends at "
+                                   "pixel (33, 3))"))
+      << run.output;
+  EXPECT_FALSE(fs::exists(dir / "out" / "spheres.farm")) << "no job written";
+}
+
 TEST(FarmCommand, NothingIsSubmittedWhenEveryFrameIsComplete) {
   const fs::path dir = test::testDirectory("farm", /*fresh=*/true);
   const fs::path shot = writeSphereShot(dir, 2);
