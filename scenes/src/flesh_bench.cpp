@@ -4,7 +4,7 @@
 
 #include <chrono>
 
-#include "flesh_frame.hpp"
+#include "frame/flesh_frame.hpp"
 #include "lacrima/flesh/flesh_volume_cache.hpp"
 #include "lacrima/base/error.hpp"
 

@@ -10,7 +10,7 @@
 #include "lacrima/mesh/surface_point.hpp"
 #include "lacrima/scenes/frame_builder.hpp"
 #include "lacrima/scenes/liquid_tear.hpp"
-#include "liquid_tear_film.hpp"  // scenes/src: the film and its definition evaluated directly
+#include "frame/liquid_tear_film.hpp"  // scenes/src: the film and its definition evaluated directly
 #include "shot_support.hpp"
 
 namespace lacrima {

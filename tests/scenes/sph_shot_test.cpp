@@ -1,4 +1,4 @@
-// The shot format's SPH liquids (docs/shot-format.md "sph", scenes/src/sph_liquid.hpp): the
+// The shot format's SPH liquids (docs/shot-format.md "sph", scenes/src/frame/sph_liquid.hpp): the
 // surfaced liquid in the frame (closed, in its material, blurred by the particles' velocities, at
 // rest on its collider), any frame built alone equal to the same frame built in a sequence or
 // after a later one, and bad input reported at its JSON path.

@@ -1,0 +1,104 @@
+// loadShot: a shot file (docs/shot-format.md) in three phases, each of which collects every problem
+// with its JSON pointer and text position before the next one starts:
+//   1. parse: the JSON text (duplicate keys reported), with the --performance takes played on their
+//      assets (the JSON rewritten: their own animation members give way to a "performance");
+//   2. read: every section read and checked into a Shot, the files it names opened once
+//      (ShotReader, shot_reader.hpp: one shot_reader_<section>.cpp per section);
+//   3. resolve: what the shot places on its assets' surfaces found on the posed assets (resolveShot,
+//      shot_resolve.hpp).
+#include <fmt/format.h>
+
+#include "read/json_source.hpp"
+#include "lacrima/scenes/shot.hpp"
+#include "read/shot_checker.hpp"
+#include "read/shot_reader.hpp"
+#include "resolve/shot_resolve.hpp"
+#include "read/suggest.hpp"
+#include "read/text_file.hpp"
+
+namespace lacrima {
+
+namespace {
+
+namespace fs = std::filesystem;
+using shotfile::Anchor;
+using shotfile::Checker;
+using shotfile::Json;
+
+std::shared_ptr<const GltfAsset> loadGltfAssetFile(const fs::path& file) {
+  return std::make_shared<const GltfAsset>(loadGltfAsset(file));
+}
+
+// The asset's name as the shot reader gives it: "name", else the file's stem.
+std::string writtenAssetName(const Json& asset) {
+  if (const auto name = asset.find("name"); name != asset.end() && name->is_string()) return name->get<std::string>();
+  if (const auto file = asset.find("file"); file != asset.end() && file->is_string())
+    return fs::path(file->get<std::string>()).stem().string();
+  return "";
+}
+
+// Plays each take on its asset: the asset's own animation members give way to a "performance".
+void applyPerformanceOverrides(Json& root, const std::vector<PerformanceOverride>& performances, Checker& checker) {
+  for (const PerformanceOverride& take : performances) {
+    std::vector<std::string> names;
+    Json* target = nullptr;
+    if (root.is_object() && root.contains("assets") && root["assets"].is_array())
+      for (Json& asset : root["assets"]) {
+        if (!asset.is_object()) continue;
+        names.push_back(writtenAssetName(asset));
+        if (names.back() == take.asset && !target) target = &asset;
+      }
+    if (!target) {
+      checker.error("/assets", Anchor::Key,
+                    fmt::format("no asset named '{}' to play the performance {} on{}", take.asset, take.file.string(),
+                                names.empty() ? "" : " (the shot's assets: " + shotfile::quotedList(names) + ")"));
+      continue;
+    }
+    for (const char* member : {"blendshapes", "controls", "joints", "performance"}) target->erase(member);
+    // A take's frames are the shot's unless told otherwise (a shot's own "performance" defaults to
+    // 30 fps, a capture rig's rate).
+    const Json* frames = root.contains("frames") ? &root["frames"] : nullptr;
+    const bool shotFps = frames && frames->is_object() && frames->contains("fps") && (*frames)["fps"].is_number();
+    Json performance = {{"file", fs::absolute(take.file).lexically_normal().string()},
+                        {"fps", take.fps ? *take.fps : shotFps ? (*frames)["fps"].get<double>() : Shot{}.fps}};
+    (*target)["performance"] = std::move(performance);
+  }
+}
+
+void reportDuplicateKeys(const shotfile::JsonSource& source, Checker& checker) {
+  for (const shotfile::DuplicateKey& d : source.duplicateKeys()) {
+    const shotfile::TextPosition first = source.positionOf(d.firstKeyOffset);
+    const std::string key = d.pointer.substr(d.pointer.rfind('/') + 1);
+    checker.error(d.pointer, Anchor::Key,
+                  fmt::format("duplicate key '{}' (first given at line {}, column {})", key, first.line, first.column));
+  }
+}
+
+Shot loadShotWith(const fs::path& path, const GltfAssetLoader& loadAsset,
+                  const std::vector<PerformanceOverride>& performances) {
+  Shot shot;
+  shot.path = path;
+  shotfile::ParsedJsonFile parsed = shotfile::readJsonFile(path, "the shot file");
+  Checker checker(path, parsed.source);
+  reportDuplicateKeys(parsed.source, checker);
+  applyPerformanceOverrides(parsed.json, performances, checker);
+  shotfile::ShotReader(checker, shot, loadAsset).read(parsed.json);
+  if (checker.errorCount() > 0) throw ShotError(checker.diagnostics());
+  shotfile::resolveShot(shot, checker);
+  if (checker.errorCount() > 0) throw ShotError(checker.diagnostics());
+  return shot;
+}
+
+}  // namespace
+
+Shot loadShot(const std::filesystem::path& path) { return loadShot(path, loadGltfAssetFile); }
+
+Shot loadShot(const std::filesystem::path& path, const GltfAssetLoader& loadAsset) {
+  return loadShotWith(path, loadAsset, {});
+}
+
+Shot loadShot(const std::filesystem::path& path, const std::vector<PerformanceOverride>& performances) {
+  return loadShotWith(path, loadGltfAssetFile, performances);
+}
+
+}  // namespace lacrima

@@ -1,0 +1,178 @@
+#pragma once
+// The reading phase of loadShot (shot_loader.cpp): ShotReader reads a parsed shot file section by
+// section into a Shot, checking every value (each problem goes to the Checker with its JSON pointer,
+// and reading goes on), and opens the files the shot names as it reads them (glTF assets, texture
+// images, the environment map), so that the names used in them (parts, blendshapes, cameras) are
+// checked too. What needs the assets posed (surface points, flow paths, eyes, flesh, SPH colliders)
+// is resolved after it (shot_resolve.hpp).
+// One file per section of the shot file, shot_reader_<section>.cpp; what several sections read alike
+// is in shot_reader.cpp.
+#include <fmt/format.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "read/json_source.hpp"
+#include "lacrima/scenes/shot.hpp"
+#include "read/shot_checker.hpp"
+#include "shot_geometry.hpp"  // RectangleEdges
+
+namespace lacrima::shotfile {
+
+// The index in `names` of the string at `key`; nothing when the key is absent, or, with an error
+// naming the key and the closest name (or all of them), when it is none of them:
+// "unknown <what> 'x'; did you mean 'y'?".
+std::optional<size_t> readChoice(ObjectReader& o, const char* key, const std::vector<std::string>& names,
+                                 const char* what);
+
+// Adds `s` to `list` unless it is empty or already there.
+void appendUnique(std::vector<std::string>& list, const std::string& s);
+
+// The names a shot can use for a primitive: its part, its primitive name, its material name.
+std::vector<std::string> primitiveNames(const GltfPrimitive& p);
+
+class ShotReader {
+ public:
+  ShotReader(Checker& c, Shot& shot, const GltfAssetLoader& loadAsset)
+      : c_(c), shot_(shot), baseDir_(shot.path.parent_path()), loadAsset_(loadAsset) {}
+
+  // Reads the root object: every section given, in the order in which they name each other.
+  void read(const Json& root);
+
+ private:
+  Checker& c_;
+  Shot& shot_;
+  std::filesystem::path baseDir_;
+  const GltfAssetLoader& loadAsset_;
+
+  // Reads a required section; returns what the reader returns (false when it is missing).
+  template <typename F>
+  bool readSection(ObjectReader& o, const std::string& key, const std::string& expectation, F&& reader) {
+    const Json* v = o.find(key);
+    if (!v) {
+      o.missing(key, expectation);
+      return false;
+    }
+    return reader(*v);
+  }
+
+  template <typename F>
+  void readArray(const Json& v, const std::string& pointer, const char* what, F&& reader) {
+    if (!v.is_array()) {
+      c_.error(pointer, Anchor::Value, fmt::format("expected an array of {}, found {}", what, describeValue(v)));
+      return;
+    }
+    for (size_t i = 0; i < v.size(); ++i) reader(v[i], childPointer(pointer, i));
+  }
+
+  // ---- shot_reader.cpp: what several sections read alike -----------------------------------
+
+  std::filesystem::path resolve(const std::string& value) const;
+  bool checkExists(const std::string& pointer, const std::string& written, const std::filesystem::path& resolved);
+  std::optional<std::string> readType(const Json& v, const std::string& pointer, const std::vector<std::string>& types,
+                                      const char* what);
+  std::vector<std::string> materialNames() const;
+  int materialReference(const Json& v, const std::string& pointer);
+  bool readMaterialMember(ObjectReader& o, std::string& name, uint32_t& id);
+  bool readNamedMaterial(ObjectReader& o, const std::string& key, uint32_t& id);
+  std::optional<size_t> readAssetPart(ObjectReader& o, std::string& partOut);
+  bool checkPart(ObjectReader& o, const ShotAsset& asset, const std::string& part);
+  void readAnchor(ObjectReader& o, const std::string& key, size_t asset, const std::string& part,
+                  ShotSurfaceAnchor& anchor);
+  std::optional<AnimatedVec3> readAnimatedMember(ObjectReader& o, const std::string& key);
+  std::optional<Mat3> readRotation(const Json& v, const std::string& pointer);
+  ShotTransform readTransform(const Json& v, const std::string& pointer);
+  void readSkinRegions(ObjectReader& o, size_t asset, const std::string& part, std::vector<ShotSkinRegion>& regions);
+
+  // ---- shot_reader_render.cpp: "frames", "output", "render" --------------------------------
+
+  bool readFrames(const Json& v);
+  void readOutput(const Json& v, bool framesOk);
+  bool readRender(const Json& v);
+  void readAovs(ObjectReader& render, RenderSettings& s);
+  void readAdaptive(ObjectReader& render, RenderSettings& s);
+  void readBounces(ObjectReader& render, RenderSettings& s);
+  void readSampler(ObjectReader& o, RenderSettings& s);
+  void readFilter(ObjectReader& render, RenderSettings& s);
+  void readCaustics(ObjectReader& o, RenderSettings& s);
+
+  // ---- shot_reader_materials.cpp: "materials" ----------------------------------------------
+
+  void readMaterials(const Json& v);
+  void readMaterial(const Json& v, const std::string& pointer, Material& m);
+  void readSubsurfaceMethod(ObjectReader& o, SubsurfaceParams& subsurface);
+  void readTextures(ObjectReader& material, const std::vector<std::string>& roles, MaterialTextures& textures);
+  std::optional<IrisPatternParams> readAlbedoPattern(const Json& v, const std::string& pointer);
+  std::optional<TextureMap> readTextureMap(const Json& v, const std::string& pointer, bool colour);
+  bool checkImageReadable(const std::string& pointer, const std::string& written,
+                          const std::filesystem::path& resolved);
+  void warnTexturesWithoutUvs(const std::string& pointer, uint32_t materialId, const std::string& what);
+
+  // ---- shot_reader_assets.cpp: "assets" ----------------------------------------------------
+
+  void readAsset(const Json& v, const std::string& pointer);
+  void assignPrimitiveMaterials(ShotAsset& asset);
+  void warnTexturedPrimitivesWithoutUvs(const ShotAsset& asset, const std::string& pointer);
+
+  // ---- shot_reader_camera.cpp: "camera" ----------------------------------------------------
+
+  bool readCamera(const Json& v);
+  static void deriveCamera(ShotCamera& cam, const ShotAsset* asset, const GltfCamera* gltfCamera);
+  void readShutter(const Json& v, const std::string& pointer);
+
+  // ---- shot_reader_environment.cpp: "environment" ------------------------------------------
+
+  void readEnvironment(const Json& v);
+
+  // ---- shot_reader_lights.cpp: "lights" ----------------------------------------------------
+
+  void readLight(const Json& v, const std::string& pointer);
+
+  // ---- shot_reader_shapes.cpp: "shapes" ----------------------------------------------------
+
+  std::optional<RectangleEdges> readRectangle(ObjectReader& o, const Vec3* center);
+  void readShape(const Json& v, const std::string& pointer);
+  void readAttachment(const Json& v, const std::string& pointer, ShotShape& shape);
+
+  // ---- shot_reader_tears.cpp: "tears" (dripping, shedding) ---------------------------------
+
+  void readTear(const Json& v, const std::string& pointer);
+  void readTearPath(ObjectReader& o, std::vector<Vec3>& path);
+  void readSheddingTear(const Json& v, const std::string& pointer);
+
+  // ---- shot_reader_liquid_tears.cpp: "tears" of type "liquid" ------------------------------
+
+  void readLiquidTear(const Json& v, const std::string& pointer);
+  void readWellingTimes(ObjectReader& o, ShotLiquidTear& tear);
+  void readWellingRate(ObjectReader& o, ShotLiquidTear& tear);
+  void readPinning(ObjectReader& o, ShotLiquidTear& tear);
+  void readRivulet(ObjectReader& o, LiquidTearParams& p);
+  void readContactAngles(ObjectReader& o, ContactAngleHysteresis& angles);
+  void readContactAngleRegions(ObjectReader& o, size_t asset, ShotLiquidTear& tear);
+
+  // ---- shot_reader_details.cpp: "details" --------------------------------------------------
+
+  void readDetail(const Json& v, const std::string& pointer);
+  std::optional<BasicDetailPattern> readPattern(ObjectReader& o);
+  void readSubdivision(const Json& v, const std::string& pointer, ShotDetail& detail);
+
+  // ---- shot_reader_eyes.cpp: "eyes" --------------------------------------------------------
+
+  void readEye(const Json& v, const std::string& pointer);
+  void readLashes(const Json& v, const std::string& pointer, size_t asset, ShotEye& eye);
+
+  // ---- shot_reader_flesh.cpp: "flesh" ------------------------------------------------------
+
+  void readFlesh(const Json& v, const std::string& pointer);
+
+  // ---- shot_reader_sph.cpp: "sph" ----------------------------------------------------------
+
+  void readSph(const Json& v, const std::string& pointer);
+  void readSphRelease(const Json& v, const std::string& pointer, bool drop, ShotSph& liquid);
+  void readSphCollider(const Json& v, const std::string& pointer, ShotSph& liquid);
+};
+
+}  // namespace lacrima::shotfile
