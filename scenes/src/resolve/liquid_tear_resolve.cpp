@@ -193,13 +193,11 @@ std::shared_ptr<const LiquidTearSurface> posedTearSurface(const ShotAsset& asset
 }
 
 std::shared_ptr<const LiquidTearCourses> liquidTearCourses(const Shot& shot, const ShotLiquidTear& tear,
-                                                           const ShotSurfacePoint& source, const std::vector<Vec3>* carried,
-                                                           std::vector<LiquidCourseRegion> regions,
-                                                           std::vector<float> pinning) {
+                                                           const ShotSurfacePoint& source, const std::vector<Vec3>* carried) {
   return std::make_shared<const LiquidTearCourses>(
       posedTearSurface(shot.assets[tear.asset], source.primitive, shot.frameStart, carried),
       SurfacePoint{source.triangle, source.barycentric}, tear.gravity, tear.maxLength,
-      liquidTearCourseFrame(shot, tear, 0.0), std::move(regions), std::move(pinning));
+      liquidTearCourseFrame(shot, tear, 0.0));
 }
 
 TriangleMesh liquidPathSmoothedSkin(const TriangleMesh& skin, const std::vector<Vec3>* carried) {

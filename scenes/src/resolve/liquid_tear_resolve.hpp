@@ -55,17 +55,16 @@ FlowPath traceLiquidPath(const TriangleMesh& skin, const TriangleMesh& smoothed,
 std::shared_ptr<const LiquidTearSurface> posedTearSurface(const ShotAsset& asset, size_t primitive, int referenceFrame,
                                                           const std::vector<Vec3>* carried);
 // The tear's courses from the simulation's first step on, from `source` over the asset as it is now
-// (posedTearSurface with the shot's first frame as reference; `carried` as above), with the
-// contact-angle `regions` on the source's primitive (none: every sample has the tear's angles) and
-// the skin's `pinning` per vertex of that primitive (none: 1 everywhere).
+// (posedTearSurface with the shot's first frame as reference; `carried` as above), before the tear
+// is resolved: only their paths (the skin refinement along them), so every sample has the tear's
+// own contact angles and no pinning. A resolved tear's courses: liquidTearCoursesOf.
 std::shared_ptr<const LiquidTearCourses> liquidTearCourses(const Shot& shot, const ShotLiquidTear& tear,
-                                                           const ShotSurfacePoint& source, const std::vector<Vec3>* carried,
-                                                           std::vector<LiquidCourseRegion> regions = {},
-                                                           std::vector<float> pinning = {});
+                                                           const ShotSurfacePoint& source, const std::vector<Vec3>* carried);
 
-// For every liquid tear: the source resolved on the first frame's skin, its courses set up (the
-// course the simulation starts on traced and checked, the first frame's one kept as tear.path)
-// and the simulation input built and checked. Returns the problems found (a path too short to carry a bead,
+// For every liquid tear: the source resolved on the first frame's skin, the surface its courses
+// are traced on set (tear.surface; the courses themselves are a FrameBuilder's), the course the
+// simulation starts on traced and checked, the first frame's one kept as tear.path, and the
+// simulation input built and checked. Returns the problems found (a path too short to carry a bead,
 // parameters the simulation refuses).
 std::vector<LiquidTearProblem> resolveLiquidTears(Shot& shot);
 
