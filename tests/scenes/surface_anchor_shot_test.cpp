@@ -10,6 +10,7 @@ namespace lacrima {
 namespace surface_anchor_shot_test {
 
 using test::expectSingleError;
+using test::shotErrorOf;
 using test::writeShot;
 
 
@@ -92,6 +93,33 @@ TEST(SurfaceAnchor, BadAnchorsGetExactMessages) {
                       "extent": [0.01, 0.008], "scale": 0.0005, "startFrame": 1, "endFrame": 3}])"),
                     "/details/0: missing required key 'center' (a point [x, y, z] near the skin, {\"landmark\": i}, "
                     "{\"vertex\": i} or {\"uv\": [u, v]})");
+}
+
+TEST(SurfaceAnchor, AnIndexWrittenAsAWholeDecimalIsTheSameAnchor) {
+  // The index is taken when the shot is read and checked once the asset is loaded: both must read
+  // 39.0 as 39, as the checked reader of integers does.
+  const Shot whole = loadShot(writeShot("landmark_39.json", detailAt(R"({"landmark": 39})")));
+  const Shot decimal = loadShot(writeShot("landmark_39.0.json", detailAt(R"({"landmark": 39.0})")));
+  EXPECT_EQ(decimal.details.at(0).center.index, 39u);
+  EXPECT_EQ(decimal.details.at(0).surfacePoint.reference, whole.details.at(0).surfacePoint.reference);
+  const uint32_t vertex = landmark39(whole).vertex;
+  const Shot byVertex =
+      loadShot(writeShot("vertex_decimal.json", detailAt(fmt::format(R"({{"vertex": {}.0}})", vertex))));
+  EXPECT_EQ(byVertex.details.at(0).surfacePoint.reference, whole.details.at(0).surfacePoint.reference);
+}
+
+TEST(SurfaceAnchor, AnAnchorOnAnUnknownPartIsStillCheckedAsWritten) {
+  // The part is checked against the loaded asset; the anchor's own form is checked whatever the part.
+  std::vector<Diagnostic> diagnostics;
+  shotErrorOf(writeShot("unknown_part_bad_anchor.json", detailAt(R"({"landmark": 39, "vertex": 1})", "M_Fase")),
+              &diagnostics);
+  ASSERT_EQ(diagnostics.size(), 2u);
+  EXPECT_EQ(diagnostics[0].jsonPath + ": " + test::firstLineOf(diagnostics[0].message),
+            "/details/0/part: asset 'face' has no part 'M_Fase'; did you mean 'M_Face'?");
+  EXPECT_EQ(diagnostics[1].jsonPath, "/details/0/center");
+  // A well-formed anchor on an unknown part is not checked against the mesh: one problem, the part.
+  expectSingleError("unknown_part.json", detailAt(R"({"landmark": 39})", "M_Fase"),
+                    "/details/0/part: asset 'face' has no part 'M_Fase'; did you mean 'M_Face'?");
 }
 
 }  // namespace surface_anchor_shot_test

@@ -49,12 +49,16 @@ Diagnostic Checker::warning(const std::string& pointer, Anchor anchor, const std
   return d;
 }
 
-std::vector<Diagnostic> Checker::diagnostics() const {
-  std::vector<Diagnostic> sorted = diagnostics_;
-  std::stable_sort(sorted.begin(), sorted.end(), [](const Diagnostic& a, const Diagnostic& b) {
+void sortByPosition(std::vector<Diagnostic>& diagnostics) {
+  std::stable_sort(diagnostics.begin(), diagnostics.end(), [](const Diagnostic& a, const Diagnostic& b) {
     const int la = a.line > 0 ? a.line : INT_MAX, lb = b.line > 0 ? b.line : INT_MAX;
     return la != lb ? la < lb : a.column < b.column;
   });
+}
+
+std::vector<Diagnostic> Checker::diagnostics() const {
+  std::vector<Diagnostic> sorted = diagnostics_;
+  sortByPosition(sorted);
   return sorted;
 }
 

@@ -36,6 +36,10 @@ class Checker {
   std::vector<Diagnostic> diagnostics_;
 };
 
+// Sorted by position in the file (problems without a position last), then by discovery: the order
+// in which problems and warnings are shown, whichever phase of loadShot found them.
+void sortByPosition(std::vector<Diagnostic>& diagnostics);
+
 // A closed, open or half-open interval of accepted numbers.
 struct Range {
   double lo = -std::numeric_limits<double>::infinity();

@@ -44,6 +44,14 @@ void appendUnique(std::vector<std::string>& list, const std::string& s) {
 
 std::vector<std::string> primitiveNames(const GltfPrimitive& p) { return {p.part, p.name, p.material.name}; }
 
+void warnTexturesWithoutUvs(Checker& c, Shot& shot, const std::string& pointer, uint32_t materialId,
+                            const std::string& what) {
+  if (materialId >= shot.materials.size() || !shot.materials[materialId].textures.any()) return;
+  shot.warnings.push_back(c.warning(pointer, Anchor::Value,
+                                    fmt::format("{} has no uvs: the textures of material '{}' are skipped there",
+                                                what, shot.materials[materialId].name)));
+}
+
 // ---- ShotReader -------------------------------------------------------------------------------
 
 void ShotReader::read(const Json& root) {
@@ -69,8 +77,8 @@ void ShotReader::read(const Json& root) {
     o.missing("output", "a path pattern such as \"renders/shot.####.exr\"");
   if (const Json* v = o.find("colorConfig")) {
     if (const auto file = readString(c_, *v, "/colorConfig")) {
-      shot_.ocioConfig = resolve(*file);
-      checkExists("/colorConfig", *file, shot_.ocioConfig);
+      uses_.colorConfig = fileUse("/colorConfig", *file);
+      shot_.ocioConfig = uses_.colorConfig->resolved;
     }
   }
   readSection(o, "render", "an object with 'width', 'height' and 'spp'",
@@ -109,16 +117,8 @@ std::filesystem::path ShotReader::resolve(const std::string& value) const {
   return (p.is_absolute() ? p : baseDir_ / p).lexically_normal();
 }
 
-bool ShotReader::checkExists(const std::string& pointer, const std::string& written,
-                             const std::filesystem::path& resolved) {
-  std::error_code ec;
-  if (std::filesystem::is_regular_file(resolved, ec)) return true;
-  const std::string what = std::filesystem::exists(resolved, ec) ? "not a regular file" : "file not found";
-  c_.error(pointer, Anchor::Value,
-           written == resolved.string()
-               ? fmt::format("{}: '{}'", what, written)
-               : fmt::format("{}: '{}' (resolved to '{}')", what, written, resolved.string()));
-  return false;
+FileUse ShotReader::fileUse(const std::string& pointer, const std::string& written) const {
+  return FileUse{pointer, written, resolve(written)};
 }
 
 // Reads "type" of an object whose allowed keys depend on it. Reports a non-object value, a
@@ -214,21 +214,14 @@ std::optional<size_t> ShotReader::readAssetPart(ObjectReader& o, std::string& pa
                                  suggestionOrList(*assetName, assetNames, "assets", "the shot has no assets")));
     return std::nullopt;
   }
-  const ShotAsset& asset = shot_.assets[*index];
-  if (!asset.gltf) return std::nullopt;  // its loading error is reported
-  if (!checkPart(o, asset, *part)) return std::nullopt;
+  usePart(o, *index, *part);
   partOut = *part;
   return index;
 }
 
-// Whether the loaded `asset` has a part named `part` (the value of o's "part"); reported when not.
-bool ShotReader::checkPart(ObjectReader& o, const ShotAsset& asset, const std::string& part) {
-  std::vector<std::string> parts;
-  for (const GltfPrimitive& p : asset.gltf->primitives) appendUnique(parts, p.part);
-  if (std::find(parts.begin(), parts.end(), part) != parts.end()) return true;
-  o.error("part", fmt::format("asset '{}' has no part '{}'{}", asset.name, part,
-                              suggestionOrList(part, parts, "its parts", "it has no primitives")));
-  return false;
+// The value of o's "part" names a part of the asset: checked once the asset is loaded.
+void ShotReader::usePart(ObjectReader& o, size_t asset, const std::string& part) {
+  uses_.parts.push_back(PartUse{asset, part, o.at("part")});
 }
 
 // A required surface anchor member (see surface_anchor.hpp).
@@ -239,7 +232,11 @@ void ShotReader::readAnchor(ObjectReader& o, const std::string& key, size_t asse
     o.missing(key, "a point [x, y, z] near the skin, {\"landmark\": i}, {\"vertex\": i} or {\"uv\": [u, v]}");
     return;
   }
-  if (auto x = readSurfaceAnchor(c_, *v, o.at(key), shot_.assets[asset], part)) anchor = *x;
+  const auto read = readSurfaceAnchor(c_, *v, o.at(key));
+  if (!read) return;
+  anchor = *read;
+  if (anchor.kind != ShotSurfaceAnchor::Kind::Point)  // its index or uv is checked against the part's mesh
+    uses_.anchors.push_back(SurfaceAnchorUse{asset, part, o.at(key), v});
 }
 
 // A required [x, y, z] member that may be keyed.

@@ -1,10 +1,11 @@
 #pragma once
 // The reading phase of loadShot (shot_loader.cpp): ShotReader reads a parsed shot file section by
 // section into a Shot, checking every value (each problem goes to the Checker with its JSON pointer,
-// and reading goes on), and opens the files the shot names as it reads them (glTF assets, texture
-// images, the environment map), so that the names used in them (parts, blendshapes, cameras) are
-// checked too. What needs the assets posed (surface points, flow paths, eyes, flesh, SPH colliders)
-// is resolved after it (shot_resolve.hpp).
+// and reading goes on). It opens no file: what the shot names inside its files (the files themselves,
+// parts, blendshapes, landmarks, glTF cameras) is recorded in ShotUses (shot_uses.hpp) for the
+// loading and binding phases (load/shot_files.hpp, load/shot_binding.hpp). What needs the assets
+// posed (surface points, flow paths, eyes, flesh, SPH colliders) is resolved after those
+// (shot_resolve.hpp).
 // One file per section of the shot file, shot_reader_<section>.cpp; what several sections read alike
 // is in shot_reader.cpp.
 #include <fmt/format.h>
@@ -18,6 +19,7 @@
 #include "read/json_source.hpp"
 #include "lacrima/scenes/shot.hpp"
 #include "read/shot_checker.hpp"
+#include "read/shot_uses.hpp"
 #include "shot_geometry.hpp"  // RectangleEdges
 
 namespace lacrima::shotfile {
@@ -34,10 +36,15 @@ void appendUnique(std::vector<std::string>& list, const std::string& s);
 // The names a shot can use for a primitive: its part, its primitive name, its material name.
 std::vector<std::string> primitiveNames(const GltfPrimitive& p);
 
+// A textured material on a mesh without uvs shades with its constants there: a warning, once per
+// mesh (`what` names it).
+void warnTexturesWithoutUvs(Checker& c, Shot& shot, const std::string& pointer, uint32_t materialId,
+                            const std::string& what);
+
 class ShotReader {
  public:
-  ShotReader(Checker& c, Shot& shot, const GltfAssetLoader& loadAsset)
-      : c_(c), shot_(shot), baseDir_(shot.path.parent_path()), loadAsset_(loadAsset) {}
+  ShotReader(Checker& c, Shot& shot, ShotUses& uses)
+      : c_(c), shot_(shot), uses_(uses), baseDir_(shot.path.parent_path()) {}
 
   // Reads the root object: every section given, in the order in which they name each other.
   void read(const Json& root);
@@ -45,8 +52,8 @@ class ShotReader {
  private:
   Checker& c_;
   Shot& shot_;
+  ShotUses& uses_;
   std::filesystem::path baseDir_;
-  const GltfAssetLoader& loadAsset_;
 
   // Reads a required section; returns what the reader returns (false when it is missing).
   template <typename F>
@@ -71,7 +78,7 @@ class ShotReader {
   // ---- shot_reader.cpp: what several sections read alike -----------------------------------
 
   std::filesystem::path resolve(const std::string& value) const;
-  bool checkExists(const std::string& pointer, const std::string& written, const std::filesystem::path& resolved);
+  FileUse fileUse(const std::string& pointer, const std::string& written) const;
   std::optional<std::string> readType(const Json& v, const std::string& pointer, const std::vector<std::string>& types,
                                       const char* what);
   std::vector<std::string> materialNames() const;
@@ -79,7 +86,7 @@ class ShotReader {
   bool readMaterialMember(ObjectReader& o, std::string& name, uint32_t& id);
   bool readNamedMaterial(ObjectReader& o, const std::string& key, uint32_t& id);
   std::optional<size_t> readAssetPart(ObjectReader& o, std::string& partOut);
-  bool checkPart(ObjectReader& o, const ShotAsset& asset, const std::string& part);
+  void usePart(ObjectReader& o, size_t asset, const std::string& part);
   void readAnchor(ObjectReader& o, const std::string& key, size_t asset, const std::string& part,
                   ShotSurfaceAnchor& anchor);
   std::optional<AnimatedVec3> readAnimatedMember(ObjectReader& o, const std::string& key);
@@ -107,20 +114,14 @@ class ShotReader {
   void readTextures(ObjectReader& material, const std::vector<std::string>& roles, MaterialTextures& textures);
   std::optional<IrisPatternParams> readAlbedoPattern(const Json& v, const std::string& pointer);
   std::optional<TextureMap> readTextureMap(const Json& v, const std::string& pointer, bool colour);
-  bool checkImageReadable(const std::string& pointer, const std::string& written,
-                          const std::filesystem::path& resolved);
-  void warnTexturesWithoutUvs(const std::string& pointer, uint32_t materialId, const std::string& what);
 
   // ---- shot_reader_assets.cpp: "assets" ----------------------------------------------------
 
   void readAsset(const Json& v, const std::string& pointer);
-  void assignPrimitiveMaterials(ShotAsset& asset);
-  void warnTexturedPrimitivesWithoutUvs(const ShotAsset& asset, const std::string& pointer);
 
   // ---- shot_reader_camera.cpp: "camera" ----------------------------------------------------
 
   bool readCamera(const Json& v);
-  static void deriveCamera(ShotCamera& cam, const ShotAsset* asset, const GltfCamera* gltfCamera);
   void readShutter(const Json& v, const std::string& pointer);
 
   // ---- shot_reader_environment.cpp: "environment" ------------------------------------------

@@ -1,8 +1,6 @@
-// ShotReader (shot_reader.hpp): the section "camera" (docs/shot-format.md), and the renderer camera
-// derived from it.
+// ShotReader (shot_reader.hpp): the section "camera" (docs/shot-format.md). The renderer camera is
+// derived from it once a glTF camera it names is found (load/shot_binding.cpp).
 #include <fmt/format.h>
-
-#include <cmath>
 
 #include "shot_geometry.hpp"
 #include "read/shot_reader.hpp"
@@ -21,8 +19,7 @@ bool ShotReader::readCamera(const Json& v) {
        "focus", "shutter"});
   if (!o.ok()) return false;
   ShotCamera& cam = shot_.camera;
-  const GltfCamera* gltfCamera = nullptr;
-  const ShotAsset* gltfAsset = nullptr;
+  CameraUse use;
 
   if (const Json* g = o.find("gltf")) {
     cam.kind = ShotCamera::Kind::Gltf;
@@ -39,26 +36,16 @@ bool ShotReader::readCamera(const Json& v) {
     if (assetName) {
       cam.gltfAsset = *assetName;
       std::vector<std::string> assetNames;
-      for (const ShotAsset& a : shot_.assets) {
-        assetNames.push_back(a.name);
-        if (a.name == *assetName) gltfAsset = &a;
+      for (size_t a = 0; a < shot_.assets.size(); ++a) {
+        assetNames.push_back(shot_.assets[a].name);
+        if (shot_.assets[a].name == *assetName && !use.gltfAsset) use.gltfAsset = a;
       }
-      if (!gltfAsset)
+      if (!use.gltfAsset)
         go.error("asset", fmt::format("undefined asset '{}'{}", *assetName,
                                       suggestionOrList(*assetName, assetNames, "assets", "the shot has no assets")));
     }
     if (cameraName) cam.gltfCamera = *cameraName;
-    if (cameraName && gltfAsset && gltfAsset->gltf) {
-      std::vector<std::string> cameraNames;
-      for (const GltfCamera& gc : gltfAsset->gltf->cameras) {
-        cameraNames.push_back(gc.name);
-        if (gc.name == *cameraName && !gltfCamera) gltfCamera = &gc;
-      }
-      if (!gltfCamera)
-        go.error("camera",
-                 fmt::format("asset '{}' has no camera '{}'{}", gltfAsset->name, *cameraName,
-                             suggestionOrList(*cameraName, cameraNames, "its cameras", "it has no cameras")));
-    }
+    use.gltfCameraPointer = go.at("camera");
   } else {
     cam.kind = ShotCamera::Kind::LookAt;
     // Position and look-at point may be keyed; the checks below apply to their first keys.
@@ -113,39 +100,8 @@ bool ShotReader::readCamera(const Json& v) {
   if (const Json* s = o.find("shutter")) readShutter(*s, o.at("shutter"));
 
   if (c_.errorCount() != before) return false;
-  // An asset that failed to load has no cameras; its own error is already reported.
-  if (cam.kind == ShotCamera::Kind::Gltf && (!gltfAsset || !gltfCamera)) return false;
-  deriveCamera(cam, gltfAsset, gltfCamera);
+  uses_.camera = use;
   return true;
-}
-
-void ShotReader::deriveCamera(ShotCamera& cam, const ShotAsset* asset, const GltfCamera* gltfCamera) {
-  Camera& out = cam.camera;
-  float viewDistance = 1.0f;
-  if (cam.kind == ShotCamera::Kind::LookAt) {
-    out.cameraToWorld = *lookAtCameraToWorld(cam.position, cam.lookAt, cam.up);
-    viewDistance = (cam.lookAt - cam.position).norm();
-  } else {
-    // The asset's transform applies; its scale does not scale the camera.
-    const Affine3 full = asset->transform.matrix() * gltfCamera->cameraToAsset;
-    out.cameraToWorld = Affine3::Identity();
-    out.cameraToWorld.linear() = full.rotation();
-    out.cameraToWorld.translation() = full.translation();
-  }
-  if (cam.fovDegrees)
-    out.verticalFovRadians = degreesToRadians(*cam.fovDegrees);
-  else if (cam.focalLengthMm)
-    out.verticalFovRadians = 2.0f * std::atan(cam.sensorHeightMm / (2.0f * *cam.focalLengthMm));
-  else
-    out.verticalFovRadians = gltfCamera->yfovRadians;
-  out.focusDistance = cam.focusDistance.value_or(viewDistance);
-  out.focusOnSurface = cam.focusOnSurface;
-  out.lensRadius = 0.0f;
-  if (cam.fStop) {
-    const float focalLengthMm =
-        cam.focalLengthMm.value_or(cam.sensorHeightMm / (2.0f * std::tan(0.5f * out.verticalFovRadians)));
-    out.lensRadius = focalLengthMm * 1e-3f / (2.0f * *cam.fStop);
-  }
 }
 
 // {"open": frames, "close": frames} relative to each frame.

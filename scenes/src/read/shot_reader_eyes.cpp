@@ -37,7 +37,10 @@ void ShotReader::readLashes(const Json& v, const std::string& pointer, size_t as
   if (!o.ok()) return;
   ShotLashes lashes;
   const auto part = o.string("part", true);
-  if (part && checkPart(o, shot_.assets[asset], *part)) lashes.part = *part;
+  if (part) {
+    usePart(o, asset, *part);
+    lashes.part = *part;
+  }
   readNamedMaterial(o, "material", lashes.materialId);
   LashParams& p = lashes.params;
   if (auto x = o.integer("upper", Range::closed(0, 400))) p.upper = int(*x);

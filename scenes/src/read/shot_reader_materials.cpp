@@ -1,6 +1,5 @@
-// ShotReader (shot_reader.hpp): the section "materials" (docs/shot-format.md), with their texture
-// files opened to check that they are images.
-#include <OpenImageIO/imageio.h>
+// ShotReader (shot_reader.hpp): the section "materials" (docs/shot-format.md). Their texture files
+// are opened with the other files (load/shot_files.cpp), to check that they are images.
 #include <fmt/format.h>
 
 #include "read/shot_reader.hpp"
@@ -158,30 +157,9 @@ std::optional<TextureMap> ShotReader::readTextureMap(const Json& v, const std::s
                  ", found " + describeValue(v));
   }
   if (!file) return std::nullopt;
-  map.file = resolve(*file);
-  if (!checkExists(filePointer, *file, map.file) || !checkImageReadable(filePointer, *file, map.file)) return std::nullopt;
+  uses_.textureImages.push_back(fileUse(filePointer, *file));
+  map.file = uses_.textureImages.back().resolved;
   return map;
-}
-
-// Opens the image header with OIIO: a file that exists but is no image is reported here, not
-// halfway through a render.
-bool ShotReader::checkImageReadable(const std::string& pointer, const std::string& written,
-                                    const std::filesystem::path& resolved) {
-  if (OIIO::ImageInput::open(resolved.string())) return true;
-  std::string reason = OIIO::geterror();
-  if (const size_t newline = reason.find('\n'); newline != std::string::npos) reason.resize(newline);
-  c_.error(pointer, Anchor::Value, fmt::format("not a readable image: '{}'{}: {}", written,
-                                               written == resolved.string() ? "" : " (resolved to '" + resolved.string() + "')",
-                                               reason));
-  return false;
-}
-
-// A textured material on a mesh without uvs shades with its constants there: said once per mesh.
-void ShotReader::warnTexturesWithoutUvs(const std::string& pointer, uint32_t materialId, const std::string& what) {
-  if (materialId >= shot_.materials.size() || !shot_.materials[materialId].textures.any()) return;
-  shot_.warnings.push_back(c_.warning(pointer, Anchor::Value,
-                                      fmt::format("{} has no uvs: the textures of material '{}' are skipped there",
-                                                  what, shot_.materials[materialId].name)));
 }
 
 }  // namespace lacrima::shotfile

@@ -109,7 +109,7 @@ void ShotReader::readShape(const Json& v, const std::string& pointer) {
       shape.material = m->get<std::string>();
       shape.materialId = uint32_t(id);
       if (shape.type != ShotShape::Type::Rectangle)  // spheres and ellipsoids have no uvs
-        warnTexturesWithoutUvs(o.at("material"), shape.materialId,
+        warnTexturesWithoutUvs(c_, shot_, o.at("material"), shape.materialId,
                                shape.type == ShotShape::Type::Sphere ? "this sphere" : "this ellipsoid");
     }
   } else {

@@ -3,6 +3,9 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+#include <cstdint>
+
 #include "asset_pose.hpp"
 #include "lacrima/base/error.hpp"
 #include "lacrima/mesh/surface_point.hpp"
@@ -89,8 +92,19 @@ std::optional<ShotSurfaceAnchor> readUv(ObjectReader& o, const GltfAsset& gltf, 
 
 }  // namespace
 
-std::optional<ShotSurfaceAnchor> readSurfaceAnchor(Checker& c, const Json& value, const std::string& pointer,
-                                                   const ShotAsset& asset, const std::string& part) {
+namespace {
+
+// A landmark or vertex index as readInteger would take it (5 or 5.0); 0 for anything else, which
+// checkSurfaceAnchor reports.
+uint32_t indexAsWritten(const Json& x) {
+  if (!x.is_number()) return 0;
+  const double d = x.get<double>();
+  return d >= 0.0 && d <= double(UINT32_MAX) && d == std::floor(d) ? uint32_t(d) : 0;
+}
+
+}  // namespace
+
+std::optional<ShotSurfaceAnchor> readSurfaceAnchor(Checker& c, const Json& value, const std::string& pointer) {
   if (value.is_array()) {
     const auto point = readVec3(c, value, pointer);
     if (!point) return std::nullopt;
@@ -104,11 +118,33 @@ std::optional<ShotSurfaceAnchor> readSurfaceAnchor(Checker& c, const Json& value
     return std::nullopt;
   }
   ObjectReader o(c, value, pointer, {"landmark", "vertex", "uv"});
-  if (!o.ok() || !asset.gltf) return std::nullopt;
-  if (o.has("landmark")) return readLandmark(o, *asset.gltf, part);
-  if (o.has("vertex")) return readVertex(o, *asset.gltf, part);
-  if (o.has("uv")) return readUv(o, *asset.gltf, part);
-  return std::nullopt;  // its one key is unknown, and reported
+  if (!o.ok()) return std::nullopt;
+  ShotSurfaceAnchor anchor;
+  // The value as written, taken without a report: checkSurfaceAnchor reports a bad one with the
+  // bounds the asset gives it.
+  if (const Json* x = o.find("landmark")) {
+    anchor.kind = ShotSurfaceAnchor::Kind::Landmark;
+    anchor.index = indexAsWritten(*x);
+  } else if (const Json* x = o.find("vertex")) {
+    anchor.kind = ShotSurfaceAnchor::Kind::Vertex;
+    anchor.index = indexAsWritten(*x);
+  } else if (const Json* x = o.find("uv")) {
+    anchor.kind = ShotSurfaceAnchor::Kind::Uv;
+    if (x->is_array() && x->size() == 2 && (*x)[0].is_number() && (*x)[1].is_number())
+      anchor.uv = Vec2((*x)[0].get<float>(), (*x)[1].get<float>());
+  } else {
+    return std::nullopt;  // its one key is unknown, and reported
+  }
+  return anchor;
+}
+
+bool checkSurfaceAnchor(Checker& c, const Json& value, const std::string& pointer, const GltfAsset& gltf,
+                        const std::string& part) {
+  // The reading phase has checked that the object's one key is known: this reports nothing new.
+  ObjectReader o(c, value, pointer, {"landmark", "vertex", "uv"});
+  if (o.has("landmark")) return readLandmark(o, gltf, part).has_value();
+  if (o.has("vertex")) return readVertex(o, gltf, part).has_value();
+  return readUv(o, gltf, part).has_value();
 }
 
 ShotSurfacePoint resolveSurfaceAnchor(const Shot& shot, size_t assetIndex, const std::string& part,

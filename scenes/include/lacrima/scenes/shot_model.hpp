@@ -507,7 +507,8 @@ struct Shot {
   std::vector<ShotSph> sph;
 
   // Things that load but deserve a look (glTF loader caveats, environment texels that were
-  // NaN/Inf/negative and set to 0). Each message starts with "warning: ". The tool prints them.
+  // NaN/Inf/negative and set to 0), in file order. Each message starts with "warning: ". The tool
+  // prints them.
   std::vector<Diagnostic> warnings;
 
   // Index of a shot material by name, or -1.

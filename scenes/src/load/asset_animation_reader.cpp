@@ -1,5 +1,5 @@
 // Rig, joints, animator controls and performance tracks of a shot asset; see the header.
-#include "read/asset_animation_reader.hpp"
+#include "load/asset_animation_reader.hpp"
 
 #include <fmt/format.h>
 

@@ -1,15 +1,22 @@
-// loadShot: a shot file (docs/shot-format.md) in three phases, each of which collects every problem
-// with its JSON pointer and text position before the next one starts:
-//   1. parse: the JSON text (duplicate keys reported), with the --performance takes played on their
-//      assets (the JSON rewritten: their own animation members give way to a "performance");
-//   2. read: every section read and checked into a Shot, the files it names opened once
-//      (ShotReader, shot_reader.hpp: one shot_reader_<section>.cpp per section);
-//   3. resolve: what the shot places on its assets' surfaces found on the posed assets (resolveShot,
-//      shot_resolve.hpp).
+// loadShot: a shot file (docs/shot-format.md) in phases, each in its room of scenes/src:
+//   1. parse (read/json_source.hpp): the JSON text (duplicate keys reported), with the --performance
+//      takes played on their assets (the JSON rewritten: their own animation members give way to a
+//      "performance");
+//   2. read (read/shot_reader.hpp): every section read and checked into a Shot, opening no file; the
+//      files it names and the names it uses inside them are recorded (read/shot_uses.hpp);
+//   3. load (load/shot_files.hpp): those files opened once;
+//   4. bind (load/shot_binding.hpp): the names used inside them checked, and what follows from them
+//      derived (blendshape weights, primitive materials, the rig and animation, the camera);
+//   5. resolve (resolve/shot_resolve.hpp): what the shot places on its assets' surfaces found on the
+//      posed assets.
+// Phases 2-4 report every problem at its JSON pointer and text position (diagnostics are sorted by
+// position), and a shot with any of them stops before phase 5; phase 5's problems are reported together.
 #include <fmt/format.h>
 
-#include "read/json_source.hpp"
 #include "lacrima/scenes/shot.hpp"
+#include "load/shot_binding.hpp"
+#include "load/shot_files.hpp"
+#include "read/json_source.hpp"
 #include "read/shot_checker.hpp"
 #include "read/shot_reader.hpp"
 #include "resolve/shot_resolve.hpp"
@@ -82,7 +89,11 @@ Shot loadShotWith(const fs::path& path, const GltfAssetLoader& loadAsset,
   Checker checker(path, parsed.source);
   reportDuplicateKeys(parsed.source, checker);
   applyPerformanceOverrides(parsed.json, performances, checker);
-  shotfile::ShotReader(checker, shot, loadAsset).read(parsed.json);
+  shotfile::ShotUses uses;
+  shotfile::ShotReader(checker, shot, uses).read(parsed.json);
+  shotfile::loadShotFiles(uses, shot, checker, loadAsset);
+  shotfile::bindShotUses(uses, shot, checker);
+  shotfile::sortByPosition(shot.warnings);
   if (checker.errorCount() > 0) throw ShotError(checker.diagnostics());
   shotfile::resolveShot(shot, checker);
   if (checker.errorCount() > 0) throw ShotError(checker.diagnostics());
