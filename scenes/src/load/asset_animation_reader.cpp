@@ -5,6 +5,7 @@
 
 #include <algorithm>
 
+#include "asset_parts.hpp"
 #include "read/animation_reader.hpp"
 #include "lacrima/io/performance_track.hpp"
 #include "read/suggest.hpp"
@@ -30,13 +31,6 @@ std::optional<size_t> indexOf(const std::vector<std::string>& names, const std::
   const auto it = std::find(names.begin(), names.end(), name);
   if (it == names.end()) return std::nullopt;
   return size_t(it - names.begin());
-}
-
-std::vector<std::string> partNames(const GltfAsset& gltf) {
-  std::vector<std::string> parts;
-  for (const GltfPrimitive& p : gltf.primitives)
-    if (!p.part.empty() && std::find(parts.begin(), parts.end(), p.part) == parts.end()) parts.push_back(p.part);
-  return parts;
 }
 
 // A part name of the asset at `pointer`, or nullopt (reported with the closest part).

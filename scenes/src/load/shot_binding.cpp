@@ -3,34 +3,22 @@
 
 #include <fmt/format.h>
 
-#include <algorithm>
 #include <cmath>
 
-#include "read/shot_reader.hpp"  // appendUnique
+#include "asset_parts.hpp"
+#include "load/surface_anchor_check.hpp"
 #include "read/suggest.hpp"
-#include "resolve/surface_anchor.hpp"
 #include "shot_geometry.hpp"
 
 namespace lacrima::shotfile {
 
 namespace {
 
-std::vector<std::string> partsOf(const GltfAsset& gltf) {
-  std::vector<std::string> parts;
-  for (const GltfPrimitive& p : gltf.primitives) appendUnique(parts, p.part);
-  return parts;
-}
-
-bool hasPart(const GltfAsset& gltf, const std::string& part) {
-  const std::vector<std::string> parts = partsOf(gltf);
-  return std::find(parts.begin(), parts.end(), part) != parts.end();
-}
-
 void checkPart(const PartUse& use, const ShotAsset& asset, Checker& c) {
   if (hasPart(*asset.gltf, use.part)) return;
   c.error(use.pointer, Anchor::Value,
           fmt::format("asset '{}' has no part '{}'{}", asset.name, use.part,
-                      suggestionOrList(use.part, partsOf(*asset.gltf), "its parts", "it has no primitives")));
+                      suggestionOrList(use.part, partNames(*asset.gltf), "its parts", "it has no primitives")));
 }
 
 // The glTF camera the shot names, or null (reported).

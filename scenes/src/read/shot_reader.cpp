@@ -10,7 +10,7 @@
 #include "read/animation_reader.hpp"
 #include "shot_geometry.hpp"
 #include "read/suggest.hpp"
-#include "resolve/surface_anchor.hpp"
+#include "read/surface_anchor_reader.hpp"
 
 namespace lacrima::shotfile {
 
@@ -224,7 +224,8 @@ void ShotReader::usePart(ObjectReader& o, size_t asset, const std::string& part)
   uses_.parts.push_back(PartUse{asset, part, o.at("part")});
 }
 
-// A required surface anchor member (see surface_anchor.hpp).
+// A required surface anchor member (read/surface_anchor_reader.hpp); a landmark, vertex or uv one is
+// checked against the part once the asset is loaded.
 void ShotReader::readAnchor(ObjectReader& o, const std::string& key, size_t asset, const std::string& part,
                             ShotSurfaceAnchor& anchor) {
   const Json* v = o.find(key);
@@ -232,10 +233,10 @@ void ShotReader::readAnchor(ObjectReader& o, const std::string& key, size_t asse
     o.missing(key, "a point [x, y, z] near the skin, {\"landmark\": i}, {\"vertex\": i} or {\"uv\": [u, v]}");
     return;
   }
-  const auto read = readSurfaceAnchor(c_, *v, o.at(key));
-  if (!read) return;
-  anchor = *read;
-  if (anchor.kind != ShotSurfaceAnchor::Kind::Point)  // its index or uv is checked against the part's mesh
+  const auto written = readSurfaceAnchor(c_, *v, o.at(key));
+  if (!written) return;
+  anchor = *written;
+  if (anchor.kind != ShotSurfaceAnchor::Kind::Point)
     uses_.anchors.push_back(SurfaceAnchorUse{asset, part, o.at(key), v});
 }
 
