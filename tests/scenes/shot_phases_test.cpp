@@ -194,5 +194,24 @@ TEST(ShotPhases, AFileThatFailsToLoadIsReportedForEveryAssetNamingIt) {
                                                         "/assets/1/file: cannot load the glTF asset: truncated"}));
 }
 
+TEST(ShotPhases, WarningsAreInFileOrderWhicheverPhaseFoundThem) {
+  // The asset's warning is found by the loading phase, after the reading phase's warning about the
+  // camera below it.
+  const auto dir = test::testDirectory("phases_warnings");
+  std::ofstream(dir / "small.glb") << "handed to the test's loader, never parsed";
+  const auto path = test::writeShot("phases_warnings.json", kHead + R"(
+  "assets": [{"file": ")" + (dir / "small.glb").string() + R"("}],
+  "camera": {"position": [0, 0, 3], "lookAt": [0, 0, 0], "fov": 30, "focus": "surface"}
+})");
+  const Shot shot = loadShot(path, [](const std::filesystem::path& file) {
+    auto asset = std::make_shared<GltfAsset>(*smallAsset(file));
+    asset->warnings.push_back("a caveat of the loader");
+    return std::shared_ptr<const GltfAsset>(asset);
+  });
+  ASSERT_EQ(shot.warnings.size(), 2u);
+  EXPECT_EQ(shot.warnings[0].jsonPath, "/assets/0/file");
+  EXPECT_EQ(shot.warnings[1].jsonPath, "/camera/focus");
+}
+
 }  // namespace shot_phases_test
 }  // namespace lacrima

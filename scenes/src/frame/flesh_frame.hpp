@@ -1,7 +1,6 @@
 #pragma once
 // A shot's simulated flesh, frame by frame (ShotFlesh, docs/shot-format.md "flesh"): resolved at
-// load (the skin patch of its regions on the first frame's pose and the tetrahedral volume under
-// it), simulated from the shot's first frame with the rig's pose of the volume as the moving rest
+// load (resolve/flesh_resolve.hpp), simulated from the shot's first frame with the rig's pose of the volume as the moving rest
 // shape, and applied to the posed skin as the simulated nodes' offsets from the rig's.
 #include <array>
 #include <climits>
@@ -10,25 +9,9 @@
 
 #include "lacrima/flesh/flesh_simulation.hpp"
 #include "lacrima/scenes/shot_model.hpp"
-#include "resolve/shedding_tear_resolve.hpp"  // SheddingTearProblem: a problem at a JSON pointer
+#include "resolve/flesh_resolve.hpp"
 
 namespace lacrima::shotfile {
-
-using FleshProblem = SheddingTearProblem;
-
-// Where flesh volumes are filed (flesh_volume_cache.hpp): $XDG_CACHE_HOME/lacrima/flesh, else
-// ~/.cache/lacrima/flesh; empty (not filed) when neither is set.
-std::filesystem::path fleshCacheDirectory();
-
-// Builds (or reads from the cache) each flesh volume of the shot, on the assets
-// as loaded (before any refinement of their skin: the volume's boundary is the asset's own
-// tessellation, and the simulation poses that asset); the problems found (regions on different
-// primitives, no skin in them, a volume TetGen cannot mesh).
-std::vector<FleshProblem> resolveFleshVolumes(Shot& shot);
-
-// After the skin is final (refined under details and along tear trails): embeds each vertex of the
-// flesh's primitive that lies in (or on) its volume, on the first frame's pose.
-void embedFleshSkins(Shot& shot);
 
 // One flesh's simulation, advanced on demand and kept at the step after the latest time asked for
 // (a time between two steps is interpolated between them): a sequence rendered in order simulates

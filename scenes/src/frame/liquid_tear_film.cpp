@@ -282,17 +282,6 @@ void raiseWetness(const std::vector<float>& films, std::vector<float>& wetness) 
 
 }  // namespace
 
-std::vector<float> filmEdgeVariation(const TriangleMesh& skinAtFirstFrame) {
-  std::vector<float> variation(skinAtFirstFrame.positions.size());
-  // A fixed seed: the pattern is a property of the skin, the same in every shot.
-  constexpr uint64_t kSeed = 0x7ea5f11e;
-  for (size_t v = 0; v < variation.size(); ++v)
-    variation[v] = std::clamp(
-        kFilmEdgeContrast * fractalGradientNoise(skinAtFirstFrame.positions[v] / kFilmEdgeFeatureSize, kFilmEdgeOctaves, kSeed),
-        -1.0f, 1.0f);
-  return variation;
-}
-
 void addLiquidTearFilmOverEveryPiece(const ShotLiquidTear& tear, const FlowPath& course,
                                      const LiquidTearSimulation& simulation, const TriangleMesh& skin,
                                      std::vector<float>& wetness) {

@@ -5,6 +5,7 @@
 
 #include "lacrima/liquid/liquid_tear.hpp"
 #include "lacrima/scenes/shot.hpp"
+#include "resolve/film_edge_variation.hpp"  // ShotLiquidTear::filmEdgeVariation
 
 namespace lacrima::shotfile {
 
@@ -14,7 +15,7 @@ namespace lacrima::shotfile {
 inline constexpr float kFilmEdgeFraction = 0.1f;
 // The edge wanders (modelling choice): a wet trail does not end in two straight lines; its contact
 // line catches on the skin's micro-relief (pores, creases, vellus hairs) and pins wherever it
-// happens to. Each skin vertex gets a fixed value v in [-1, 1] (filmEdgeVariation) and the half
+// happens to. Each skin vertex gets a fixed value v in [-1, 1] (filmEdgeVariation, at load) and the half
 // width there is h (1 + kFilmEdgeWander v): the edges wander by about a third of the half width,
 // in bays and spurs about kFilmEdgeFeatureSize across with finer ones on them (three octaves); a
 // quarter of the half width at 1.5 mm still read as two straight lines at 1:1 on the default
@@ -22,17 +23,6 @@ inline constexpr float kFilmEdgeFraction = 0.1f;
 // the film reaches no further than the straight edges of 1.5 half widths it replaced, so the
 // trail refinement along the path (liquid_trail_refinement.hpp) still covers it.
 inline constexpr float kFilmEdgeWander = 0.36f;
-inline constexpr float kFilmEdgeFeatureSize = 0.0025f;  // metres
-inline constexpr int kFilmEdgeOctaves = 3;
-// Gradient noise clusters around 0 (a standard deviation near 0.2): stretched by this and clamped
-// to [-1, 1], the edge spends much of its length near either extreme, as a pinned contact line does.
-inline constexpr float kFilmEdgeContrast = 3.0f;
-
-// v per vertex of the skin the film is laid on, as posed on the shot's first frame: a
-// kFilmEdgeOctaves-octave gradient noise (gradient_noise.hpp) of the position there, so the pattern rides with the skin
-// as it deforms instead of swimming over it.
-std::vector<float> filmEdgeVariation(const TriangleMesh& skinAtFirstFrame);
-
 // Writes the tear's film, as `simulation` holds it now on `course` (the course it runs on, the
 // simulation's arc lengths), onto `wetness` (one value per vertex of `skin`, the posed primitive the
 // path runs over; resized from empty on the first wet vertex): a vertex at distance r from the

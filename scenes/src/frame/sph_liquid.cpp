@@ -24,22 +24,10 @@ namespace {
 // The kernel's support in particle radii (as the solver's: 2 particle spacings).
 constexpr double kSupportPerRadius = 4.0;
 
-// Bounds that turn a slip in a shot (a particle radius a thousand times too small, a table of
-// metres sampled at a tenth of a millimetre) into a clear error instead of hours of simulation or
-// an exhausted memory. The regression drop (4,200 particles) simulates at ~50 s per simulated
-// second on 2 cores, so 4 million particles are ~13 hours per second and ~2 GiB of solver state;
-// 8 million boundary sites are ~0.5 GiB before neighbour lists.
-constexpr double kMaxFluidParticles = 4e6;
+// A bound that turns a slip in a shot (a table of metres sampled at a tenth of a millimetre) into a
+// clear error instead of an exhausted memory: 8 million boundary sites are ~0.5 GiB before neighbour
+// lists (the fluid's own bound is kMaxFluidParticles, resolve/sph_resolve.cpp).
 constexpr double kMaxBoundarySites = 8e6;
-
-// The lattice points a release's bounding box holds (what releasedParticles walks; a drop keeps
-// about half of them).
-double latticePointsOfRelease(const ShotSphRelease& release, double particleRadius) {
-  if (release.kind == ShotSphRelease::Kind::Block)
-    return sph::latticeBlockCount(release.min, release.max, 2.0 * particleRadius);
-  const Vec3d extent = Vec3d::Constant(release.radius);
-  return sph::latticeBlockCount(release.center - extent, release.center + extent, 2.0 * particleRadius);
-}
 
 // The seconds since the simulation's start of a (fractional) frame.
 double secondsAt(double frame, double startFrame, double fps) { return (frame - startFrame) / fps; }
@@ -113,20 +101,6 @@ uint64_t simulationKey(const sph::FluidParams& p, const sph::BoundaryParticles& 
 std::filesystem::path sphStateDirectory() {
   const std::filesystem::path cache = userCacheDirectory("sph");
   return cache.empty() ? cache : cache / "states";
-}
-
-SphParticles releasedParticles(const ShotSphRelease& release, double particleRadius) {
-  const double spacing = 2.0 * particleRadius;
-  SphParticles out;
-  if (release.kind == ShotSphRelease::Kind::Block) {
-    out.positions = sph::latticeBlock(release.min, release.max, spacing);
-  } else {
-    const Vec3d extent = Vec3d::Constant(release.radius);
-    for (const Vec3d& p : sph::latticeBlock(release.center - extent, release.center + extent, spacing))
-      if ((p - release.center).norm() <= release.radius) out.positions.push_back(p);
-  }
-  out.velocities.assign(out.positions.size(), release.velocity);
-  return out;
 }
 
 SphRun::SphRun(const Shot& shot, const ShotSph& liquid)
@@ -323,51 +297,6 @@ SphParticles SphRun::particlesAt(double frame) {
   }
   if (seconds <= double(index) / fps_) return checkpoint_;
   return steppedTo(checkpoint_, index, seconds);
-}
-
-namespace {
-
-std::string releasePointer(const ShotSph& liquid, size_t release) {
-  return fmt::format("{}/{}/{}", liquid.pointer,
-                     liquid.releases[release].kind == ShotSphRelease::Kind::Drop ? "drops" : "blocks", release);
-}
-
-// A liquid that would release more particles than kMaxFluidParticles, as a problem.
-std::optional<SphProblem> tooManyParticles(const ShotSph& liquid) {
-  double total = 0.0;
-  for (size_t i = 0; i < liquid.releases.size(); ++i) {
-    const double points = latticePointsOfRelease(liquid.releases[i], liquid.fluid.particleRadius);
-    total += points;
-    if (total > kMaxFluidParticles)
-      return SphProblem{releasePointer(liquid, i),
-                        fmt::format("the liquid's releases up to this one fill {:.3g} particles at particleRadius {} m, "
-                                    "more than the {:.0f} million allowed: make particleRadius larger or the "
-                                    "releases smaller",
-                                    total, liquid.fluid.particleRadius, kMaxFluidParticles / 1e6)};
-  }
-  return std::nullopt;
-}
-
-}  // namespace
-
-std::vector<SphProblem> resolveSphLiquids(Shot& shot) {
-  std::vector<SphProblem> problems;
-  for (ShotSph& liquid : shot.sph) {
-    if (const std::optional<SphProblem> tooMany = tooManyParticles(liquid)) {
-      problems.push_back(*tooMany);
-      continue;
-    }
-    for (ShotSph::Part& part : liquid.colliderParts)
-      for (ShotSkinRegion& region : part.regions)
-        region.centerPoint = resolveSurfaceAnchor(shot, part.asset, part.part, region.center);
-    for (size_t i = 0; i < liquid.releases.size(); ++i)
-      if (releasedParticles(liquid.releases[i], liquid.fluid.particleRadius).positions.empty())
-        problems.push_back({releasePointer(liquid, i),
-                            fmt::format("holds no particle: make it larger than the particle spacing ({} m = 2 x "
-                                        "particleRadius)",
-                                        2.0 * liquid.fluid.particleRadius)});
-  }
-  return problems;
 }
 
 void addSphLiquids(const Shot& shot, const std::vector<std::unique_ptr<SphRun>>& runs, double openFrame,

@@ -16,25 +16,9 @@
 #include "lacrima/renderer/frame.hpp"
 #include "lacrima/scenes/shot_model.hpp"
 #include "lacrima/sph/dfsph.hpp"
+#include "resolve/sph_resolve.hpp"  // SphParticles, releasedParticles
 
 namespace lacrima::shotfile {
-
-struct SphProblem {
-  std::string pointer;
-  std::string message;
-};
-
-// Resolves each liquid's collider regions; the problems found (a release too small to hold a
-// particle, a collider with no surface to sample).
-std::vector<SphProblem> resolveSphLiquids(Shot& shot);
-
-struct SphParticles {
-  std::vector<Vec3d> positions, velocities;
-};
-
-// The particles a release puts in the liquid: a lattice of spacing 2 r filling the drop's ball or
-// the block's box, all at the release's velocity.
-SphParticles releasedParticles(const ShotSphRelease& release, double particleRadius);
 
 // Where SPH checkpoints are filed: $XDG_CACHE_HOME/lacrima/sph/states, else
 // ~/.cache/lacrima/sph/states; empty (not filed) when neither is set.

@@ -198,7 +198,8 @@ bool ShotReader::readNamedMaterial(ObjectReader& o, const std::string& key, uint
   return true;
 }
 
-// The required "asset" and "part" members of o: the index of the asset, or nullopt (reported).
+// The required "asset" and "part" members of o: the index of the asset, or nullopt (reported). The
+// part is checked once the asset is loaded (PartUse).
 std::optional<size_t> ShotReader::readAssetPart(ObjectReader& o, std::string& partOut) {
   const auto assetName = o.string("asset", true);
   const auto part = o.string("part", true);

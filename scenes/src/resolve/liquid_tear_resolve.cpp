@@ -10,7 +10,7 @@
 #include "read/json_source.hpp"  // childPointer
 #include "lacrima/base/error.hpp"
 #include "lacrima/liquid/meniscus_swelling.hpp"
-#include "frame/liquid_tear_film.hpp"
+#include "resolve/film_edge_variation.hpp"
 #include "resolve/liquid_tear_pinning.hpp"
 #include "lacrima/mesh/surface_point.hpp"
 #include "resolve/surface_anchor.hpp"

@@ -3,11 +3,11 @@
 
 #include "resolve/detail_refinement.hpp"
 #include "resolve/eye_resolve.hpp"
-#include "frame/flesh_frame.hpp"
+#include "resolve/flesh_resolve.hpp"
 #include "resolve/liquid_tear_resolve.hpp"
 #include "resolve/liquid_trail_refinement.hpp"
 #include "resolve/shedding_tear_resolve.hpp"
-#include "frame/sph_liquid.hpp"
+#include "resolve/sph_resolve.hpp"
 #include "resolve/surface_attachment.hpp"
 
 namespace lacrima::shotfile {

@@ -305,7 +305,7 @@ struct ShotLiquidTear {
   int meniscusPrimitive = -1;
   std::vector<float> meniscusWeights;
   // Per vertex of the source's primitive: where the wet trail's edge lies beyond or short of the
-  // film's half width (filmEdgeVariation in scenes/src/frame/liquid_tear_film.hpp); set by loadShot.
+  // film's half width (filmEdgeVariation in scenes/src/resolve/film_edge_variation.hpp); set by loadShot.
   std::vector<float> filmEdgeVariation;
   // "pinning": {"factor", "patchSize"}: the skin holds a contact line up to pinningFactor times
   // harder (and down to 1 / pinningFactor as hard) than the contact angles alone, in patches about
@@ -417,7 +417,7 @@ struct ShotFlesh {
   flesh::FleshDynamicsParams dynamics = defaultShotFleshDynamics();
   int substeps = 4;               // simulation steps per frame
   std::string pointer;            // "/flesh/0", for problems found resolving it
-  // Resolved by loadShot (scenes/src/frame/flesh_frame.hpp): the primitive of the regions' centres, the
+  // Resolved by loadShot (scenes/src/resolve/flesh_resolve.hpp): the primitive of the regions' centres, the
   // skin patch in it (positions of the shot's first frame), the volume under it (null: not
   // resolved, so not simulated).
   size_t primitive = 0;
