@@ -61,6 +61,14 @@ std::shared_ptr<const GltfAsset> smallAsset(const std::filesystem::path& path) {
   return asset;
 }
 
+// A file "small.glb" in the test's folder `folder`, there to be found: the tests' loaders hand out
+// smallAsset and never parse it. Its path.
+std::string placeholderGlb(const std::string& folder) {
+  const std::filesystem::path file = test::testDirectory(folder) / "small.glb";
+  std::ofstream(file) << "handed to the test's loader, never parsed";
+  return file.string();
+}
+
 const std::string kHead = R"({
   "version": 1,
   "frames": {"start": 1, "end": 1},
@@ -116,14 +124,13 @@ TEST(ShotPhases, ReadingOpensNoFileAndRecordsEachWithTheValueThatNamesIt) {
 }
 
 TEST(ShotPhases, BindingChecksTheNamesUsedInsideTheLoadedAssetAndDerivesWhatFollows) {
-  const auto dir = test::testDirectory("phases");
-  std::ofstream(dir / "small.glb") << "handed to the test's loader, never parsed";
+  const std::string file = placeholderGlb("phases");
   const auto shotText = [&](const std::string& blendshape, const std::string& hide, const std::string& part,
                             const std::string& camera) {
     return kHead + R"(
   "camera": {"gltf": {"asset": "small", "camera": ")" + camera + R"("}, "fov": 40},
   "materials": {"skin": {"type": "diffuse"}},
-  "assets": [{"file": ")" + (dir / "small.glb").string() + R"(", "materials": {"skinMat": "skin"},
+  "assets": [{"file": ")" + file + R"(", "materials": {"skinMat": "skin"},
               "blendshapes": {")" + blendshape + R"(": 0.5}, "hide": [")" + hide + R"("]}],
   "details": [{"pattern": "cheek", "asset": "small", "part": ")" + part + R"(", "center": {"vertex": 1},
                "extent": [0.01, 0.008], "scale": 0.0005, "startFrame": 1, "endFrame": 1}]
@@ -154,9 +161,7 @@ TEST(ShotPhases, BindingChecksTheNamesUsedInsideTheLoadedAssetAndDerivesWhatFoll
 }
 
 TEST(ShotPhases, AFileNamedByTwoAssetsIsLoadedOnceAndShared) {
-  const auto dir = test::testDirectory("phases_shared");
-  std::ofstream(dir / "small.glb") << "handed to the test's loader, never parsed";
-  const std::string file = (dir / "small.glb").string();
+  const std::string file = placeholderGlb("phases_shared");
   ReadShot read(test::writeShot("phases_shared.json", kHead + R"(
   "camera": {"position": [0, 0, 3], "lookAt": [0, 0, 0], "fov": 30},
   "assets": [{"name": "left", "file": ")" + file + R"("},
@@ -197,10 +202,9 @@ TEST(ShotPhases, AFileThatFailsToLoadIsReportedForEveryAssetNamingIt) {
 TEST(ShotPhases, WarningsAreInFileOrderWhicheverPhaseFoundThem) {
   // The asset's warning is found by the loading phase, after the reading phase's warning about the
   // camera below it.
-  const auto dir = test::testDirectory("phases_warnings");
-  std::ofstream(dir / "small.glb") << "handed to the test's loader, never parsed";
+  const std::string file = placeholderGlb("phases_warnings");
   const auto path = test::writeShot("phases_warnings.json", kHead + R"(
-  "assets": [{"file": ")" + (dir / "small.glb").string() + R"("}],
+  "assets": [{"file": ")" + file + R"("}],
   "camera": {"position": [0, 0, 3], "lookAt": [0, 0, 0], "fov": 30, "focus": "surface"}
 })");
   const Shot shot = loadShot(path, [](const std::filesystem::path& file) {
